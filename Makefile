@@ -1,0 +1,65 @@
+# laserax — top-level entry points. Every target works on a fresh Debian machine: `deps`
+# installs what is missing (as root) or prints the apt command to run.
+#
+#   make deps | build | run [ARGS=...] | test | soak | bench | vectors | plot | clean
+#
+# Variables: BUILD_DIR (build), ASAN_DIR (build-asan), BUILD_TYPE (Release), JOBS (2),
+#            ARGS (arguments after `laserax run`), ASAN=0 (make test without the sanitizer pass),
+#            CMAKE_ARGS (extra -D options for the main build).
+SHELL      := /bin/bash
+BUILD_DIR  ?= build
+ASAN_DIR   ?= build-asan
+BUILD_TYPE ?= Release
+JOBS       ?= 2
+ARGS       ?=
+ASAN       ?= 1
+CMAKE_ARGS ?=
+PYTHON     := /usr/bin/python3
+OUT        := out
+MAKEFLAGS  += --no-print-directory
+
+.PHONY: all help deps build run test soak bench vectors plot clean
+
+all: build
+
+help:
+	@sed -n '1,8p' Makefile | sed 's/^# \{0,1\}//'
+
+deps:
+	@bash scripts/setup_deps.sh
+
+build: deps
+	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_ARGS)
+	cmake --build $(BUILD_DIR) -j$(JOBS)
+
+# The program writes its outputs under out/ (trace.csv, trace.vcd, events.csv).
+run: build
+	@test -x $(BUILD_DIR)/laserax || { echo "make run: $(BUILD_DIR)/laserax was not built (no tools/laserax.cpp yet?)" >&2; exit 1; }
+	$(BUILD_DIR)/laserax run $(ARGS)
+
+# Release tests (all but label soak), then the ASan+UBSan build in $(ASAN_DIR) (all but labels
+# soak and slow_asan), then one summary line. ASAN=0 skips the sanitizer pass.
+test: build
+	@BUILD_DIR=$(BUILD_DIR) ASAN_DIR=$(ASAN_DIR) JOBS=$(JOBS) ASAN=$(ASAN) bash scripts/run_tests.sh
+
+soak: build
+	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS) -L '^soak$$'
+
+bench: build
+	@test -x $(BUILD_DIR)/bench || { echo "make bench: $(BUILD_DIR)/bench was not built (no tools/bench.cpp yet?)" >&2; exit 1; }
+	$(BUILD_DIR)/bench
+
+vectors: build
+	@test -x $(BUILD_DIR)/laserax || { echo "make vectors: $(BUILD_DIR)/laserax was not built (no tools/laserax.cpp yet?)" >&2; exit 1; }
+	$(BUILD_DIR)/laserax vectors --out $(OUT)/vectors
+
+# Plots out/trace.csv (and out/events.csv when present); runs `make run` first if there is no trace.
+plot: deps
+	@test -f $(OUT)/trace.csv || $(MAKE) --no-print-directory run
+	$(PYTHON) scripts/plot_homing.py $(OUT)/trace.csv $(OUT)/homing.png
+
+# synth: added by a later issue (yosys / nextpnr-ice40 on rtl_ref/, and Vitis HLS through
+# scripts/run_hls.tcl where Vitis is installed).
+
+clean:
+	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(OUT) scripts/__pycache__

@@ -1,0 +1,90 @@
+// golden/axis_chain.cpp — see axis_chain.h (DESIGN.md 4.7).
+#include "golden/axis_chain.h"
+
+namespace golden {
+
+bool config_ok(const axis_regs& r) {
+    const int64_t P = r.period;
+    // Reading: only the conditions listed in DESIGN 4.7 are checked; register values are taken
+    // as given (no truncation to the register widths of section 5; callers keep them in range).
+    return P >= 8 && P <= 4096 && P % 8 == 0 &&                            //
+           r.ratio != 0 &&                                                 //
+           r.pace_m >= 2 &&                                                //
+           r.dac_width >= 12 && r.dac_width <= 18 &&                       //
+           r.amplitude >= 1 && r.amplitude <= (int64_t{1} << (r.dac_width - 1)) - 1 &&  //
+           r.tbl_period == P &&                                            //
+           r.mark_len >= P / 4 && r.mark_len <= P;
+}
+
+void axis_chain::reset() { *this = axis_chain{}; }
+
+axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
+    axis_out o{};
+    if (!config_ok(regs)) {
+        // safe state: every block and every inter-block register (including the t-2 delay of
+        // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
+        reset();
+        o.cfg_err = true;
+        o.alarm = true;
+        o.stage = 1;
+        return o;
+    }
+
+    const input_filter::out swf_o = swf_.step(pins.sw, regs.sw_debounce);
+    const quad_decoder::out dec_o =
+        dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
+    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, regs.ratio);
+    const output_pacer::out pac_o = pac_.step(mul_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
+    const rephase::out rep_o = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
+                                         dec_q_.lerr, regs.period, regs.mark_len);
+    const dds_sincos::out dds_o = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
+
+    o.sin = dds_o.sin;
+    o.cos = dds_o.cos;
+
+    // digital outputs from the rephase output of call t-2: index = out_pos mod 4 (true modulo),
+    // 0->(0,0), 1->(1,0), 2->(1,1), 3->(0,1)
+    const int64_t qi = ((rep_q2_.out_pos % 4) + 4) % 4;
+    o.qa = qi == 1 || qi == 2;
+    o.qb = qi == 2 || qi == 3;
+    o.qz = rep_q2_.mark;
+    o.ref_mark = rep_q2_.mark;
+
+    o.cfg_err = false;
+    o.stage = rep_o.stage;
+    o.homed = rep_o.homed;
+    o.lerr_alarm = dec_o.lerr_alarm;
+    o.illegal_st = dec_o.illegal_st;
+    o.err_cnt = dec_o.err_cnt;
+    o.ovs_edge_st = dec_o.ovs_st;
+    o.ovs_backlog_st = pac_o.ovs_st;
+    o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err;
+
+    o.raw_count = dec_o.raw_count;
+    o.step = dec_o.step;
+    o.comp_pos = mul_o.comp;
+    o.delta = mul_o.delta;
+    o.backlog = pac_o.backlog;
+    o.pstep = pac_o.pstep;
+    o.paced_pos = pac_o.paced;
+    o.ostep = rep_o.ostep;
+    o.out_pos = rep_o.out_pos;
+    o.adj = rep_o.adj;
+    o.a_pos = rep_o.a;
+    o.b_pos = rep_o.b;
+    o.c_pos = rep_o.c;
+    o.z_pos = rep_o.z;
+    o.d = rep_o.d;
+    o.rep_mark = rep_o.mark;
+
+    // advance the inter-block registers
+    swf_q_ = swf_o;
+    dec_q_ = dec_o;
+    mul_q_ = mul_o;
+    pac_q_ = pac_o;
+    rep_q2_ = rep_q_;
+    rep_q_ = rep_o;
+    return o;
+}
+
+}  // namespace golden

@@ -1,0 +1,64 @@
+// golden/dds_sincos.cpp — see dds_sincos.h (DESIGN.md 4.6).
+#include "golden/dds_sincos.h"
+
+#include <cmath>
+
+namespace golden {
+
+namespace {
+
+constexpr long double kPi = 3.141592653589793238462643383279502884197L;
+
+// true modulo, result in [0, m) (m > 0; m <= 0 is an invalid configuration, returns 0)
+int64_t mod(int64_t x, int64_t m) { return m > 0 ? ((x % m) + m) % m : 0; }
+
+// Exact values of sin/cos(2*pi*j/12), j = 0..11, where they are rational (0, +-1/2, +-1);
+// `rational` is false where the value is +-sqrt(3)/2 (irrational: computed with sin/cos).
+struct exact_val {
+    bool rational;
+    long double v;
+};
+constexpr exact_val kSin12[12] = {{true, 0.0L},  {true, 0.5L},   {false, 0.0L}, {true, 1.0L},
+                                  {false, 0.0L}, {true, 0.5L},   {true, 0.0L},  {true, -0.5L},
+                                  {false, 0.0L}, {true, -1.0L},  {false, 0.0L}, {true, -0.5L}};
+constexpr exact_val kCos12[12] = {{true, 1.0L},  {false, 0.0L}, {true, 0.5L},   {true, 0.0L},
+                                  {true, -0.5L}, {false, 0.0L}, {true, -1.0L},  {false, 0.0L},
+                                  {true, -0.5L}, {true, 0.0L},  {true, 0.5L},   {false, 0.0L}};
+
+// sin (want_cos = false) or cos (want_cos = true) of 2*pi*k/P, k in [0, P)
+long double sincos_turn(int64_t k, int64_t P, bool want_cos) {
+    if ((12 * k) % P == 0) {
+        const int64_t j = (12 * k) / P;  // angle = j * 30 degrees, j in [0, 12)
+        const exact_val e = want_cos ? kCos12[j] : kSin12[j];
+        if (e.rational) return e.v;
+    }
+    const long double x = 2.0L * kPi * static_cast<long double>(k) / static_cast<long double>(P);
+    return want_cos ? std::cos(x) : std::sin(x);
+}
+
+int64_t rha(long double v) { return static_cast<int64_t>(std::llround(v)); }  // half away from 0
+
+}  // namespace
+
+void dds_sincos::reset() { *this = dds_sincos{}; }
+
+dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
+    const int64_t P = period;
+    if (P > 0) {
+        // outputs from the phase before this call's update. Reading: amplitude and P of this
+        // call; ph is reduced mod the current P (only matters if P changed while running).
+        const int64_t k = mod(ph_, P);
+        const long double amp = static_cast<long double>(amplitude);
+        sin_q_ = rha(amp * sincos_turn(k, P, false));
+        cos_q_ = rha(amp * sincos_turn(k, P, true));
+        ph_ = mod(ph_ + ostep, P);
+    } else {
+        // invalid configuration (never reached through axis_chain): hold, no division by 0
+        sin_q_ = 0;
+        cos_q_ = 0;
+        ph_ = 0;
+    }
+    return out{sin_q_, cos_q_};
+}
+
+}  // namespace golden

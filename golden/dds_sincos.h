@@ -1,0 +1,33 @@
+// golden/dds_sincos.h — golden model of DESIGN.md 4.6 (dds_sincos).
+//
+// Definition: S(ph) = rha(amp * sin(2*pi*ph/P)), C(ph) = rha(amp * cos(2*pi*ph/P)), rha =
+// round half away from zero (std::llround). The outputs of a call come from the phase before
+// the call's update; then ph' = (ph + ostep) mod P (true modulo). Reset: outputs 0/0, ph = 0.
+//
+// Computed directly with long double sin/cos over the full circle (no quarter-wave table, no
+// quadrant logic). Accuracy: the long double argument and sin/cos are within a few 1e-19 of
+// the true value, so amp*sin (amp < 2^17) is within ~1e-13 of the true value, far below the
+// distance of any non-tie value to a rounding boundary. Exact ties (amp odd and sin/cos = +-1/2,
+// i.e. angles k*30 deg by Niven's theorem) and the exact values 0, +-1 are taken from the
+// exact rational value instead of sinl/cosl, so rha's tie rule is applied to the true value.
+#pragma once
+#include <cstdint>
+
+namespace golden {
+
+class dds_sincos {
+public:
+    struct out {
+        int64_t sin;
+        int64_t cos;
+    };
+    void reset();
+    out step(int ostep, int64_t period, int64_t amplitude);
+
+private:
+    int64_t ph_ = 0;       // phase in [0, P)
+    int64_t sin_q_ = 0;    // output registers (reset 0/0)
+    int64_t cos_q_ = 0;
+};
+
+}  // namespace golden

@@ -1,0 +1,35 @@
+// golden/input_filter.h — floating-point-side golden model of DESIGN.md 4.1 (input_filter).
+//
+// Written from the 4.1 "Definition (golden)": with x(t) = pin(t-2) (two-flop synchroniser),
+// the output at call t takes the value x(t) once x has differed from the previous output on
+// max(N,1) consecutive calls ending at t; the first sample x(2) = pin(0) is loaded unfiltered
+// and `valid` is 1 from call index 2 on (calls counted from 0 after reset).
+//
+// The model keeps an explicit pin history and the length of the current run of "x differs
+// from the output"; it has no fixed-width counter (the filter length n is used as given;
+// callers stay inside the register width, W_GLITCH = 8 or W_DEBOUNCE = 16 bits).
+#pragma once
+#include <cstdint>
+
+namespace golden {
+
+class input_filter {
+public:
+    struct out {
+        bool f;      // filtered level (0 until valid)
+        bool valid;  // 1 from call index 2 after reset
+    };
+    void reset();
+    // One call = one clock edge. n: filter length (n <= 1 means: a change passes after one call).
+    out step(bool pin, int64_t n);
+
+private:
+    int64_t calls_ = 0;   // calls since reset, saturated at 2 (only "t >= 2" matters)
+    bool pin_m1_ = false; // pin(t-1)
+    bool pin_m2_ = false; // pin(t-2) = x(t)
+    bool f_ = false;
+    bool valid_ = false;
+    int64_t run_ = 0;     // consecutive calls (ending at the previous call) with x != f
+};
+
+}  // namespace golden

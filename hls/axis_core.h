@@ -1,0 +1,208 @@
+// axis_core.h — the single-axis chain: quad_decoder -> pulse_multiplier -> output_pacer ->
+// rephase -> dds_sincos, plus the switch debounce, the configuration check and the digital
+// A/B/Z outputs (DESIGN §4.7, register map §5).
+//
+// One call of step() is one clock. Between two blocks there is exactly one register stage: a
+// block consumes the outputs its upstream block returned at the previous call (the *_q members).
+// qa/qb/qz/ref_mark take the rephase outputs of two calls ago so that they change in the same
+// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
+//
+// A class rather than a free function so that a testbench (or a gantry model) can instantiate
+// several axes; hls/laserax_top.cpp wraps one static instance as the synthesis top.
+#ifndef LASERAX_HLS_AXIS_CORE_H
+#define LASERAX_HLS_AXIS_CORE_H
+
+#include "hls/axis_config.h"
+#include "hls/dds_sincos.h"
+#include "hls/input_filter.h"
+#include "hls/output_pacer.h"
+#include "hls/pulse_multiplier.h"
+#include "hls/quad_decoder.h"
+#include "hls/rephase.h"
+
+namespace lx {
+
+struct axis_core_cfg {
+    static constexpr int W_DEBOUNCE = 16;  // switch debounce length register
+    // Reset ratio: round(632.991 nm / 1.000271 / 78.125 nm * 2^32), i.e. one raw count of a
+    // HeNe wavelength in standard air, in output counts of 20 um / 256. Checked against the
+    // formula by tb/tb_axis_config.
+    static constexpr unsigned long long RATIO_DEFAULT = 34789620252ULL;
+    static constexpr int PERIOD_DEFAULT = 256;
+    static constexpr int AMP_DEFAULT = 32767;
+    using debounce_t = uint<W_DEBOUNCE>;
+    using dacw_t = uint<axis_widths::W_DACW>;
+};
+
+// s_axilite register block (DESIGN §5). Reset values are the defaults below.
+struct axis_regs {
+    period_t period = axis_core_cfg::PERIOD_DEFAULT;
+    ratio_t ratio = axis_core_cfg::RATIO_DEFAULT;
+    quad_decoder_cfg::glitch_t glitch_n = 2;
+    axis_core_cfg::debounce_t sw_debounce = 16;
+    quad_decoder_cfg::spacing_t min_spacing = 0;
+    output_pacer_cfg::pace_t pace_m = 4;
+    output_pacer_cfg::thr_t backlog_thr = 4096;
+    period_t mark_len = axis_core_cfg::PERIOD_DEFAULT / 4;
+    axis_core_cfg::dacw_t dac_width = 16;
+    dds_sincos_cfg::amp_t amplitude = axis_core_cfg::AMP_DEFAULT;
+    period_t tbl_period = axis_core_cfg::PERIOD_DEFAULT;
+    bool rehome = false;
+    bool clear = false;
+    bool tbl_we = false;
+    tbl_addr_t tbl_addr = 0;
+    tbl_word_t tbl_data = 0;
+};
+
+struct axis_pins {
+    bool a = false, b = false, sw = false, lerr = false;
+};
+
+struct axis_out {
+    dac_t sin, cos;
+    bool ref_mark, qa, qb, qz;
+    // status
+    bool cfg_err;
+    rephase_cfg::stage_t stage;
+    bool homed, lerr_alarm, illegal_st;
+    quad_decoder_cfg::errcnt_t err_cnt;
+    bool ovs_edge_st, ovs_backlog_st, alarm;
+    // taps: registered outputs of each block at this call
+    raw_t raw_count;
+    step_t step;
+    pos_t comp_pos;
+    delta_t delta;
+    backlog_t backlog;
+    step_t pstep;
+    pos_t paced_pos;
+    step_t ostep;
+    pos_t out_pos, adj, a_pos, b_pos, c_pos, z_pos;
+    rephase_cfg::ph_t d;
+    bool rep_mark;
+};
+
+// Configuration check (DESIGN §4.7): combinational, every call.
+inline bool axis_config_ok(const axis_regs& r) {
+    const bool period_ok = r.period >= axis_widths::P_MIN && r.period <= axis_widths::P_MAX &&
+                           (r.period & (axis_widths::P_STEP - 1)) == 0;
+    const bool width_ok = r.dac_width >= axis_widths::W_DAC_MIN && r.dac_width <= axis_widths::W_DAC_MAX;
+    bool amp_ok = false;
+    if (width_ok) {
+        const dds_sincos_cfg::amp_t amp_max = (dds_sincos_cfg::amp_t(1) << (r.dac_width - 1)) - 1;
+        amp_ok = r.amplitude >= 1 && r.amplitude <= amp_max;
+    }
+    const bool mark_ok = r.mark_len >= (r.period >> 2) && r.mark_len <= r.period;
+    return period_ok && width_ok && amp_ok && mark_ok && r.ratio != 0 && r.pace_m >= 2 &&
+           r.tbl_period == r.period;
+}
+
+// Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
+inline void quad_levels(pos_t pos, bool& qa, bool& qb) {
+    const uint<2> i = pos;  // low two bits = pos mod 4 (two's complement)
+    qa = i == 1 || i == 2;
+    qb = i == 2 || i == 3;
+}
+
+class axis_core {
+public:
+    axis_core() { reset(); }
+
+    void reset() {
+        swf_.reset();
+        dec_.reset();
+        mul_.reset();
+        pac_.reset();
+        rep_.reset();
+        dds_.reset();
+        swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false};
+        dec_q_ = quad_decoder::out_t{};
+        mul_q_ = pulse_multiplier::out_t{};
+        pac_q_ = output_pacer::out_t{};
+        rep_q_ = rephase::out_t{};
+        rep_q2_ = rephase::out_t{};
+    }
+
+    dds_sincos& dds() { return dds_; }
+
+    axis_out step(const axis_pins& pins, const axis_regs& regs) {
+        if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
+        axis_out o = axis_out{};
+        // A period change is a reconfiguration: the phase counters of the old period are
+        // meaningless for the new one, so the chain restarts (one call in the safe state).
+        const bool period_changed = regs.period != period_q_;
+        period_q_ = regs.period;
+        if (!axis_config_ok(regs) || period_changed) {
+            reset();  // safe state: every block held in reset
+            o.cfg_err = true;
+            o.alarm = true;
+            o.stage = 1;
+            return o;
+        }
+        const input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf = swf_.step(pins.sw, regs.sw_debounce);
+        const quad_decoder::out_t dec =
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
+        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, regs.ratio);
+        const output_pacer::out_t pac = pac_.step(mul_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
+                                             dec_q_.lerr, regs.period, regs.mark_len);
+        const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
+
+        o.sin = dds.sin;
+        o.cos = dds.cos;
+        quad_levels(rep_q2_.out_pos, o.qa, o.qb);
+        o.qz = rep_q2_.mark;
+        o.ref_mark = rep_q2_.mark;
+        o.cfg_err = false;
+        o.stage = rep.stage;
+        o.homed = rep.homed;
+        o.lerr_alarm = dec.lerr_alarm;
+        o.illegal_st = dec.illegal_st;
+        o.err_cnt = dec.err_cnt;
+        o.ovs_edge_st = dec.ovs_st;
+        o.ovs_backlog_st = pac.ovs_st;
+        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st;
+        o.raw_count = dec.raw_count;
+        o.step = dec.step;
+        o.comp_pos = mul.comp;
+        o.delta = mul.delta;
+        o.backlog = pac.backlog;
+        o.pstep = pac.pstep;
+        o.paced_pos = pac.paced;
+        o.ostep = rep.ostep;
+        o.out_pos = rep.out_pos;
+        o.adj = rep.adj;
+        o.a_pos = rep.a;
+        o.b_pos = rep.b;
+        o.c_pos = rep.c;
+        o.z_pos = rep.z;
+        o.d = rep.d;
+        o.rep_mark = rep.mark;
+
+        // pipeline registers between blocks
+        swf_q_ = swf;
+        dec_q_ = dec;
+        mul_q_ = mul;
+        pac_q_ = pac;
+        rep_q2_ = rep_q_;
+        rep_q_ = rep;
+        return o;
+    }
+
+private:
+    input_filter<axis_core_cfg::W_DEBOUNCE> swf_;
+    quad_decoder dec_;
+    pulse_multiplier mul_;
+    output_pacer pac_;
+    rephase rep_;
+    dds_sincos dds_;
+    input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf_q_;
+    quad_decoder::out_t dec_q_;
+    pulse_multiplier::out_t mul_q_;
+    output_pacer::out_t pac_q_;
+    rephase::out_t rep_q_, rep_q2_;
+    period_t period_q_ = axis_core_cfg::PERIOD_DEFAULT;  // period of the previous call
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_AXIS_CORE_H

@@ -1,0 +1,105 @@
+// dds_sincos.h — position-in-period counter and quarter-wave sine/cosine table.
+//
+// DESIGN §4.6. The phase ph = out_pos mod P is kept as quadrant q (2 bits) and offset r in
+// [0, P/4), stepped by +-1 with carry, so no divider is needed for any P. Each call reads the
+// table twice, T[r] and T[P/4 - r] (true dual-port BRAM), and mirrors them into the four
+// quadrants:
+//     q | sin        | cos
+//     0 |  T[r]      |  T[P/4-r]
+//     1 |  T[P/4-r]  | -T[r]
+//     2 | -T[r]      | -T[P/4-r]
+//     3 | -T[P/4-r]  |  T[r]
+// T[P/4] (sin 90 deg) is not stored: it is the amplitude register, so the table is P/4 <= 1024
+// words of 17 bits (one 18-kbit BRAM). At ph = P/8 both reads hit T[P/8]: sin == cos exactly.
+//
+// Table words: T[k] = round-half-away(amp * sin(2 pi k / P)), computed on the host by
+// tools/lutgen (or the same routine in the testbench) for the configured P and amplitude and
+// loaded through the table port; the RAM powers up with the P = 256, amp = 32767 table
+// (hls/dds_table_default.h). Round-half-away makes the four quadrants exact mirrors.
+//
+// Latency: the outputs of a call come from the phase before the call (registered table read);
+// ostep at call t moves the outputs at call t+1.
+#ifndef LASERAX_HLS_DDS_SINCOS_H
+#define LASERAX_HLS_DDS_SINCOS_H
+
+#include "hls/axis_config.h"
+#include "hls/dds_table_default.h"
+
+namespace lx {
+
+struct dds_sincos_cfg {
+    static constexpr int TBL_DEPTH = axis_widths::TBL_DEPTH;   // 1024 words
+    static constexpr int W_TBL = axis_widths::W_TBL;           // 17 bits
+    static constexpr int W_R = axis_widths::W_TBL_ADDR + 1;    // r and P/4 - r: 0..1024
+    static constexpr int W_AMP = axis_widths::W_DAC_MAX;       // amplitude register
+    using r_t = uint<W_R>;
+    using amp_t = uint<W_AMP>;
+    using quad_t = uint<2>;
+};
+
+class dds_sincos {
+public:
+    using cfg = dds_sincos_cfg;
+    struct out_t {
+        dac_t sin;
+        dac_t cos;
+    };
+
+    dds_sincos() { reset(); }
+
+    // Resets the phase and the output registers; the table RAM keeps its contents.
+    void reset() {
+        q_ = 0;
+        r_ = 0;
+        sin_ = 0;
+        cos_ = 0;
+    }
+
+    // Table write port (host side of the RAM).
+    void write(tbl_addr_t addr, tbl_word_t data) { tbl_[addr.to_uint()] = data; }
+    tbl_word_t read(tbl_addr_t addr) const { return tbl_[addr.to_uint()]; }
+
+    out_t step(step_t ostep, period_t period, cfg::amp_t amp) {
+#pragma HLS BIND_STORAGE variable=tbl_ type=ram_t2p impl=bram
+        const cfg::r_t quarter = period >> 2;
+        const cfg::r_t r_mirror = quarter - r_;  // 1..P/4
+        const dac_t t_dir = dac_t(tbl_[r_.to_uint()]);  // r < P/4 <= 1024
+        const dac_t t_mir = (r_ == 0) ? dac_t(amp) : dac_t(tbl_[r_mirror.to_uint()]);
+        switch (q_.to_uint()) {
+            case 0: sin_ = t_dir; cos_ = t_mir; break;
+            case 1: sin_ = t_mir; cos_ = -t_dir; break;
+            case 2: sin_ = -t_dir; cos_ = -t_mir; break;
+            default: sin_ = -t_mir; cos_ = t_dir; break;
+        }
+        // position-in-period counter
+        if (ostep > 0) {
+            if (r_ == quarter - 1) {
+                r_ = 0;
+                q_ = q_ + 1;
+            } else {
+                r_ = r_ + 1;
+            }
+        } else if (ostep < 0) {
+            if (r_ == 0) {
+                r_ = quarter - 1;
+                q_ = q_ - 1;
+            } else {
+                r_ = r_ - 1;
+            }
+        }
+        out_t o;
+        o.sin = sin_;
+        o.cos = cos_;
+        return o;
+    }
+
+private:
+    cfg::quad_t q_;
+    cfg::r_t r_;
+    dac_t sin_, cos_;
+    tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_DDS_SINCOS_H

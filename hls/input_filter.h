@@ -1,0 +1,82 @@
+// input_filter.h — two-flop synchroniser plus stability (glitch) filter for one asynchronous pin.
+//
+// DESIGN §4.1. A change on the pin reaches the output once it has been seen on max(N,1)
+// consecutive clocks after synchronisation; shorter pulses never pass. Latency pin -> output:
+// max(N,1) + 1 calls. `valid` rises at the third call after reset, when the synchroniser first
+// holds a real sample; that sample is loaded into the output unfiltered.
+//
+// Resources: 3 flip-flops, a W_CNT-bit counter, a 2-bit fill counter, one comparator.
+#ifndef LASERAX_HLS_INPUT_FILTER_H
+#define LASERAX_HLS_INPUT_FILTER_H
+
+#include "hls/lx_types.h"
+
+namespace lx {
+
+template <int W_CNT_>
+struct input_filter_cfg {
+    static constexpr int W_CNT = W_CNT_;  // filter length register width
+    static constexpr int W_FILL = 2;      // counts the two synchroniser stages after reset
+    using cnt_t = uint<W_CNT>;
+    using fill_t = uint<W_FILL>;
+};
+
+template <int W_CNT>
+class input_filter {
+public:
+    using cfg = input_filter_cfg<W_CNT>;
+    using cnt_t = typename cfg::cnt_t;
+    struct out_t {
+        bool f;
+        bool valid;
+    };
+
+    input_filter() { reset(); }
+
+    void reset() {
+        s1_ = false;
+        s2_ = false;
+        f_ = false;
+        valid_ = false;
+        cnt_ = 0;
+        fill_ = 0;
+    }
+
+    out_t step(bool pin, cnt_t n) {
+        if (!valid_) {
+            if (fill_ == 2) {
+                f_ = s2_;
+                valid_ = true;
+            } else {
+                fill_ = fill_ + 1;
+            }
+        } else if (s2_ == f_) {
+            cnt_ = 0;
+        } else {
+            // N = 0 and N = 1 both mean "accept after one differing sample".
+            const uint<W_CNT + 1> need = (n == 0) ? uint<W_CNT + 1>(1) : uint<W_CNT + 1>(n);
+            const uint<W_CNT + 1> seen = uint<W_CNT + 1>(cnt_) + 1;
+            if (seen >= need) {
+                f_ = s2_;
+                cnt_ = 0;
+            } else {
+                cnt_ = seen;
+            }
+        }
+        s2_ = s1_;
+        s1_ = pin;
+        out_t o;
+        o.f = f_;
+        o.valid = valid_;
+        return o;
+    }
+
+private:
+    bool s1_, s2_, f_, valid_;
+    cnt_t cnt_;
+    typename cfg::fill_t fill_;
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_INPUT_FILTER_H

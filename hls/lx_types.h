@@ -1,0 +1,105 @@
+// lx_types.h — fixed-width integer layer for the laserax HLS models.
+//
+// Two back ends, one spelling:
+//   default                      lx::sint<W> / lx::uint<W> are the project's own wrapping
+//                                integer classes (W <= 128), built on the standard library only;
+//   -DLASERAX_USE_AP_TYPES       lx::sint<W> = ap_int<W>, lx::uint<W> = ap_uint<W> (Vitis HLS).
+//
+// The models use only the subset that both back ends share:
+//   * construction and assignment from integers and from other lx types (truncating wrap to W
+//     bits, two's complement for sint: the AP_WRAP / AP_TRN behaviour of ap_int);
+//   * arithmetic and comparison through conversion to a native integer (own back end) or
+//     through ap_int's width-growing operators (Vitis); both give the same value as long as the
+//     exact result fits the native type — every product of two W-bit operands is first widened to
+//     the result type by an explicit cast, e.g. acc_t(n) * r;
+//   * .to_int(), .to_uint(), .to_int64(), .to_uint64() for explicit narrowing.
+// Single bits are plain bool on both back ends.
+#ifndef LASERAX_HLS_LX_TYPES_H
+#define LASERAX_HLS_LX_TYPES_H
+
+#include <cstdint>
+#include <type_traits>
+
+#ifdef LASERAX_USE_AP_TYPES
+#include <ap_int.h>
+namespace lx {
+template <int W> using sint = ap_int<W>;
+template <int W> using uint = ap_uint<W>;
+}  // namespace lx
+#else
+namespace lx {
+
+__extension__ typedef __int128 i128;
+__extension__ typedef unsigned __int128 u128;
+
+template <int W, bool S>
+class fixed_int {
+    static_assert(W >= 1 && W <= 128, "lx::fixed_int supports 1..128 bits");
+    static constexpr bool kWide = W > 64;
+    using ustore = typename std::conditional<kWide, u128, uint64_t>::type;
+
+public:
+    using store_t = typename std::conditional<
+        S, typename std::conditional<kWide, i128, int64_t>::type, ustore>::type;
+
+    constexpr fixed_int() : v_(0) {}
+    // Any integer or lx value: keep the low W bits (two's complement wrap), like ap_int.
+    template <typename T, typename = typename std::enable_if<!std::is_floating_point<T>::value>::type>
+    constexpr fixed_int(const T& x) : v_(wrap(to_u128(x))) {}
+
+    constexpr operator store_t() const { return v_; }
+
+    constexpr int to_int() const { return static_cast<int>(v_); }
+    constexpr unsigned to_uint() const { return static_cast<unsigned>(v_); }
+    constexpr int64_t to_int64() const { return static_cast<int64_t>(v_); }
+    constexpr uint64_t to_uint64() const { return static_cast<uint64_t>(v_); }
+
+    static constexpr int width = W;
+
+private:
+    template <typename T>
+    static constexpr u128 to_u128(const T& x) {
+        // lx types convert through their store type; native integers directly. Conversion of a
+        // negative value to an unsigned type is modular (well defined).
+        return static_cast<u128>(static_cast<typename conv<T>::type>(x));
+    }
+    template <typename T, typename = void>
+    struct conv { using type = T; };
+    template <typename T>
+    struct conv<T, typename std::enable_if<!std::is_integral<T>::value &&
+                                           !std::is_same<T, i128>::value &&
+                                           !std::is_same<T, u128>::value>::type> {
+        using type = typename T::store_t;
+    };
+
+    static constexpr store_t wrap(u128 x) {
+        const ustore mask = W == (kWide ? 128 : 64) ? ~ustore(0) : ((ustore(1) << (W % (kWide ? 128 : 64))) - 1);
+        const ustore u = static_cast<ustore>(x) & mask;
+        if (!S) return static_cast<store_t>(u);
+        const ustore sign = ustore(1) << (W - 1);
+        return static_cast<store_t>((u ^ sign) - sign);  // sign extension, no shift of negatives
+    }
+
+    store_t v_;
+};
+
+template <int W> using sint = fixed_int<W, true>;
+template <int W> using uint = fixed_int<W, false>;
+
+}  // namespace lx
+#endif
+
+namespace lx {
+// Number of bits needed to hold values 0..v; usable with both back ends for derived widths.
+// (compile-time only; a loop rather than recursion to keep the hls/ lint simple).
+constexpr int clog2p1(unsigned long long v) {
+    int n = 1;
+    while (v >= 2ULL) {
+        v >>= 1;
+        ++n;
+    }
+    return n;
+}
+}  // namespace lx
+
+#endif  // LASERAX_HLS_LX_TYPES_H

@@ -1,0 +1,88 @@
+// pulse_multiplier.h — raw laser counts to compensated output counts.
+//
+// DESIGN §4.3. After every call comp = floor(N * R / 2^R_FRAC), a pure function of the current
+// raw count N and ratio R. The accumulator acc holds N*R exactly and is updated with one
+// multiply and one add per call ("multiplication and addition"):
+//     acc' = acc + (N' - N) * R' + N * (R' - R)            (= N' * R')
+// where N' - N is the step, or the step minus sign*2^W_RAW when the raw counter wraps (that term
+// is a shift, not a multiply). A ratio change therefore re-bases the position exactly and the
+// jump leaves as `delta`, to be paced out by the output_pacer; nothing depends on the path.
+//
+// Widths: N 32 signed, R 37 unsigned (Q5.32), R'-R 38 signed, acc 70 signed, comp 38 signed.
+// Latency: 1 call (step in, comp/delta out).
+#ifndef LASERAX_HLS_PULSE_MULTIPLIER_H
+#define LASERAX_HLS_PULSE_MULTIPLIER_H
+
+#include "hls/axis_config.h"
+
+namespace lx {
+
+struct pulse_multiplier_cfg {
+    static constexpr int W_RAW = axis_widths::W_RAW;
+    static constexpr int R_FRAC = axis_widths::R_FRAC;
+    static constexpr int W_RATIO = axis_widths::W_RATIO;
+    static constexpr int W_DRATIO = W_RATIO + 1;  // R' - R, signed
+    static constexpr int W_ACC = axis_widths::W_ACC;
+    using dratio_t = sint<W_DRATIO>;
+    using nwide_t = sint<W_RAW + 1>;  // N + step before the wrap
+};
+
+class pulse_multiplier {
+public:
+    using cfg = pulse_multiplier_cfg;
+    struct out_t {
+        pos_t comp;
+        delta_t delta;
+    };
+
+    pulse_multiplier() { reset(); }
+
+    void reset() {
+        n_ = 0;
+        r_ = 0;
+        acc_ = 0;
+        comp_ = 0;
+    }
+
+    // Preset port (position load, also used by the testbenches to reach the 32-bit wrap without
+    // 2^31 calls): N and R are loaded and acc = N * R is formed with the same multiplier.
+    void preset(raw_t n, ratio_t ratio) {
+        n_ = n;
+        r_ = ratio;
+        acc_ = acc_t(n) * ratio;
+        comp_ = acc_ >> cfg::R_FRAC;
+    }
+
+    out_t step(step_t step, ratio_t ratio) {
+        const cfg::nwide_t n_sum = cfg::nwide_t(n_) + step;
+        const raw_t n_next = n_sum;  // wraps at W_RAW bits
+        const cfg::dratio_t dr = cfg::dratio_t(ratio) - cfg::dratio_t(r_);
+        acc_t acc = acc_ + acc_t(n_) * dr;  // the one multiplier: re-base to the new ratio
+        if (step > 0) acc = acc + acc_t(ratio);
+        if (step < 0) acc = acc - acc_t(ratio);
+        if (n_sum != cfg::nwide_t(n_next)) {
+            // Raw counter wrapped: N' = N + step -/+ 2^W_RAW, so subtract/add R' << W_RAW.
+            const acc_t wrap_term = acc_t(ratio) << cfg::W_RAW;
+            acc = (step > 0) ? acc_t(acc - wrap_term) : acc_t(acc + wrap_term);
+        }
+        const pos_t comp_next = acc >> cfg::R_FRAC;  // floor: arithmetic shift
+        out_t o;
+        o.comp = comp_next;
+        o.delta = delta_t(comp_next) - delta_t(comp_);
+        n_ = n_next;
+        r_ = ratio;
+        acc_ = acc;
+        comp_ = comp_next;
+        return o;
+    }
+
+private:
+    raw_t n_;
+    ratio_t r_;
+    acc_t acc_;
+    pos_t comp_;
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_PULSE_MULTIPLIER_H

@@ -1,0 +1,221 @@
+// tb_blocks — block-level checks of input_filter, quad_decoder and output_pacer, hls against
+// golden on every call, plus direct checks of the behaviour each block promises.
+//
+// input_filter: every filter length 0..12 with random pins that hold for random times (many
+//   shorter than N): outputs equal; no pulse shorter than max(N,1) calls ever reaches the output;
+//   the latency of a clean edge is exactly max(N,1) + 1 calls.
+// quad_decoder: random quadrature motion with glitches, illegal transitions (A and B together),
+//   laser error bursts, clears and random minimum spacing: every output equal; a clean sequence
+//   of k edges counts exactly k; each illegal transition raises the flag and bumps the counter.
+// output_pacer: random deltas including huge jumps, random M and threshold: every output equal;
+//   consecutive counts are >= M calls apart; paced + backlog == sum of deltas; drains fully.
+#include <random>
+
+#include "golden/input_filter.h"
+#include "golden/output_pacer.h"
+#include "golden/quad_decoder.h"
+#include "hls/input_filter.h"
+#include "hls/output_pacer.h"
+#include "hls/quad_decoder.h"
+#include "tb/tb_util.h"
+#include "tools/common/sim.h"
+
+namespace {
+
+void test_input_filter(tbu::result& res, std::mt19937_64& rng) {
+    for (int n = 0; n <= 12; ++n) {
+        lx::input_filter<8> h;
+        golden::input_filter g;
+        g.reset();
+        bool pin = false;
+        long hold = 0;
+        bool last_out = false;
+        long last_change = -1000;
+        for (long t = 0; t < 200000 && res.failures < 10; ++t) {
+            if (hold-- <= 0) {
+                pin = !pin;
+                hold = static_cast<long>(rng() % static_cast<unsigned>(3 * (n + 1)));
+            }
+            const lx::input_filter<8>::out_t ho = h.step(pin, n);
+            const golden::input_filter::out go = g.step(pin, n);
+            res.expect(ho.f == go.f && ho.valid == go.valid, [&] {
+                return "input_filter N=" + std::to_string(n) + " call " + std::to_string(t) + ": f/valid hls " +
+                       std::to_string(ho.f) + "/" + std::to_string(ho.valid) + " golden " + std::to_string(go.f) + "/" +
+                       std::to_string(go.valid);
+            });
+            // an output level, once valid, lasts at least max(N,1) calls
+            if (ho.valid && ho.f != last_out) {
+                const long len = t - last_change;
+                res.expect(last_change < 0 || len >= (n < 1 ? 1 : n), [&] {
+                    return "input_filter N=" + std::to_string(n) + ": output pulse of " + std::to_string(len) + " calls";
+                });
+                last_change = t;
+                last_out = ho.f;
+            }
+        }
+        // latency of a clean edge
+        lx::input_filter<8> h2;
+        long lat = -1;
+        for (long t = 0; t < 100; ++t) {
+            const bool p = t >= 10;
+            const lx::input_filter<8>::out_t o = h2.step(p, n);
+            if (o.f && lat < 0) lat = t - 10;
+        }
+        const long want = (n < 1 ? 1 : n) + 1;
+        res.check(lat == want, "input_filter N=" + std::to_string(n) + ": latency " + std::to_string(lat) + " want " +
+                                   std::to_string(want));
+        // a pulse one call shorter than N never passes
+        if (n >= 2) {
+            lx::input_filter<8> h3;
+            bool passed = false;
+            for (long t = 0; t < 100; ++t) {
+                const bool p = t >= 10 && t < 10 + n - 1;
+                if (h3.step(p, n).f) passed = true;
+            }
+            res.check(!passed, "input_filter N=" + std::to_string(n) + ": pulse of N-1 calls passed");
+        }
+    }
+}
+
+void test_quad_decoder(tbu::result& res, std::mt19937_64& rng) {
+    for (int rep = 0; rep < 40 && res.failures < 10; ++rep) {
+        lx::quad_decoder h;
+        golden::quad_decoder g;
+        g.reset();
+        const int glitch = static_cast<int>(rng() % 5);
+        const int min_sp = static_cast<int>(rng() % 20);
+        int64_t n = 0;
+        int glitch_left = 0, glitch_pin = 0, lerr_left = 0;
+        long spacing = 1 + static_cast<long>(rng() % 30), wait = 0;
+        int dir = 1;
+        for (long t = 0; t < 100000; ++t) {
+            if (wait-- <= 0) {
+                n += dir;
+                wait = spacing;
+                if (rng() % 200 == 0) dir = -dir;
+                if (rng() % 100 == 0) spacing = 1 + static_cast<long>(rng() % 30);
+            }
+            if (rng() % 5000 == 0) n += 2;  // illegal
+            if (glitch_left == 0 && rng() % 300 == 0) {
+                glitch_left = 1 + static_cast<int>(rng() % 4);
+                glitch_pin = static_cast<int>(rng() % 2);
+            }
+            if (lerr_left == 0 && rng() % 20000 == 0) lerr_left = 1 + static_cast<int>(rng() % 50);
+            bool a, b;
+            lxt::quad_pins(n, a, b);
+            if (glitch_left > 0) {
+                if (glitch_pin) a = !a; else b = !b;
+                --glitch_left;
+            }
+            const bool lerr = lerr_left > 0;
+            if (lerr_left > 0) --lerr_left;
+            const bool clear = rng() % 3000 == 0;
+            const lx::quad_decoder::out_t ho = h.step(a, b, lerr, glitch, min_sp, clear);
+            const golden::quad_decoder::out go = g.step(a, b, lerr, glitch, min_sp, clear);
+            const bool same = ho.step == go.step && ho.raw_count == go.raw_count && ho.illegal == go.illegal &&
+                              ho.ovs == go.ovs && ho.err_cnt.to_int() == go.err_cnt && ho.illegal_st == go.illegal_st &&
+                              ho.ovs_st == go.ovs_st && ho.lerr == go.lerr && ho.lerr_alarm == go.lerr_alarm;
+            if (!res.expect(same, [&] {
+                    return "quad_decoder rep " + std::to_string(rep) + " call " + std::to_string(t) + ": step " +
+                           std::to_string(ho.step.to_int()) + "/" + std::to_string(go.step) + " raw " +
+                           std::to_string(ho.raw_count.to_int64()) + "/" + std::to_string(go.raw_count) + " illegal " +
+                           std::to_string(ho.illegal) + "/" + std::to_string(go.illegal) + " ovs " +
+                           std::to_string(ho.ovs) + "/" + std::to_string(go.ovs) + " err_cnt " +
+                           std::to_string(ho.err_cnt.to_int()) + "/" + std::to_string(go.err_cnt) + " lerr " +
+                           std::to_string(ho.lerr) + "/" + std::to_string(go.lerr) + " (hls/golden)";
+                }))
+                break;
+        }
+    }
+    // clean sequences: k edges count k, forward and backward, every glitch length
+    for (int glitch = 0; glitch <= 6; ++glitch) {
+        for (int dir = 1; dir >= -1; dir -= 2) {
+            lx::quad_decoder h;
+            int64_t n = 0;
+            long long illegal = 0;
+            for (long t = 0; t < 20000; ++t) {
+                if (t > 20 && t % (glitch + 3) == 0 && t < 15000) n += dir;
+                bool a, b;
+                lxt::quad_pins(n, a, b);
+                const lx::quad_decoder::out_t o = h.step(a, b, false, glitch, 0, false);
+                illegal += o.illegal ? 1 : 0;
+            }
+            const lx::quad_decoder::out_t o = h.step(false, false, false, glitch, 0, false);
+            (void)o;
+            res.check(illegal == 0, "clean sequence flagged illegal");
+            bool a, b;
+            lxt::quad_pins(n, a, b);
+            const lx::quad_decoder::out_t f = h.step(a, b, false, glitch, 0, false);
+            res.check(f.raw_count.to_int64() == n, "clean sequence, glitch " + std::to_string(glitch) + ": counted " +
+                                                       std::to_string(f.raw_count.to_int64()) + " of " + std::to_string(n));
+        }
+    }
+    // every illegal transition is flagged and counted (saturating at 255)
+    {
+        lx::quad_decoder h;
+        for (int k = 0; k < 300; ++k) {
+            for (int t = 0; t < 6; ++t) h.step(false, false, false, 0, 0, false);
+            lx::quad_decoder::out_t o{};
+            bool flagged = false;
+            for (int t = 0; t < 6; ++t) {
+                o = h.step(true, true, false, 0, 0, false);
+                flagged = flagged || o.illegal;
+            }
+            res.check(flagged && o.illegal_st && o.err_cnt.to_int() == std::min(2 * k + 1, 255),
+                      "illegal transition " + std::to_string(k) + " not flagged/counted (err_cnt " +
+                          std::to_string(o.err_cnt.to_int()) + ")");
+            for (int t = 0; t < 6; ++t) o = h.step(false, false, false, 0, 0, false);
+        }
+    }
+}
+
+void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
+    for (int rep = 0; rep < 50 && res.failures < 10; ++rep) {
+        lx::output_pacer h;
+        golden::output_pacer g;
+        g.reset();
+        const int m = 2 + static_cast<int>(rng() % 7);
+        const uint64_t thr = 1 + rng() % 300;
+        int64_t sum = 0;
+        long last_emit = -1000000;
+        for (long t = 0; t < 60000; ++t) {
+            int64_t delta = 0;
+            if (t < 50000) {
+                const uint64_t k = rng() % 1000;
+                if (k < 100) delta = static_cast<int64_t>(rng() % 17) - 8;
+                else if (k == 100) delta = static_cast<int64_t>(rng() % 4001) - 2000;  // ratio jump
+            }
+            sum += delta;
+            const bool clear = rng() % 5000 == 0;
+            const lx::output_pacer::out_t ho = h.step(delta, m, thr, clear);
+            const golden::output_pacer::out go = g.step(delta, m, thr, clear);
+            const bool same = ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog &&
+                              ho.ovs == go.ovs && ho.ovs_st == go.ovs_st;
+            if (!res.expect(same, [&] {
+                    return "output_pacer rep " + std::to_string(rep) + " call " + std::to_string(t) + ": pstep " +
+                           std::to_string(ho.pstep.to_int()) + "/" + std::to_string(go.pstep) + " backlog " +
+                           std::to_string(ho.backlog.to_int64()) + "/" + std::to_string(go.backlog) + " (hls/golden)";
+                }))
+                break;
+            if (ho.pstep != 0) {
+                res.expect(t - last_emit >= m, [&] { return "pacer emitted counts closer than M"; });
+                last_emit = t;
+            }
+            res.expect(ho.paced.to_int64() + ho.backlog.to_int64() == sum,
+                       [&] { return "pacer lost counts at call " + std::to_string(t); });
+        }
+        res.check(h.step(0, m, thr, false).backlog == 0, "pacer did not drain");
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const uint64_t seed = tbu::seed_from(argc, argv, 5);
+    tbu::result res("tb_blocks", seed);
+    std::mt19937_64 rng(seed);
+    test_input_filter(res, rng);
+    test_quad_decoder(res, rng);
+    test_output_pacer(res, rng);
+    return res.finish();
+}

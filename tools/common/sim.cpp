@@ -1,0 +1,205 @@
+#include "tools/common/sim.h"
+
+#include <cmath>
+#include <sstream>
+
+#include "tools/common/dds_table.h"
+
+namespace lxt {
+
+uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm) {
+    const long double r = static_cast<long double>(vacuum_nm) / static_cast<long double>(air_index) /
+                          static_cast<long double>(count_nm) * 4294967296.0L;
+    return static_cast<uint64_t>(std::llround(r));
+}
+
+lx::axis_regs to_hls(const axis_settings& s) {
+    lx::axis_regs r;
+    r.period = s.period;
+    r.ratio = s.ratio;
+    r.glitch_n = s.glitch_n;
+    r.sw_debounce = s.sw_debounce;
+    r.min_spacing = s.min_spacing;
+    r.pace_m = s.pace_m;
+    r.backlog_thr = s.backlog_thr;
+    r.mark_len = s.mark_len;
+    r.dac_width = s.dac_width;
+    r.amplitude = s.amplitude;
+    r.tbl_period = s.tbl_period;
+    r.rehome = s.rehome;
+    r.clear = s.clear;
+    return r;
+}
+
+golden::axis_regs to_golden(const axis_settings& s) {
+    golden::axis_regs r;
+    r.period = s.period;
+    r.ratio = s.ratio;
+    r.glitch_n = s.glitch_n;
+    r.sw_debounce = s.sw_debounce;
+    r.min_spacing = s.min_spacing;
+    r.pace_m = s.pace_m;
+    r.backlog_thr = s.backlog_thr;
+    r.mark_len = s.mark_len;
+    r.dac_width = s.dac_width;
+    r.amplitude = s.amplitude;
+    r.tbl_period = s.tbl_period;
+    r.rehome = s.rehome;
+    r.clear = s.clear;
+    return r;
+}
+
+void load_table(lx::axis_core& core, int period, int amplitude) {
+    const std::vector<uint32_t> t = dds_table(period, amplitude);
+    for (size_t k = 0; k < t.size(); ++k) core.dds().write(static_cast<unsigned>(k), t[k]);
+}
+
+namespace {
+struct cmp {
+    const char* name = nullptr;
+    long long got = 0, exp = 0;
+    void operator()(const char* n, long long g, long long e) {
+        if (name == nullptr && g != e) {
+            name = n;
+            got = g;
+            exp = e;
+        }
+    }
+    std::string text() const {
+        if (name == nullptr) return std::string();
+        std::ostringstream os;
+        os << "signal " << name << ": expected (golden) " << exp << ", got (hls) " << got;
+        return os.str();
+    }
+};
+}  // namespace
+
+std::string compare(const lx::axis_out& h, const golden::axis_out& g) {
+    cmp c;
+    c("sin", h.sin.to_int64(), g.sin);
+    c("cos", h.cos.to_int64(), g.cos);
+    c("ref_mark", h.ref_mark, g.ref_mark);
+    c("qa", h.qa, g.qa);
+    c("qb", h.qb, g.qb);
+    c("qz", h.qz, g.qz);
+    c("cfg_err", h.cfg_err, g.cfg_err);
+    c("stage", h.stage.to_int64(), g.stage);
+    c("homed", h.homed, g.homed);
+    c("lerr_alarm", h.lerr_alarm, g.lerr_alarm);
+    c("illegal_st", h.illegal_st, g.illegal_st);
+    c("err_cnt", h.err_cnt.to_int64(), g.err_cnt);
+    c("ovs_edge_st", h.ovs_edge_st, g.ovs_edge_st);
+    c("ovs_backlog_st", h.ovs_backlog_st, g.ovs_backlog_st);
+    c("alarm", h.alarm, g.alarm);
+    c("raw_count", h.raw_count.to_int64(), g.raw_count);
+    c("step", h.step.to_int64(), g.step);
+    c("comp_pos", h.comp_pos.to_int64(), g.comp_pos);
+    c("delta", h.delta.to_int64(), g.delta);
+    c("backlog", h.backlog.to_int64(), g.backlog);
+    c("pstep", h.pstep.to_int64(), g.pstep);
+    c("paced_pos", h.paced_pos.to_int64(), g.paced_pos);
+    c("ostep", h.ostep.to_int64(), g.ostep);
+    c("out_pos", h.out_pos.to_int64(), g.out_pos);
+    c("adj", h.adj.to_int64(), g.adj);
+    c("a_pos", h.a_pos.to_int64(), g.a_pos);
+    c("b_pos", h.b_pos.to_int64(), g.b_pos);
+    c("c_pos", h.c_pos.to_int64(), g.c_pos);
+    c("z_pos", h.z_pos.to_int64(), g.z_pos);
+    c("d", h.d.to_int64(), g.d);
+    c("rep_mark", h.rep_mark, g.rep_mark);
+    return c.text();
+}
+
+axis_motion::axis_motion(double start_nm, double lambda_nm, double fringe_frac0)
+    : x_(start_nm), x0_(start_nm), lambda_(lambda_nm), frac0_(fringe_frac0) {}
+
+bool axis_motion::tick() {
+    while (seg_ < segs_.size()) {
+        const motion_segment& s = segs_[seg_];
+        const double dx = s.target_nm - x_;
+        if (std::fabs(dx) <= s.speed_nm_per_cycle) {
+            x_ = s.target_nm;
+            ++seg_;
+            return true;
+        }
+        x_ += dx > 0 ? s.speed_nm_per_cycle : -s.speed_nm_per_cycle;
+        return true;
+    }
+    return false;
+}
+
+int64_t axis_motion::raw_count() const {
+    return static_cast<int64_t>(std::floor((x_ - x0_) / lambda_ + frac0_));
+}
+
+bool ref_switch::level(double x_nm, std::mt19937_64& rng) const {
+    const double past = (x_nm - edge_nm) * dir;  // > 0 once the cam is reached
+    if (past < 0) return false;
+    if (past < bounce_nm) return (rng() & 1u) != 0;
+    return true;
+}
+
+void controller_decoder::reset(int period, int64_t start_pos) {
+    period_ = period;
+    pos_sc_ = start_pos;
+    pos_q_ = start_pos;
+    primed_ = false;
+}
+
+bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb) {
+    const double two_pi = 6.283185307179586;
+    double ang = std::atan2(static_cast<double>(sin_code), static_cast<double>(cos_code));
+    if (ang < 0) ang += two_pi;
+    const int ph = static_cast<int>(std::lround(ang / two_pi * period_)) % period_;
+    const int qi = qa ? (qb ? 2 : 1) : (qb ? 3 : 0);
+    bool ok = true;
+    if (!primed_) {
+        // phase of the start position
+        last_ph_ = ph;
+        last_q_ = qi;
+        primed_ = true;
+        return true;
+    }
+    int dph = ph - last_ph_;
+    if (dph > period_ / 2) dph -= period_;
+    if (dph < -period_ / 2) dph += period_;
+    if (dph > 1 || dph < -1) ok = false;
+    pos_sc_ += dph;
+    last_ph_ = ph;
+    const int dq = ((qi - last_q_) % 4 + 4) % 4;
+    if (dq == 1) pos_q_ += 1;
+    if (dq == 3) pos_q_ -= 1;
+    if (dq == 2) ok = false;
+    last_q_ = qi;
+    return ok;
+}
+
+dual_axis::dual_axis(const axis_settings& s) : s_(s), hr_(to_hls(s)), gr_(to_golden(s)) {
+    load_table(core_, static_cast<int>(s.period), static_cast<int>(s.amplitude));
+    gold_.reset();
+}
+
+void dual_axis::set(const axis_settings& s) {
+    if (s.period != s_.period || s.amplitude != s_.amplitude) {
+        std::string err;
+        if (!dds_table(static_cast<int>(s.period), static_cast<int>(s.amplitude), &err).empty())
+            load_table(core_, static_cast<int>(s.period), static_cast<int>(s.amplitude));
+    }
+    s_ = s;
+    hr_ = to_hls(s);
+    gr_ = to_golden(s);
+}
+
+std::string dual_axis::step(const lx::axis_pins& p) {
+    golden::axis_pins gp;
+    gp.a = p.a;
+    gp.b = p.b;
+    gp.sw = p.sw;
+    gp.lerr = p.lerr;
+    h_ = core_.step(p, hr_);
+    g_ = gold_.step(gp, gr_);
+    ++calls_;
+    return compare(h_, g_);
+}
+
+}  // namespace lxt

@@ -1,0 +1,139 @@
+// sim.h — testbench and tool support shared by tb/ and tools/: register settings for both
+// models, table loading, output comparison, a physical motion model that drives the pins, and a
+// controller-side decoder of the sin/cos and A/B outputs.
+//
+// Nothing here is a model of the IP: it stands outside both hls/ and golden/ and talks to each in
+// its own types.
+#ifndef LASERAX_TOOLS_SIM_H
+#define LASERAX_TOOLS_SIM_H
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "golden/axis_chain.h"
+#include "hls/axis_core.h"
+
+namespace lxt {
+
+// Physical constants of the default set-up (DESIGN §1).
+constexpr double kVacuumWavelengthNm = 632.991;
+constexpr double kAirIndexDefault = 1.000271;
+constexpr double kOutputCountNm = 78.125;  // 20 um / 256
+constexpr double kClockHz = 100e6;        // model clock for time axes and speeds
+
+// One register set in plain integers; converted to each model's own register struct.
+struct axis_settings {
+    int64_t period = 256;
+    uint64_t ratio = 34789620252ULL;
+    int64_t glitch_n = 2;
+    int64_t sw_debounce = 16;
+    int64_t min_spacing = 0;
+    int64_t pace_m = 4;
+    uint64_t backlog_thr = 4096;
+    int64_t mark_len = 64;
+    int64_t dac_width = 16;
+    int64_t amplitude = 32767;
+    int64_t tbl_period = 256;
+    bool rehome = false;
+    bool clear = false;
+};
+
+// Ratio register for one raw count = vacuum wavelength / air index, output count in nm.
+uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm);
+
+lx::axis_regs to_hls(const axis_settings& s);
+golden::axis_regs to_golden(const axis_settings& s);
+
+// Writes the quarter-wave table for (period, amplitude) into the core's table RAM (host driver).
+void load_table(lx::axis_core& core, int period, int amplitude);
+
+// Compares every output and tap; returns "" or a message naming the first differing signal.
+std::string compare(const lx::axis_out& h, const golden::axis_out& g);
+
+// The quadrature levels (A, B) for raw count index n (forward = A leads B).
+inline void quad_pins(int64_t n, bool& a, bool& b) {
+    const int i = static_cast<int>(((n % 4) + 4) % 4);
+    a = i == 1 || i == 2;
+    b = i == 2 || i == 3;
+}
+
+// Physical axis: position in nm, moved by a list of constant-velocity segments. Produces the
+// laser's raw count (floor((x - x0)/lambda + frac0)) and the reference switch level.
+struct motion_segment {
+    double target_nm;
+    double speed_nm_per_cycle;  // > 0
+};
+
+class axis_motion {
+public:
+    axis_motion(double start_nm, double lambda_nm, double fringe_frac0);
+    void add(double target_nm, double speed_nm_per_cycle) { segs_.push_back({target_nm, speed_nm_per_cycle}); }
+    // Advances one clock; returns false when every segment is done (the axis then stands still).
+    bool tick();
+    double x_nm() const { return x_; }
+    int64_t raw_count() const;
+    bool done() const { return seg_ >= segs_.size(); }
+
+private:
+    std::vector<motion_segment> segs_;
+    size_t seg_ = 0;
+    double x_, x0_, lambda_, frac0_;
+};
+
+// Reference switch: a cam that closes for x >= edge_nm (dir +1) or x <= edge_nm (dir -1), with
+// optional contact bounce: within bounce_nm past the edge the level is random.
+struct ref_switch {
+    double edge_nm = 0;
+    int dir = 1;
+    double bounce_nm = 0;
+    bool level(double x_nm, std::mt19937_64& rng) const;
+};
+
+// Controller-side decoder: what a controller's interpolator reconstructs from the outputs.
+// sin/cos -> phase index round(atan2 * P / 2pi), unwrapped by period counting; A/B -> 4x count.
+class controller_decoder {
+public:
+    void reset(int period, int64_t start_pos);
+    // Feeds one call's outputs; returns false if a sin/cos step of more than one count (or an
+    // illegal A/B transition) was seen.
+    bool feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb);
+    int64_t sincos_pos() const { return pos_sc_; }
+    int64_t quad_pos() const { return pos_q_; }
+
+private:
+    int period_ = 256;
+    int64_t pos_sc_ = 0, pos_q_ = 0;
+    int last_ph_ = 0;
+    int last_q_ = 0;
+    bool primed_ = false;
+};
+
+// Convenience: both models, the same settings, stepped together and compared.
+class dual_axis {
+public:
+    explicit dual_axis(const axis_settings& s);
+    void set(const axis_settings& s);  // new register values (table reloaded if P/amp changed)
+    // Steps both models; returns "" or the mismatch text.
+    std::string step(const lx::axis_pins& p);
+    const lx::axis_out& hls() const { return h_; }
+    const golden::axis_out& gold() const { return g_; }
+    lx::axis_core& core() { return core_; }
+    const axis_settings& settings() const { return s_; }
+    uint64_t calls() const { return calls_; }
+
+private:
+    axis_settings s_;
+    lx::axis_regs hr_;
+    golden::axis_regs gr_;
+    lx::axis_core core_;
+    golden::axis_chain gold_;
+    lx::axis_out h_{};
+    golden::axis_out g_{};
+    uint64_t calls_ = 0;
+};
+
+}  // namespace lxt
+
+#endif

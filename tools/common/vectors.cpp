@@ -1,0 +1,495 @@
+#include "tools/common/vectors.h"
+
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <sstream>
+
+#include "golden/dds_sincos.h"
+#include "golden/input_filter.h"
+#include "golden/output_pacer.h"
+#include "golden/pulse_multiplier.h"
+#include "golden/quad_decoder.h"
+#include "golden/rephase.h"
+#include "hls/axis_core.h"
+#include "tools/common/dds_table.h"
+#include "tools/common/sim.h"
+
+namespace lxt {
+
+int vec_table::col(const std::string& name) const {
+    for (size_t i = 0; i < cols.size(); ++i)
+        if (cols[i].name == name) return static_cast<int>(i);
+    return -1;
+}
+
+namespace {
+
+int hex_digits(int bits) { return (bits + 3) / 4; }
+
+std::string header_lines(const vec_table& t, const std::string& command, const char* lead) {
+    std::ostringstream os;
+    os << lead << " laserax golden vectors, block " << t.block << ", " << t.rows.size() << " calls (one row per clock)\n"
+       << lead << " GENERATED FILE. Command: " << command << "\n"
+       << lead << " expected columns come from golden/ and were checked equal to hls/ when written\n";
+    for (const vec_column& c : t.cols)
+        os << lead << " field " << c.name << " " << (c.is_input ? "in" : "out") << " " << c.bits << " "
+           << (c.is_signed ? "signed" : "unsigned") << "\n";
+    return os.str();
+}
+
+bool fits(int64_t v, const vec_column& c) {
+    if (c.bits >= 64) return true;
+    if (c.is_signed) {
+        const int64_t lim = int64_t(1) << (c.bits - 1);
+        return v >= -lim && v < lim;
+    }
+    return v >= 0 && static_cast<uint64_t>(v) < (uint64_t(1) << c.bits);
+}
+
+bool parse_i64(const std::string& s, int64_t& v) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    const long long x = std::strtoll(s.c_str(), &end, 10);
+    if (*end != '\0' || errno != 0) return false;
+    v = x;
+    return true;
+}
+
+std::vector<std::string> split(const std::string& line, char sep) {
+    std::vector<std::string> f;
+    std::string cur;
+    for (char ch : line) {
+        if (ch == sep) {
+            f.push_back(cur);
+            cur.clear();
+        } else if (ch != '\r') {
+            cur += ch;
+        }
+    }
+    f.push_back(cur);
+    return f;
+}
+
+}  // namespace
+
+std::string vec_to_csv(const vec_table& t, const std::string& command) {
+    std::ostringstream os;
+    os << header_lines(t, command, "#");
+    for (size_t i = 0; i < t.cols.size(); ++i) os << (i ? "," : "") << t.cols[i].name;
+    os << "\n";
+    for (const std::vector<int64_t>& r : t.rows) {
+        for (size_t i = 0; i < r.size(); ++i) os << (i ? "," : "") << r[i];
+        os << "\n";
+    }
+    return os.str();
+}
+
+std::string vec_to_hex(const vec_table& t, const std::string& command) {
+    std::ostringstream os;
+    os << header_lines(t, command, "//");
+    os << "// each line: the fields above concatenated in that order, each as two's complement in\n"
+       << "// ceil(bits/4) hex digits (most significant field first)\n";
+    char buf[32];
+    for (const std::vector<int64_t>& r : t.rows) {
+        for (size_t i = 0; i < r.size(); ++i) {
+            const int bits = t.cols[i].bits;
+            const int digits = hex_digits(bits);
+            uint64_t u = static_cast<uint64_t>(r[i]);
+            if (bits < 64) u &= (uint64_t(1) << bits) - 1;
+            if (digits < 4 * 4) u &= (digits >= 16) ? ~uint64_t(0) : ((uint64_t(1) << (4 * digits)) - 1);
+            std::snprintf(buf, sizeof buf, "%0*llx", digits, static_cast<unsigned long long>(u));
+            os << buf;
+        }
+        os << "\n";
+    }
+    return os.str();
+}
+
+bool vec_from_csv(const std::string& text, vec_table& t, std::string* err) {
+    t.cols.clear();
+    t.rows.clear();
+    std::istringstream is(text);
+    std::string line;
+    long ln = 0;
+    bool have_header = false;
+    std::vector<vec_column> declared;
+    while (std::getline(is, line)) {
+        ++ln;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty()) continue;
+        if (line[0] == '#') {
+            std::istringstream ls(line.substr(1));
+            std::string w, name, dir, sgn;
+            int bits = 0;
+            ls >> w;
+            if (w == "block") continue;
+            if (w == "field") {
+                if (!(ls >> name >> dir >> bits >> sgn) || bits < 1 || bits > 64) {
+                    if (err) *err = "line " + std::to_string(ln) + ": malformed field declaration";
+                    return false;
+                }
+                vec_column c;
+                c.name = name;
+                c.bits = bits;
+                c.is_input = dir == "in";
+                c.is_signed = sgn == "signed";
+                declared.push_back(c);
+            }
+            continue;
+        }
+        const std::vector<std::string> f = split(line, ',');
+        if (!have_header) {
+            if (declared.size() != f.size()) {
+                if (err) *err = "line " + std::to_string(ln) + ": header has " + std::to_string(f.size()) +
+                                " columns but " + std::to_string(declared.size()) + " fields are declared";
+                return false;
+            }
+            for (size_t i = 0; i < f.size(); ++i) {
+                if (f[i] != declared[i].name) {
+                    if (err) *err = "line " + std::to_string(ln) + ": column '" + f[i] + "' does not match field '" +
+                                    declared[i].name + "'";
+                    return false;
+                }
+            }
+            t.cols = declared;
+            have_header = true;
+            continue;
+        }
+        if (f.size() != t.cols.size()) {
+            if (err) *err = "line " + std::to_string(ln) + ": " + std::to_string(f.size()) + " values, expected " +
+                            std::to_string(t.cols.size());
+            return false;
+        }
+        std::vector<int64_t> row(f.size());
+        for (size_t i = 0; i < f.size(); ++i) {
+            if (!parse_i64(f[i], row[i]) || !fits(row[i], t.cols[i])) {
+                if (err) *err = "line " + std::to_string(ln) + ": column " + t.cols[i].name + ": bad value '" + f[i] + "'";
+                return false;
+            }
+        }
+        t.rows.push_back(row);
+    }
+    if (!have_header) {
+        if (err) *err = "no header row";
+        return false;
+    }
+    return true;
+}
+
+bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t, std::string* err) {
+    t.cols = layout.cols;
+    t.block = layout.block;
+    t.rows.clear();
+    size_t width = 0;
+    for (const vec_column& c : layout.cols) width += static_cast<size_t>(hex_digits(c.bits));
+    std::istringstream is(text);
+    std::string line;
+    long ln = 0;
+    while (std::getline(is, line)) {
+        ++ln;
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        if (line.empty() || line.rfind("//", 0) == 0) continue;
+        if (line.size() != width) {
+            if (err) *err = "line " + std::to_string(ln) + ": " + std::to_string(line.size()) + " hex digits, expected " +
+                            std::to_string(width);
+            return false;
+        }
+        std::vector<int64_t> row;
+        size_t pos = 0;
+        for (const vec_column& c : layout.cols) {
+            const int d = hex_digits(c.bits);
+            uint64_t u = 0;
+            for (int k = 0; k < d; ++k) {
+                const char ch = line[pos + static_cast<size_t>(k)];
+                int v = -1;
+                if (ch >= '0' && ch <= '9') v = ch - '0';
+                else if (ch >= 'a' && ch <= 'f') v = ch - 'a' + 10;
+                else if (ch >= 'A' && ch <= 'F') v = ch - 'A' + 10;
+                if (v < 0) {
+                    if (err) *err = "line " + std::to_string(ln) + ": not a hex digit '" + std::string(1, ch) + "'";
+                    return false;
+                }
+                u = (u << 4) | static_cast<uint64_t>(v);
+            }
+            pos += static_cast<size_t>(d);
+            if (c.bits < 64 && (u >> c.bits) != 0) {
+                if (err) *err = "line " + std::to_string(ln) + ": field " + c.name + " wider than " + std::to_string(c.bits) + " bits";
+                return false;
+            }
+            int64_t v = static_cast<int64_t>(u);
+            if (c.is_signed && c.bits < 64 && ((u >> (c.bits - 1)) & 1u)) v = static_cast<int64_t>(u - (uint64_t(1) << c.bits));
+            row.push_back(v);
+        }
+        t.rows.push_back(row);
+    }
+    return true;
+}
+
+bool read_file(const std::string& path, std::string& text, std::string* err) {
+    std::ifstream f(path, std::ios::binary);
+    if (!f) {
+        if (err) *err = "cannot open " + path;
+        return false;
+    }
+    std::ostringstream os;
+    os << f.rdbuf();
+    text = os.str();
+    return true;
+}
+
+namespace {
+
+vec_column in(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, true}; }
+vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, false}; }
+
+}  // namespace
+
+bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
+    using W = lx::axis_widths;
+    std::mt19937_64 rng(seed);
+    axis_settings s;
+    s.glitch_n = 2;
+    s.sw_debounce = 8;
+    s.pace_m = 3;
+    s.backlog_thr = 40;
+    s.min_spacing = 3;
+    dual_axis ax(s);
+
+    vec_table top{"laserax_top", {}, {}};
+    top.cols = {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
+                in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
+                in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
+                in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
+                out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
+                out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
+                out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
+                out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
+                out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH)};
+    vec_table flt{"input_filter", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1)}, {}};
+    vec_table dec{"quad_decoder",
+                  {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
+                   out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
+                   out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1)},
+                  {}};
+    vec_table mul{"pulse_multiplier",
+                  {in("step", 2, true), in("ratio", W::W_RATIO), out("comp", W::W_POS, true),
+                   out("delta", W::W_DELTA, true)},
+                  {}};
+    vec_table pac{"output_pacer",
+                  {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1),
+                   out("pstep", 2, true), out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true),
+                   out("ovs", 1), out("ovs_st", 1)},
+                  {}};
+    vec_table rep{"rephase",
+                  {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
+                   in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
+                   out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
+                   out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
+                   out("adj", W::W_POS, true), out("homed", 1)},
+                  {}};
+    vec_table dds{"dds_sincos",
+                  {in("ostep", 2, true), in("period", W::W_P), in("amplitude", W::W_DAC_MAX),
+                   out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true)},
+                  {}};
+
+    // standalone blocks, golden and hls, fed with the chain's inter-block signals
+    golden::input_filter g_flt, g_swf;
+    lx::input_filter<8> h_flt;
+    golden::quad_decoder g_dec;
+    lx::quad_decoder h_dec;
+    golden::pulse_multiplier g_mul;
+    lx::pulse_multiplier h_mul;
+    golden::output_pacer g_pac;
+    lx::output_pacer h_pac;
+    golden::rephase g_rep;
+    lx::rephase h_rep;
+    golden::dds_sincos g_dds;
+    lx::dds_sincos h_dds;
+    g_flt.reset();
+    g_swf.reset();
+    g_dec.reset();
+    g_mul.reset();
+    g_pac.reset();
+    g_rep.reset();
+    g_dds.reset();
+    {
+        const std::vector<uint32_t> tbl = dds_table(256, 32767);
+        for (size_t k = 0; k < tbl.size(); ++k) h_dds.write(static_cast<unsigned>(k), tbl[k]);
+    }
+    int prev_step = 0, prev_pstep = 0, prev_ostep = 0;
+    int64_t prev_delta = 0;
+    bool prev_lerr = false;
+    golden::input_filter::out prev_sw{false, false};
+
+    int64_t n = 0;
+    int dir = 1;
+    long long wait = 0, spacing = 5;
+    int glitch_left = 0, lerr_left = 0;
+    for (long long t = 0; t < calls; ++t) {
+        axis_settings ns = ax.settings();
+        ns.rehome = false;
+        ns.clear = false;
+        const long long phase = t * 8 / calls;  // eight acts: homing, reversals, faults, re-homing
+        if (t == calls / 2) ns.ratio = s.ratio + 4000000;          // ratio update while moving
+        if (t == calls * 5 / 8) ns.rehome = true;
+        if (t % 5000 == 4999) ns.clear = true;
+        if (t == calls * 3 / 4) ns.tbl_period = 264;               // invalid configuration ...
+        if (t == calls * 3 / 4 + 50) ns.tbl_period = ns.period;    // ... and back
+        ax.set(ns);
+        if (wait-- <= 0) {
+            n += dir;
+            wait = spacing;
+        }
+        if (phase == 0 || phase == 1) dir = 1;
+        if (phase == 2) dir = -1;
+        if (phase >= 3) dir = (t / 3000) % 2 ? 1 : -1;
+        if (rng() % 4000 == 0) n += 2;  // illegal transition
+        if (glitch_left == 0 && rng() % 500 == 0) glitch_left = 1 + static_cast<int>(rng() % 3);
+        if (lerr_left == 0 && phase == 4 && rng() % 3000 == 0) lerr_left = 20;
+        spacing = (phase == 5) ? 1 : 5;  // overspeed burst
+        lx::axis_pins p;
+        quad_pins(n, p.a, p.b);
+        if (glitch_left > 0) {
+            p.a = !p.a;
+            --glitch_left;
+        }
+        p.lerr = lerr_left > 0;
+        if (lerr_left > 0) --lerr_left;
+        p.sw = n >= 300;
+        const std::string m = ax.step(p);
+        if (!m.empty()) {
+            if (err) *err = "laserax_top call " + std::to_string(t) + ": " + m;
+            return false;
+        }
+        const lx::axis_out& h = ax.hls();
+        const golden::axis_out& g = ax.gold();
+        const golden::axis_regs gr = to_golden(ns);
+        top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.glitch_n,
+                            gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
+                            gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, g.sin, g.cos, g.ref_mark,
+                            g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
+                            g.ovs_edge_st, g.ovs_backlog_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
+                            g.d});
+        (void)h;
+
+        // block level
+        const golden::input_filter::out fo = g_flt.step(p.a, gr.glitch_n);
+        const lx::input_filter<8>::out_t hfo = h_flt.step(p.a, gr.glitch_n);
+        const golden::quad_decoder::out dq = g_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
+        const lx::quad_decoder::out_t hdq = h_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
+        const golden::pulse_multiplier::out mo = g_mul.step(prev_step, gr.ratio);
+        const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, gr.ratio);
+        const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
+        const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
+        const golden::rephase::out ro =
+            g_rep.step(prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
+        const lx::rephase::out_t hro =
+            h_rep.step(prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
+        const golden::dds_sincos::out so = g_dds.step(prev_ostep, gr.period, gr.amplitude);
+        const lx::dds_sincos::out_t hso = h_dds.step(prev_ostep, gr.period, gr.amplitude);
+        const golden::input_filter::out swo = g_swf.step(p.sw, gr.sw_debounce);
+
+        const bool same = fo.f == hfo.f && fo.valid == hfo.valid && dq.step == hdq.step.to_int() &&
+                          dq.raw_count == hdq.raw_count.to_int64() && dq.illegal == hdq.illegal && dq.ovs == hdq.ovs &&
+                          dq.err_cnt == hdq.err_cnt.to_int() && dq.illegal_st == hdq.illegal_st &&
+                          dq.ovs_st == hdq.ovs_st && dq.lerr == hdq.lerr && dq.lerr_alarm == hdq.lerr_alarm &&
+                          mo.comp == hmo.comp.to_int64() && mo.delta == hmo.delta.to_int64() &&
+                          po.pstep == hpo.pstep.to_int() && po.paced == hpo.paced.to_int64() &&
+                          po.backlog == hpo.backlog.to_int64() && po.ovs == hpo.ovs && po.ovs_st == hpo.ovs_st &&
+                          ro.ostep == hro.ostep.to_int() && ro.out_pos == hro.out_pos.to_int64() && ro.mark == hro.mark &&
+                          ro.stage == hro.stage.to_int() && ro.a == hro.a.to_int64() && ro.d == hro.d.to_int64() &&
+                          ro.b == hro.b.to_int64() && ro.c == hro.c.to_int64() && ro.z == hro.z.to_int64() &&
+                          ro.adj == hro.adj.to_int64() && ro.homed == hro.homed && so.sin == hso.sin.to_int64() &&
+                          so.cos == hso.cos.to_int64();
+        if (!same) {
+            if (err) *err = "block-level hls/golden mismatch at call " + std::to_string(t);
+            return false;
+        }
+        flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid});
+        dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
+                            dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm});
+        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), mo.comp, mo.delta});
+        pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
+                            po.backlog, po.ovs, po.ovs_st});
+        rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
+                            ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
+        dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, so.sin, so.cos});
+        prev_step = dq.step;
+        prev_delta = mo.delta;
+        prev_pstep = po.pstep;
+        prev_ostep = ro.ostep;
+        prev_lerr = dq.lerr;
+        prev_sw = swo;
+    }
+    tables = {flt, dec, mul, pac, rep, dds, top};
+    return true;
+}
+
+int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::string& command) {
+    std::string dir = "out/vectors";
+    uint64_t seed = 1;
+    long long calls = 40000;
+    for (size_t i = first; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (i + 1 >= args.size()) {
+            std::fprintf(stderr, "laserax vectors: %s needs a value\n", a.c_str());
+            return 2;
+        }
+        const std::string& v = args[++i];
+        if (a == "--out") dir = v;
+        else if (a == "--seed") seed = std::strtoull(v.c_str(), nullptr, 0);
+        else if (a == "--calls") calls = std::strtoll(v.c_str(), nullptr, 0);
+        else {
+            std::fprintf(stderr, "laserax vectors: unknown option %s\n", a.c_str());
+            return 2;
+        }
+    }
+    if (calls < 100 || calls > 100000000) {
+        std::fprintf(stderr, "laserax vectors: --calls must be 100..1e8\n");
+        return 2;
+    }
+    // mkdir -p
+    std::string acc;
+    for (size_t i = 0; i <= dir.size(); ++i) {
+        if (i == dir.size() || dir[i] == '/') {
+            if (!acc.empty() && mkdir(acc.c_str(), 0755) != 0 && errno != EEXIST) {
+                std::fprintf(stderr, "laserax vectors: cannot create %s: %s\n", acc.c_str(), std::strerror(errno));
+                return 1;
+            }
+        }
+        if (i < dir.size()) acc += dir[i];
+    }
+    std::vector<vec_table> tables;
+    std::string err;
+    if (!build_vectors(seed, calls, tables, &err)) {
+        std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
+        return 1;
+    }
+    for (const vec_table& t : tables) {
+        for (int kind = 0; kind < 2; ++kind) {
+            const std::string path = dir + "/" + t.block + (kind ? ".hex" : ".csv");
+            std::ofstream f(path);
+            f << (kind ? vec_to_hex(t, command) : vec_to_csv(t, command));
+            if (!f) {
+                std::fprintf(stderr, "laserax vectors: cannot write %s\n", path.c_str());
+                return 1;
+            }
+        }
+        std::printf("  %-18s %8zu calls, %2zu fields -> %s/%s.{csv,hex}\n", t.block.c_str(), t.rows.size(), t.cols.size(),
+                    dir.c_str(), t.block.c_str());
+    }
+    {
+        const std::string path = dir + "/dds_table_p256.hex";
+        std::ofstream f(path);
+        f << dds_table_hex(256, 32767, lx::axis_widths::TBL_DEPTH, command);
+    }
+    return 0;
+}
+
+}  // namespace lxt
