@@ -16,11 +16,19 @@ bool config_ok(const axis_regs& r) {
            r.mark_len >= P / 4 && r.mark_len <= P;
 }
 
-void axis_chain::reset() { *this = axis_chain{}; }
+void axis_chain::reset() {
+    const int64_t keep = last_period_;  // the period memory is not part of the chain's reset
+    *this = axis_chain{};
+    last_period_ = keep;
+}
 
 axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     axis_out o{};
-    if (!config_ok(regs)) {
+    // DESIGN 4.7: a change of the period register is a reconfiguration; the call in which the
+    // new value appears is a safe-state call. The remembered period powers up at 256.
+    const bool period_changed = regs.period != last_period_;
+    last_period_ = regs.period;
+    if (!config_ok(regs) || period_changed) {
         // safe state: every block and every inter-block register (including the t-2 delay of
         // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
         reset();
@@ -58,6 +66,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     o.err_cnt = dec_o.err_cnt;
     o.ovs_edge_st = dec_o.ovs_st;
     o.ovs_backlog_st = pac_o.ovs_st;
+    o.glitch_st = dec_o.glitch_st;
     o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err;
 
     o.raw_count = dec_o.raw_count;

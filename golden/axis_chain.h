@@ -58,7 +58,7 @@ struct axis_out {
     int stage;
     bool homed, lerr_alarm, illegal_st;
     int err_cnt;
-    bool ovs_edge_st, ovs_backlog_st, alarm;
+    bool ovs_edge_st, ovs_backlog_st, glitch_st, alarm;
     /* taps = the registered outputs of each block at this call */
     int64_t raw_count;
     int step;
@@ -93,6 +93,7 @@ private:
     output_pacer::out pac_q_{};
     rephase::out rep_q_{};   // rephase output of call t-1
     rephase::out rep_q2_{};  // rephase output of call t-2 (qa, qb, qz, ref_mark)
+    int64_t last_period_ = 256;  // period register of the previous call (reset value of period)
 };
 
 }  // namespace golden

@@ -9,6 +9,7 @@ void input_filter::reset() { *this = input_filter{}; }
 
 input_filter::out input_filter::step(bool pin, int64_t n) {
     const int64_t need = std::max<int64_t>(n, 1);  // N = 0 and N = 1 are the same
+    bool glitch = false;
     if (calls_ >= 2) {
         const bool x = pin_m2_;  // x(t) = pin(t-2)
         if (!valid_) {
@@ -23,14 +24,15 @@ input_filter::out input_filter::step(bool pin, int64_t n) {
                 run_ = 0;
             }
         } else {
-            run_ = 0;  // a pulse shorter than max(N,1) calls never passes
+            glitch = run_ > 0;  // x came back after differing for 1..N-1 calls: suppressed pulse
+            run_ = 0;           // a pulse shorter than max(N,1) calls never passes
         }
     } else {
         ++calls_;
     }
     pin_m2_ = pin_m1_;
     pin_m1_ = pin;
-    return out{f_, valid_};
+    return out{f_, valid_, glitch};
 }
 
 }  // namespace golden

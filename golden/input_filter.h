@@ -18,6 +18,7 @@ public:
     struct out {
         bool f;      // filtered level (0 until valid)
         bool valid;  // 1 from call index 2 after reset
+        bool glitch; // pulse: x returned to the output level after differing for 1..N-1 calls
     };
     void reset();
     // One call = one clock edge. n: filter length (n <= 1 means: a change passes after one call).

@@ -7,14 +7,6 @@ namespace golden {
 
 namespace {
 
-// Reading of DESIGN 4.2 "clear (register pulse) clears illegal_st, ovs_st, err_cnt, and clears
-// lerr_alarm only if fe is 0 in that call": the text gives a condition only for lerr_alarm, so
-// for illegal_st / ovs_st / err_cnt the clear is unconditional (literal reading): an illegal or
-// ovs pulse in the same call as clear leaves illegal_st = 0, ovs_st = 0, err_cnt = 0 (the
-// pulse outputs `illegal`, `ovs` still show it). The other reading (set wins, as written for
-// the pacer's ovs_st and for lerr_alarm) is selected by setting this to false.
-constexpr bool kClearWinsOverPulse = true;
-
 int quad_index(bool a, bool b) {
     // (A,B) = (0,0)->0, (1,0)->1, (1,1)->2, (0,1)->3   (A leads B = forward = +1)
     if (!a && !b) return 0;
@@ -42,6 +34,7 @@ quad_decoder::out quad_decoder::step(bool a, bool b, bool lerr, int64_t glitch_n
     // so their valid flags are identical; the AND is used.
     const bool valid = oa.valid && ob.valid && oe.valid;
     const bool fa = oa.f, fb = ob.f, fe = oe.f;
+    const bool glitch = oa.glitch || ob.glitch;  // a suppressed pulse on A or B
 
     // Reading: lerr = fe && primed uses `primed` before the call (the register that selects
     // the branch below), so in the call that primes the decoder lerr is 0.
@@ -78,32 +71,23 @@ quad_decoder::out quad_decoder::step(bool a, bool b, bool lerr, int64_t glitch_n
 
     raw_count_ = wrap32(raw_count_ + stp);
 
-    if (kClearWinsOverPulse) {
-        if (clear) {
-            illegal_st_ = false;
-            ovs_st_ = false;
-            err_cnt_ = 0;
-        } else {
-            illegal_st_ = illegal_st_ || illegal;
-            ovs_st_ = ovs_st_ || ovs;
-            if (illegal) err_cnt_ = std::min(err_cnt_ + 1, 255);
-        }
-    } else {
-        if (clear) {
-            illegal_st_ = false;
-            ovs_st_ = false;
-            err_cnt_ = 0;
-        }
-        illegal_st_ = illegal_st_ || illegal;
-        ovs_st_ = ovs_st_ || ovs;
-        if (illegal) err_cnt_ = std::min(err_cnt_ + 1, 255);
+    // clear acts first; this call's events set their flags again
+    if (clear) {
+        illegal_st_ = false;
+        ovs_st_ = false;
+        glitch_st_ = false;
+        err_cnt_ = 0;
     }
+    illegal_st_ = illegal_st_ || illegal;
+    ovs_st_ = ovs_st_ || ovs;
+    glitch_st_ = glitch_st_ || glitch;
+    if (illegal) err_cnt_ = std::min(err_cnt_ + 1, 255);
     // lerr_alarm: set while fe && primed; clear clears it only if fe is 0 in that call
     // (fe itself, not fe && primed: with fe = 1 before priming the clear is also ignored).
     if (clear && !fe) lerr_alarm_ = false;
     if (lerr_out) lerr_alarm_ = true;
 
-    return out{stp, raw_count_, illegal, ovs, err_cnt_, illegal_st_, ovs_st_, lerr_out, lerr_alarm_};
+    return out{stp, raw_count_, illegal, ovs, err_cnt_, illegal_st_, ovs_st_, lerr_out, lerr_alarm_, glitch_st_};
 }
 
 }  // namespace golden

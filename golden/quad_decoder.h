@@ -24,6 +24,7 @@ public:
         bool ovs_st;
         bool lerr;          // fe && primed
         bool lerr_alarm;
+        bool glitch_st;     // sticky: the A or B filter suppressed a pulse
     };
     void reset();
     out step(bool a, bool b, bool lerr, int64_t glitch_n, int64_t min_spacing, bool clear);
@@ -37,7 +38,7 @@ private:
     int64_t last_step_call_ = 0;     // call index of the last counted step
     int64_t raw_count_ = 0;          // always kept in [-2^31, 2^31)
     int err_cnt_ = 0;
-    bool illegal_st_ = false, ovs_st_ = false, lerr_alarm_ = false;
+    bool illegal_st_ = false, ovs_st_ = false, lerr_alarm_ = false, glitch_st_ = false;
 };
 
 }  // namespace golden

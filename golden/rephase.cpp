@@ -8,14 +8,9 @@ namespace golden {
 
 namespace {
 
-// Reading of DESIGN 4.5 step 2: the pseudocode only takes the unhome/rehome branch when
-// stage != 1, so in stage 1 the Stage-1 rule runs even while `unhome` (or `rehome`) is high:
-// a rising switch edge coinciding with unhome starts Stage 2 (and the next call, if unhome is
-// still high, returns to stage 1 freezing adj_tgt = adj0). The sentence "unhome while in
-// stage 1 keeps stage 1" is read as a remark (the unhome branch does nothing in stage 1), not
-// as a block of the Stage-1 rising edge. Set this to true for the other reading (unhome in
-// stage 1 suppresses the transition to Stage 2; the edge is consumed since sw_prev' = sw).
-constexpr bool kUnhomeBlocksHomingInStage1 = false;
+// DESIGN 4.5 step 2: while `unhome` is active in stage 1 a rising switch edge is ignored (no homing
+// on an invalid position); the edge is consumed since sw_prev' = sw.
+constexpr bool kUnhomeBlocksHomingInStage1 = true;
 
 // true modulo, result in [0, m) (m > 0; m <= 0 is an invalid configuration, returns 0)
 int64_t mod(int64_t x, int64_t m) { return m > 0 ? ((x % m) + m) % m : 0; }

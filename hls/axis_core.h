@@ -66,7 +66,7 @@ struct axis_out {
     rephase_cfg::stage_t stage;
     bool homed, lerr_alarm, illegal_st;
     quad_decoder_cfg::errcnt_t err_cnt;
-    bool ovs_edge_st, ovs_backlog_st, alarm;
+    bool ovs_edge_st, ovs_backlog_st, glitch_st, alarm;
     // taps: registered outputs of each block at this call
     raw_t raw_count;
     step_t step;
@@ -114,7 +114,7 @@ public:
         pac_.reset();
         rep_.reset();
         dds_.reset();
-        swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false};
+        swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
         dec_q_ = quad_decoder::out_t{};
         mul_q_ = pulse_multiplier::out_t{};
         pac_q_ = output_pacer::out_t{};
@@ -160,6 +160,7 @@ public:
         o.err_cnt = dec.err_cnt;
         o.ovs_edge_st = dec.ovs_st;
         o.ovs_backlog_st = pac.ovs_st;
+        o.glitch_st = dec.glitch_st;
         o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st;
         o.raw_count = dec.raw_count;
         o.step = dec.step;

@@ -3,7 +3,9 @@
 // DESIGN §4.1. A change on the pin reaches the output once it has been seen on max(N,1)
 // consecutive clocks after synchronisation; shorter pulses never pass. Latency pin -> output:
 // max(N,1) + 1 calls. `valid` rises at the third call after reset, when the synchroniser first
-// holds a real sample; that sample is loaded into the output unfiltered.
+// holds a real sample; that sample is loaded into the output unfiltered. `glitch` pulses in the
+// call where the input returns to the output level after differing for 1..N-1 calls, so every
+// suppressed pulse is reported.
 //
 // Resources: 3 flip-flops, a W_CNT-bit counter, a 2-bit fill counter, one comparator.
 #ifndef LASERAX_HLS_INPUT_FILTER_H
@@ -29,6 +31,7 @@ public:
     struct out_t {
         bool f;
         bool valid;
+        bool glitch;  // pulse: a change shorter than max(N,1) calls was suppressed
     };
 
     input_filter() { reset(); }
@@ -43,6 +46,7 @@ public:
     }
 
     out_t step(bool pin, cnt_t n) {
+        const bool glitch = valid_ && s2_ == f_ && cnt_ != 0;
         if (!valid_) {
             if (fill_ == 2) {
                 f_ = s2_;
@@ -68,6 +72,7 @@ public:
         out_t o;
         o.f = f_;
         o.valid = valid_;
+        o.glitch = glitch;
         return o;
     }
 

@@ -45,7 +45,7 @@ public:
     constexpr fixed_int() : v_(0) {}
     // Any integer or lx value: keep the low W bits (two's complement wrap), like ap_int.
     template <typename T, typename = typename std::enable_if<!std::is_floating_point<T>::value>::type>
-    constexpr fixed_int(const T& x) : v_(wrap(to_u128(x))) {}
+    constexpr fixed_int(T x) : v_(wrap(to_u128(x))) {}  // by value: no ODR-use of constants
 
     constexpr operator store_t() const { return v_; }
 
@@ -58,7 +58,7 @@ public:
 
 private:
     template <typename T>
-    static constexpr u128 to_u128(const T& x) {
+    static constexpr u128 to_u128(T x) {
         // lx types convert through their store type; native integers directly. Conversion of a
         // negative value to an unsigned type is modular (well defined).
         return static_cast<u128>(static_cast<typename conv<T>::type>(x));

@@ -42,6 +42,7 @@ public:
         bool ovs_st;
         bool lerr;
         bool lerr_alarm;
+        bool glitch_st;  // sticky: the A or B glitch filter suppressed a pulse
     };
 
     quad_decoder() { reset(); }
@@ -59,6 +60,7 @@ public:
         illegal_st_ = false;
         ovs_st_ = false;
         lerr_alarm_ = false;
+        glitch_st_ = false;
     }
 
     out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
@@ -71,6 +73,7 @@ public:
         if (clear) {
             illegal_st_ = false;
             ovs_st_ = false;
+            glitch_st_ = false;
             err_cnt_ = 0;
             if (!re.f) lerr_alarm_ = false;
         }
@@ -106,6 +109,7 @@ public:
             if (err_cnt_ != cfg::ERRCNT_MAX) err_cnt_ = err_cnt_ + 1;
         }
         if (ovs) ovs_st_ = true;
+        if (ra.glitch || rb.glitch) glitch_st_ = true;
         if (lerr_now) lerr_alarm_ = true;
         raw_ = raw_ + step;
 
@@ -119,6 +123,7 @@ public:
         o.ovs_st = ovs_st_;
         o.lerr = lerr_now;
         o.lerr_alarm = lerr_alarm_;
+        o.glitch_st = glitch_st_;
         return o;
     }
 
@@ -128,7 +133,7 @@ private:
     raw_t raw_;
     cfg::errcnt_t err_cnt_;
     cfg::spacing_t since_;
-    bool illegal_st_, ovs_st_, lerr_alarm_;
+    bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
 };
 
 }  // namespace lx

@@ -57,8 +57,8 @@ if {$reset} {
 set_top laserax_top
 add_files hls/laserax_top.cpp -cflags $cflags
 add_files -tb tb/tb_hls_csim.cpp -cflags $cflags
-# If tb_hls_csim.cpp comes to need the golden models or the shared tool code, add them here:
-#   foreach f [glob -nocomplain golden/*.cpp tools/common/*.cpp] { add_files -tb $f -cflags $cflags }
+# the C-simulation testbench compares the top with the golden chain
+foreach f [glob -nocomplain golden/*.cpp] { add_files -tb $f -cflags $cflags }
 
 open_solution solution1 -flow_target vivado
 set_part $part

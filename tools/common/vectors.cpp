@@ -268,14 +268,14 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                 in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
                 out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
                 out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
-                out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
+                out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1), out("glitch_st", 1),
                 out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
                 out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH)};
-    vec_table flt{"input_filter", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1)}, {}};
+    vec_table flt{"input_filter", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)}, {}};
     vec_table dec{"quad_decoder",
                   {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
                    out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
-                   out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1)},
+                   out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1), out("glitch_st", 1)},
                   {}};
     vec_table mul{"pulse_multiplier",
                   {in("step", 2, true), in("ratio", W::W_RATIO), out("comp", W::W_POS, true),
@@ -325,7 +325,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     int prev_step = 0, prev_pstep = 0, prev_ostep = 0;
     int64_t prev_delta = 0;
     bool prev_lerr = false;
-    golden::input_filter::out prev_sw{false, false};
+    golden::input_filter::out prev_sw{false, false, false};
 
     int64_t n = 0;
     int dir = 1;
@@ -374,7 +374,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                             gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
                             gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, g.sin, g.cos, g.ref_mark,
                             g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
-                            g.ovs_edge_st, g.ovs_backlog_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
+                            g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
                             g.d});
         (void)h;
 
@@ -395,7 +395,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const lx::dds_sincos::out_t hso = h_dds.step(prev_ostep, gr.period, gr.amplitude);
         const golden::input_filter::out swo = g_swf.step(p.sw, gr.sw_debounce);
 
-        const bool same = fo.f == hfo.f && fo.valid == hfo.valid && dq.step == hdq.step.to_int() &&
+        const bool same = fo.f == hfo.f && fo.valid == hfo.valid && fo.glitch == hfo.glitch &&
+                          dq.glitch_st == hdq.glitch_st && dq.step == hdq.step.to_int() &&
                           dq.raw_count == hdq.raw_count.to_int64() && dq.illegal == hdq.illegal && dq.ovs == hdq.ovs &&
                           dq.err_cnt == hdq.err_cnt.to_int() && dq.illegal_st == hdq.illegal_st &&
                           dq.ovs_st == hdq.ovs_st && dq.lerr == hdq.lerr && dq.lerr_alarm == hdq.lerr_alarm &&
@@ -411,9 +412,9 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
             if (err) *err = "block-level hls/golden mismatch at call " + std::to_string(t);
             return false;
         }
-        flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid});
+        flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid, fo.glitch});
         dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
-                            dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm});
+                            dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm, dq.glitch_st});
         mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), mo.comp, mo.delta});
         pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
                             po.backlog, po.ovs, po.ovs_st});

@@ -1,0 +1,132 @@
+// bench — simulation speed of the models and of the vector writer (numbers, not a pass/fail test).
+//
+// Prints simulated calls (clocks) per second for: the hls single-axis chain, each hls block alone,
+// the golden chain, the two chains side by side as the testbenches run them, and golden-vector
+// rows written per second (build + CSV + hex). Stimulus: a moving axis with a ratio of ~8.1.
+#include <chrono>
+#include <cstdio>
+#include <string>
+
+#include "golden/axis_chain.h"
+#include "hls/axis_core.h"
+#include "tools/common/sim.h"
+#include "tools/common/vectors.h"
+
+namespace {
+
+using clk = std::chrono::steady_clock;
+
+double secs(clk::time_point a) { return std::chrono::duration<double>(clk::now() - a).count(); }
+
+volatile long long sink;
+
+template <typename F>
+void report(const char* name, long long n, F&& body) {
+    const clk::time_point t0 = clk::now();
+    body(n);
+    const double s = secs(t0);
+    std::printf("  %-34s %12.3f M calls/s   (%lld calls in %.3f s)\n", name, static_cast<double>(n) / s / 1e6, n, s);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    long long n = 20000000;
+    if (argc > 1) n = std::atoll(argv[1]);
+    std::printf("laserax bench (%lld calls per item; 1 call = 1 clock)\n", n);
+    const lx::axis_regs regs;
+    auto pins_at = [](long long t, lx::axis_pins& p) {
+        lxt::quad_pins(t / 37, p.a, p.b);
+        p.sw = (t / 37) > 5000;
+    };
+    report("hls axis_core (full chain)", n, [&](long long k) {
+        lx::axis_core core;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) {
+            lx::axis_pins p;
+            pins_at(t, p);
+            acc += core.step(p, regs).sin.to_int64();
+        }
+        sink = acc;
+    });
+    report("hls quad_decoder", n, [&](long long k) {
+        lx::quad_decoder d;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) {
+            lx::axis_pins p;
+            pins_at(t, p);
+            acc += d.step(p.a, p.b, false, 2, 0, false).raw_count.to_int64();
+        }
+        sink = acc;
+    });
+    report("hls pulse_multiplier", n, [&](long long k) {
+        lx::pulse_multiplier m;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) acc += m.step((t % 37) == 0 ? 1 : 0, 34789620252ULL).delta.to_int64();
+        sink = acc;
+    });
+    report("hls output_pacer", n, [&](long long k) {
+        lx::output_pacer pc;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) acc += pc.step((t % 37) == 0 ? 8 : 0, 4, 4096, false).pstep.to_int64();
+        sink = acc;
+    });
+    report("hls rephase", n, [&](long long k) {
+        lx::rephase r;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t)
+            acc += r.step((t % 5) == 0 ? 1 : 0, (t / 5) % 100000 > 3000, true, false, false, 256, 64).out_pos.to_int64();
+        sink = acc;
+    });
+    report("hls dds_sincos", n, [&](long long k) {
+        lx::dds_sincos d;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) acc += d.step((t % 3) == 0 ? 1 : 0, 256, 32767).sin.to_int64();
+        sink = acc;
+    });
+    report("golden axis_chain", n / 4, [&](long long k) {
+        golden::axis_chain g;
+        g.reset();
+        const golden::axis_regs gr;
+        long long acc = 0;
+        for (long long t = 0; t < k; ++t) {
+            lx::axis_pins p;
+            pins_at(t, p);
+            golden::axis_pins gp;
+            gp.a = p.a;
+            gp.b = p.b;
+            gp.sw = p.sw;
+            acc += g.step(gp, gr).sin;
+        }
+        sink = acc;
+    });
+    report("hls + golden + compare (tb style)", n / 4, [&](long long k) {
+        lxt::dual_axis ax{lxt::axis_settings{}};
+        long long bad = 0;
+        for (long long t = 0; t < k; ++t) {
+            lx::axis_pins p;
+            pins_at(t, p);
+            bad += ax.step(p).empty() ? 0 : 1;
+        }
+        sink = bad;
+    });
+    {
+        const long long rows = 200000;
+        const clk::time_point t0 = clk::now();
+        std::vector<lxt::vec_table> tables;
+        std::string err;
+        lxt::build_vectors(1, rows, tables, &err);
+        size_t bytes = 0, total_rows = 0;
+        for (const lxt::vec_table& t : tables) {
+            bytes += lxt::vec_to_csv(t, "bench").size() + lxt::vec_to_hex(t, "bench").size();
+            total_rows += t.rows.size();
+        }
+        const double s = secs(t0);
+        std::printf("  %-34s %12.3f M rows/s    (%zu rows over 7 files x 2 formats, %.1f MB, %.3f s)%s\n",
+                    "golden vectors (build+CSV+hex)", static_cast<double>(total_rows) / s / 1e6, total_rows,
+                    static_cast<double>(bytes) / 1e6, s, err.empty() ? "" : (" ERROR: " + err).c_str());
+    }
+    std::printf("  model state: sizeof(axis_core) = %zu bytes (of which the table RAM image %zu)\n", sizeof(lx::axis_core),
+                sizeof(lx::tbl_word_t) * lx::axis_widths::TBL_DEPTH);
+    return 0;
+}
