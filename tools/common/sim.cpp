@@ -200,7 +200,42 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     h_ = core_.step(p, hr_);
     g_ = gold_.step(gp, gr_);
     ++calls_;
-    return compare(h_, g_);
+    std::string m = compare(h_, g_);
+    if (m.empty()) m = integrity();
+    return m;
+}
+
+std::string dual_axis::integrity() {
+    std::string m;
+    if (g_.cfg_err || prev_cfg_err_) {
+        // (re)start: the chain is in reset; the controller re-synchronises at position 0
+        dec_.reset(static_cast<int>(s_.period), 0);
+        hist_n_ = 0;
+    } else {
+        __extension__ typedef __int128 i128;
+        const int64_t want_comp = static_cast<int64_t>((static_cast<i128>(prev_raw_) * static_cast<i128>(s_.ratio)) >> 32);
+        if (g_.comp_pos != want_comp)
+            m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor(N*R) " + std::to_string(want_comp);
+        else if (g_.paced_pos + g_.backlog != prev_comp_)
+            m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) + " != previous comp " +
+                std::to_string(prev_comp_);
+        const bool use_sc = static_cast<double>(s_.amplitude) * 6.283185307179586 / static_cast<double>(s_.period) >= 8.0;
+        const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);
+        if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
+        if (m.empty() && hist_n_ >= 2) {
+            const int64_t want = out_hist_[1];
+            if ((use_sc && dec_.sincos_pos() != want) || dec_.quad_pos() != want)
+                m = "integrity: controller decodes sin/cos " + std::to_string(dec_.sincos_pos()) + ", A/B " +
+                    std::to_string(dec_.quad_pos()) + ", expected out_pos " + std::to_string(want);
+        }
+        out_hist_[1] = out_hist_[0];
+        out_hist_[0] = g_.out_pos;
+        if (hist_n_ < 2) ++hist_n_;
+    }
+    prev_cfg_err_ = g_.cfg_err;
+    prev_comp_ = g_.cfg_err ? 0 : g_.comp_pos;
+    prev_raw_ = g_.cfg_err ? 0 : g_.raw_count;
+    return m;
 }
 
 }  // namespace lxt

@@ -110,7 +110,15 @@ private:
     bool primed_ = false;
 };
 
-// Convenience: both models, the same settings, stepped together and compared.
+// Convenience: both models, the same settings, stepped together and compared. Every call also
+// checks the position-integrity invariant from the outside:
+//   * the controller decoder (atan2 of the hls sin/cos, and the hls A/B) reconstructs exactly the
+//     golden out_pos of the call the outputs belong to (two calls back), never stepping by more
+//     than one count (sin/cos decoding is skipped when amp * 2pi / P < 8 codes per count);
+//   * golden paced + backlog == golden comp_pos of the previous call (the pacer loses nothing);
+//   * golden comp_pos == floor(N * R / 2^32) with N the previous call's raw count (128-bit);
+// so once the pacer has drained, what a controller decodes equals the compensated position plus
+// the rephase adjustment, exactly.
 class dual_axis {
 public:
     explicit dual_axis(const axis_settings& s);
@@ -132,6 +140,13 @@ private:
     lx::axis_out h_{};
     golden::axis_out g_{};
     uint64_t calls_ = 0;
+    // integrity state
+    controller_decoder dec_;
+    int64_t out_hist_[2] = {0, 0};  // golden out_pos of calls t-1 and t-2
+    int hist_n_ = 0;
+    bool prev_cfg_err_ = true;
+    int64_t prev_comp_ = 0, prev_raw_ = 0;
+    std::string integrity();
 };
 
 }  // namespace lxt

@@ -1,0 +1,113 @@
+// input_filter.v — two-flop synchroniser plus stability (glitch) filter for one asynchronous pin.
+//
+// Reference RTL of hls/input_filter.h (DESIGN §4.1). One rising clock edge = one call of
+// input_filter::step(); the output registers after edge t hold the out_t returned by call t for
+// the inputs presented before edge t. Synchronous active-high reset = input_filter::reset().
+//
+//   glitch = valid && s2 == f && cnt != 0                 (registers before the edge)
+//   !valid:      fill == 2 ? (f' = s2, valid' = 1) : fill' = fill + 1
+//   s2 == f:     cnt' = 0
+//   cnt+1 >= max(N,1): f' = s2, cnt' = 0;  else cnt' = cnt + 1
+//   s2' = s1, s1' = pin
+//
+// o_f / o_valid / o_glitch are registers. o_f_d / o_valid_d / o_glitch_d are the values those
+// registers take at the coming edge (their D inputs): a parent block that, like quad_decoder,
+// uses the filter output *of the same call* reads these.
+// Latency pin -> o_f: max(N,1) + 1 calls (DESIGN §4.1); o_valid is first 1 after call 2.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module input_filter #(
+    // W_CNT: width of the filter length register i_n and of the stability counter
+    // (hls: input_filter<W_CNT>; 8 for the A/B/LERR pins, 16 for the switch debounce).
+    // Legal range 1..32.
+    parameter integer W_CNT = 8
+) (
+    input  wire             i_clk,
+    input  wire             i_rst,      // synchronous, active high: input_filter::reset()
+    input  wire             i_pin,      // asynchronous pin level
+    input  wire [W_CNT-1:0] i_n,        // filter length N (0 and 1 both: pass after 1 call)
+    output wire             o_f,        // filtered level
+    output wire             o_valid,    // the synchroniser holds a real sample
+    output wire             o_glitch,   // pulse: a change shorter than max(N,1) was suppressed
+    output wire             o_f_d,      // next value of o_f (D input of its register)
+    output wire             o_valid_d,  // next value of o_valid
+    output wire             o_glitch_d  // next value of o_glitch
+);
+
+    // ---- elaboration-time parameter check (a missing module stops elaboration) -------------
+    generate
+        if (W_CNT < 1 || W_CNT > 32) begin : g_bad_w_cnt
+            input_filter_PARAMETER_W_CNT_must_be_1_to_32 u_param_error ();
+        end
+    endgenerate
+
+    // ---- registers -------------------------------------------------------------------------
+    reg             s1_q, s2_q, f_q, valid_q, glitch_q;
+    reg [W_CNT-1:0] cnt_q;
+    reg [1:0]       fill_q;
+
+    reg             s1_d, s2_d, f_d, valid_d, glitch_d;
+    reg [W_CNT-1:0] cnt_d;
+    reg [1:0]       fill_d;
+
+    // need = max(N, 1) and seen = cnt + 1, both W_CNT + 1 bits (no overflow)
+    wire [W_CNT:0] need = (i_n == {W_CNT{1'b0}}) ? {{W_CNT{1'b0}}, 1'b1} : {1'b0, i_n};
+    wire [W_CNT:0] seen = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
+
+    always @* begin
+        s1_d     = i_pin;
+        s2_d     = s1_q;
+        f_d      = f_q;
+        valid_d  = valid_q;
+        cnt_d    = cnt_q;
+        fill_d   = fill_q;
+        glitch_d = valid_q && (s2_q == f_q) && (cnt_q != {W_CNT{1'b0}});
+        if (!valid_q) begin
+            if (fill_q == 2'd2) begin
+                f_d     = s2_q;          // first sample: loaded, not filtered
+                valid_d = 1'b1;
+            end else begin
+                fill_d = fill_q + 2'd1;
+            end
+        end else if (s2_q == f_q) begin
+            cnt_d = {W_CNT{1'b0}};
+        end else if (seen >= need) begin
+            f_d   = s2_q;
+            cnt_d = {W_CNT{1'b0}};
+        end else begin
+            cnt_d = seen[W_CNT-1:0];     // seen < need <= 2^W_CNT - 1: fits
+        end
+    end
+
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            s1_q     <= 1'b0;
+            s2_q     <= 1'b0;
+            f_q      <= 1'b0;
+            valid_q  <= 1'b0;
+            glitch_q <= 1'b0;
+            cnt_q    <= {W_CNT{1'b0}};
+            fill_q   <= 2'd0;
+        end else begin
+            s1_q     <= s1_d;
+            s2_q     <= s2_d;
+            f_q      <= f_d;
+            valid_q  <= valid_d;
+            glitch_q <= glitch_d;
+            cnt_q    <= cnt_d;
+            fill_q   <= fill_d;
+        end
+    end
+
+    assign o_f        = f_q;
+    assign o_valid    = valid_q;
+    assign o_glitch   = glitch_q;
+    // Next-state values (meaningful while i_rst is low; a parent shares the reset).
+    assign o_f_d      = f_d;
+    assign o_valid_d  = valid_d;
+    assign o_glitch_d = glitch_d;
+
+endmodule
+
+`default_nettype wire
