@@ -31,23 +31,7 @@ lx::axis_regs to_hls(const axis_settings& s) {
     return r;
 }
 
-golden::axis_regs to_golden(const axis_settings& s) {
-    golden::axis_regs r;
-    r.period = s.period;
-    r.ratio = s.ratio;
-    r.glitch_n = s.glitch_n;
-    r.sw_debounce = s.sw_debounce;
-    r.min_spacing = s.min_spacing;
-    r.pace_m = s.pace_m;
-    r.backlog_thr = s.backlog_thr;
-    r.mark_len = s.mark_len;
-    r.dac_width = s.dac_width;
-    r.amplitude = s.amplitude;
-    r.tbl_period = s.tbl_period;
-    r.rehome = s.rehome;
-    r.clear = s.clear;
-    return r;
-}
+golden::axis_regs to_golden(const axis_settings& s) { return s; }
 
 void load_table(lx::axis_core& core, int period, int amplitude) {
     const std::vector<uint32_t> t = dds_table(period, amplitude);

@@ -23,22 +23,9 @@ constexpr double kAirIndexDefault = 1.000271;
 constexpr double kOutputCountNm = 78.125;  // 20 um / 256
 constexpr double kClockHz = 100e6;        // model clock for time axes and speeds
 
-// One register set in plain integers; converted to each model's own register struct.
-struct axis_settings {
-    int64_t period = 256;
-    uint64_t ratio = 34789620252ULL;
-    int64_t glitch_n = 2;
-    int64_t sw_debounce = 16;
-    int64_t min_spacing = 0;
-    int64_t pace_m = 4;
-    uint64_t backlog_thr = 4096;
-    int64_t mark_len = 64;
-    int64_t dac_width = 16;
-    int64_t amplitude = 32767;
-    int64_t tbl_period = 256;
-    bool rehome = false;
-    bool clear = false;
-};
+// One register set in plain integers: the golden model's register struct (same names and reset
+// values as the hls s_axilite block, DESIGN §5); converted to the hls types by to_hls().
+using axis_settings = golden::axis_regs;
 
 // Ratio register for one raw count = vacuum wavelength / air index, output count in nm.
 uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm);

@@ -1,0 +1,188 @@
+// quad_decoder.v — 4x quadrature decoder for the laser's A/B lines plus the laser error line.
+//
+// Reference RTL of hls/quad_decoder.h (DESIGN §4.2). One rising clock edge = one call of
+// quad_decoder::step(); every output is a register holding the out_t of that call. Synchronous
+// active-high reset = quad_decoder::reset() (since = 65535, everything else 0).
+//
+// Each pin passes an input_filter #(W_GLITCH) (synchroniser + glitch filter, length glitch_n).
+// The decoder acts on the filter outputs *of the same call* (the filters' o_*_d next-state
+// ports), against the previous filtered levels pa/pb:
+//   only A changed: +1 if A' != B' else -1      only B changed: +1 if A' == B' else -1
+//   both changed:   illegal (no count, pulse + saturating counter)
+// forward (+1) for (A,B) = 00 -> 10 -> 11 -> 01 (A leads B). No count before the filter is valid
+// (primed) and none while the filtered laser error line is active. `clear` acts first; an event
+// of the same call sets its flag again.
+// Latency pin edge -> o_step: max(glitch_n,1) + 1 calls.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module quad_decoder (
+    input  wire                i_clk,
+    input  wire                i_rst,          // synchronous, active high: quad_decoder::reset()
+    input  wire                i_a,            // laser A pin (asynchronous)
+    input  wire                i_b,            // laser B pin (asynchronous)
+    input  wire                i_lerr,         // laser error pin (asynchronous)
+    input  wire [7:0]          i_glitch_n,     // glitch filter length (W_GLITCH)
+    input  wire [15:0]         i_min_spacing,  // minimum edge spacing, clocks; 0 = off
+    input  wire                i_clear,        // register pulse: clears the sticky flags
+    output wire signed [1:0]   o_step,         // -1, 0, +1
+    output wire signed [31:0]  o_raw_count,    // raw laser count N, wraps
+    output wire                o_illegal,      // pulse: both lines changed
+    output wire                o_ovs,          // pulse: edge closer than min_spacing
+    output wire [7:0]          o_err_cnt,      // illegal transitions, saturating at 255
+    output wire                o_illegal_st,   // sticky
+    output wire                o_ovs_st,       // sticky
+    output wire                o_lerr,         // filtered laser error && primed
+    output wire                o_lerr_alarm,   // sticky while lerr
+    output wire                o_glitch_st     // sticky: the A or B filter suppressed a pulse
+);
+
+    // ---- fixed widths (hls: quad_decoder_cfg, axis_widths) ----------------------------------
+    localparam integer W_GLITCH  = 8;     // glitch filter length register
+    localparam integer W_SPACING = 16;    // minimum edge spacing register, clocks
+    localparam integer W_ERRCNT  = 8;     // illegal transition counter
+    localparam integer W_RAW     = 32;    // raw laser count
+    localparam [W_SPACING-1:0] SINCE_MAX  = {W_SPACING{1'b1}};
+    localparam [W_ERRCNT-1:0]  ERRCNT_MAX = {W_ERRCNT{1'b1}};
+
+    // ---- the three pin filters -----------------------------------------------------------------
+    wire fa_f, fa_valid, fa_glitch, fa_f_d, fa_valid_d, fa_glitch_d;
+    wire fb_f, fb_valid, fb_glitch, fb_f_d, fb_valid_d, fb_glitch_d;
+    wire fe_f, fe_valid, fe_glitch, fe_f_d, fe_valid_d, fe_glitch_d;
+
+    input_filter #(.W_CNT(W_GLITCH)) u_fa (
+        .i_clk(i_clk), .i_rst(i_rst), .i_pin(i_a), .i_n(i_glitch_n),
+        .o_f(fa_f), .o_valid(fa_valid), .o_glitch(fa_glitch),
+        .o_f_d(fa_f_d), .o_valid_d(fa_valid_d), .o_glitch_d(fa_glitch_d));
+    input_filter #(.W_CNT(W_GLITCH)) u_fb (
+        .i_clk(i_clk), .i_rst(i_rst), .i_pin(i_b), .i_n(i_glitch_n),
+        .o_f(fb_f), .o_valid(fb_valid), .o_glitch(fb_glitch),
+        .o_f_d(fb_f_d), .o_valid_d(fb_valid_d), .o_glitch_d(fb_glitch_d));
+    input_filter #(.W_CNT(W_GLITCH)) u_fe (
+        .i_clk(i_clk), .i_rst(i_rst), .i_pin(i_lerr), .i_n(i_glitch_n),
+        .o_f(fe_f), .o_valid(fe_valid), .o_glitch(fe_glitch),
+        .o_f_d(fe_f_d), .o_valid_d(fe_valid_d), .o_glitch_d(fe_glitch_d));
+
+    // ---- registers -------------------------------------------------------------------------------
+    reg                    pa_q, pb_q, primed_q;
+    reg signed [W_RAW-1:0] raw_q;
+    reg [W_ERRCNT-1:0]     err_cnt_q;
+    reg [W_SPACING-1:0]    since_q;
+    reg                    illegal_st_q, ovs_st_q, lerr_alarm_q, glitch_st_q;
+    reg signed [1:0]       step_q;
+    reg                    illegal_q, ovs_q, lerr_q;
+
+    reg                    pa_d, pb_d, primed_d;
+    reg signed [W_RAW-1:0] raw_d;
+    reg [W_ERRCNT-1:0]     err_cnt_d;
+    reg [W_SPACING-1:0]    since_d;
+    reg                    illegal_st_d, ovs_st_d, lerr_alarm_d, glitch_st_d;
+    reg signed [1:0]       step_d;
+    reg                    illegal_d, ovs_d, lerr_d;
+
+    reg                    da, db;
+    reg [W_SPACING:0]      spacing;
+
+    always @* begin
+        // clear acts first
+        illegal_st_d = illegal_st_q;
+        ovs_st_d     = ovs_st_q;
+        glitch_st_d  = glitch_st_q;
+        err_cnt_d    = err_cnt_q;
+        lerr_alarm_d = lerr_alarm_q;
+        if (i_clear) begin
+            illegal_st_d = 1'b0;
+            ovs_st_d     = 1'b0;
+            glitch_st_d  = 1'b0;
+            err_cnt_d    = {W_ERRCNT{1'b0}};
+            if (!fe_f_d) lerr_alarm_d = 1'b0;
+        end
+
+        // decode against the previous filtered levels
+        step_d    = 2'sd0;
+        illegal_d = 1'b0;
+        da        = fa_f_d != pa_q;
+        db        = fb_f_d != pb_q;
+        if (primed_q && !fe_f_d) begin
+            if (da && db)
+                illegal_d = 1'b1;
+            else if (da)
+                step_d = (fa_f_d != fb_f_d) ? 2'sd1 : -2'sd1;
+            else if (db)
+                step_d = (fa_f_d == fb_f_d) ? 2'sd1 : -2'sd1;
+        end
+        lerr_d   = primed_q && fe_f_d;
+        pa_d     = fa_f_d;
+        pb_d     = fb_f_d;
+        primed_d = primed_q ? 1'b1 : fa_valid_d;
+
+        // edge spacing
+        ovs_d   = 1'b0;
+        since_d = since_q;
+        spacing = {1'b0, since_q} + {{W_SPACING{1'b0}}, 1'b1};
+        if (step_d != 2'sd0) begin
+            ovs_d   = spacing < {1'b0, i_min_spacing};
+            since_d = {W_SPACING{1'b0}};
+        end else if (since_q != SINCE_MAX) begin
+            since_d = since_q + {{(W_SPACING-1){1'b0}}, 1'b1};
+        end
+
+        // events set their flags (after the clear)
+        if (illegal_d) begin
+            illegal_st_d = 1'b1;
+            if (err_cnt_d != ERRCNT_MAX) err_cnt_d = err_cnt_d + {{(W_ERRCNT-1){1'b0}}, 1'b1};
+        end
+        if (ovs_d) ovs_st_d = 1'b1;
+        if (fa_glitch_d || fb_glitch_d) glitch_st_d = 1'b1;
+        if (lerr_d) lerr_alarm_d = 1'b1;
+        raw_d = raw_q + {{(W_RAW-2){step_d[1]}}, step_d};
+    end
+
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            pa_q         <= 1'b0;
+            pb_q         <= 1'b0;
+            primed_q     <= 1'b0;
+            raw_q        <= {W_RAW{1'b0}};
+            err_cnt_q    <= {W_ERRCNT{1'b0}};
+            since_q      <= SINCE_MAX;
+            illegal_st_q <= 1'b0;
+            ovs_st_q     <= 1'b0;
+            lerr_alarm_q <= 1'b0;
+            glitch_st_q  <= 1'b0;
+            step_q       <= 2'sd0;
+            illegal_q    <= 1'b0;
+            ovs_q        <= 1'b0;
+            lerr_q       <= 1'b0;
+        end else begin
+            pa_q         <= pa_d;
+            pb_q         <= pb_d;
+            primed_q     <= primed_d;
+            raw_q        <= raw_d;
+            err_cnt_q    <= err_cnt_d;
+            since_q      <= since_d;
+            illegal_st_q <= illegal_st_d;
+            ovs_st_q     <= ovs_st_d;
+            lerr_alarm_q <= lerr_alarm_d;
+            glitch_st_q  <= glitch_st_d;
+            step_q       <= step_d;
+            illegal_q    <= illegal_d;
+            ovs_q        <= ovs_d;
+            lerr_q       <= lerr_d;
+        end
+    end
+
+    assign o_step       = step_q;
+    assign o_raw_count  = raw_q;
+    assign o_illegal    = illegal_q;
+    assign o_ovs        = ovs_q;
+    assign o_err_cnt    = err_cnt_q;
+    assign o_illegal_st = illegal_st_q;
+    assign o_ovs_st     = ovs_st_q;
+    assign o_lerr       = lerr_q;
+    assign o_lerr_alarm = lerr_alarm_q;
+    assign o_glitch_st  = glitch_st_q;
+
+endmodule
+
+`default_nettype wire
