@@ -20,8 +20,11 @@ std::vector<uint32_t> dds_table(int period, int amplitude, std::string* err) {
     const int quarter = period / 4;
     t.reserve(static_cast<size_t>(quarter));
     for (int k = 0; k < quarter; ++k) {
-        const long double v = static_cast<long double>(amplitude) *
-                              std::sin(two_pi * static_cast<long double>(k) / static_cast<long double>(period));
+        // sin(30 deg) = 1/2 is the only rational non-zero value inside the quarter (Niven): take it
+        // exactly, so an odd amplitude meets a true tie and rounds half away from zero.
+        const long double s = (12 * k == period) ? 0.5L
+                              : std::sin(two_pi * static_cast<long double>(k) / static_cast<long double>(period));
+        const long double v = static_cast<long double>(amplitude) * s;
         t.push_back(static_cast<uint32_t>(std::llround(v)));  // v >= 0: llround = half away
     }
     return t;

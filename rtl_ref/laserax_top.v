@@ -1,0 +1,249 @@
+// laserax_top.v — the single-axis chain: quad_decoder -> pulse_multiplier -> output_pacer ->
+// rephase -> dds_sincos, plus the switch debounce, the configuration check and the digital
+// A/B/Z outputs.
+//
+// Reference RTL of hls/axis_core.h / hls/laserax_top.cpp (DESIGN §4.7, register map §5). One
+// rising clock edge = one call of axis_core::step(); the outputs after edge t are the axis_out of
+// call t, for the pins and registers presented before edge t.
+//
+// Register stages: in the C++ model a block consumes the outputs its upstream block returned at
+// the previous call (the *_q members of axis_core). Every block's outputs here are its own output
+// registers, so they *are* that one register stage: each block is wired straight to the output
+// registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-2 (the
+// extra rep_q2 stage of the C++ plus the output register), so they change in the same call as
+// the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
+//
+// Safe state: while the configuration check fails, and in the call in which a new period value
+// first appears (the previous-period register powers up, and resets, at 256), every block is
+// reset at the edge (the C++ axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz =
+// ref_mark = 0, stage 1. The table write port works in every call, before the table read of the
+// same call (hls: dds_.write() precedes dds_.step()).
+//
+// i_rst (synchronous, active high) is the power-up state of the C++ object: every block reset,
+// previous period = 256, cfg_err = 0. The table RAM is not affected by any reset.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module laserax_top #(
+    // INIT_FILE: $readmemh image of the DDS table RAM at configuration time (1024 words of
+    // 17 bits, P = 256 / amp = 32767, written by `lutgen --hex` or `laserax vectors`).
+    // Must not be empty.
+    parameter INIT_FILE = "dds_table_p256.hex"
+) (
+    input  wire               i_clk,
+    input  wire               i_rst,            // synchronous, active high: power-up state
+    // pins (asynchronous)
+    input  wire               i_a,
+    input  wire               i_b,
+    input  wire               i_sw,
+    input  wire               i_lerr,
+    // s_axilite registers (DESIGN §5)
+    input  wire [12:0]        i_period,         // 256 at reset; 8..4096, multiple of 8
+    input  wire [36:0]        i_ratio,          // Q5.32, 1..2^37-1
+    input  wire [7:0]         i_glitch_n,
+    input  wire [15:0]        i_sw_debounce,
+    input  wire [15:0]        i_min_spacing,
+    input  wire [15:0]        i_pace_m,         // 2..65535
+    input  wire [31:0]        i_backlog_thr,
+    input  wire [12:0]        i_mark_len,       // P/4..P
+    input  wire [4:0]         i_dac_width,      // 12..18
+    input  wire [17:0]        i_amplitude,      // 1..2^(dac_width-1)-1
+    input  wire [12:0]        i_tbl_period,     // must equal period
+    input  wire               i_rehome,         // pulse
+    input  wire               i_clear,          // pulse
+    input  wire               i_tbl_we,
+    input  wire [9:0]         i_tbl_addr,
+    input  wire [16:0]        i_tbl_data,
+    // outputs
+    output wire signed [17:0] o_sin,
+    output wire signed [17:0] o_cos,
+    output wire               o_ref_mark,
+    output wire               o_qa,
+    output wire               o_qb,
+    output wire               o_qz,
+    // status
+    output wire               o_cfg_err,
+    output wire [1:0]         o_stage,
+    output wire               o_homed,
+    output wire               o_lerr_alarm,
+    output wire               o_illegal_st,
+    output wire [7:0]         o_err_cnt,
+    output wire               o_ovs_edge_st,
+    output wire               o_ovs_backlog_st,
+    output wire               o_glitch_st,
+    output wire               o_alarm,
+    // taps: registered outputs of each block at this call
+    output wire signed [31:0] o_raw_count,
+    output wire signed [1:0]  o_step,
+    output wire signed [37:0] o_comp_pos,
+    output wire signed [38:0] o_delta,
+    output wire signed [39:0] o_backlog,
+    output wire signed [1:0]  o_pstep,
+    output wire signed [37:0] o_paced_pos,
+    output wire signed [1:0]  o_ostep,
+    output wire signed [37:0] o_out_pos,
+    output wire signed [37:0] o_adj,
+    output wire signed [37:0] o_a_pos,
+    output wire signed [37:0] o_b_pos,
+    output wire signed [37:0] o_c_pos,
+    output wire signed [37:0] o_z_pos,
+    output wire [11:0]        o_d,
+    output wire               o_rep_mark
+);
+
+    // ---- fixed values (hls: axis_widths, axis_core_cfg) --------------------------------------
+    localparam [12:0] PERIOD_DEFAULT = 13'd256;   // reset value of the period register
+    localparam [12:0] P_MIN          = 13'd8;
+    localparam [12:0] P_MAX          = 13'd4096;
+    localparam [4:0]  W_DAC_MIN      = 5'd12;
+    localparam [4:0]  W_DAC_MAX      = 5'd18;
+
+    generate
+        if (INIT_FILE == "") begin : g_bad_init_file
+            laserax_top_PARAMETER_INIT_FILE_must_not_be_empty u_param_error ();
+        end
+    endgenerate
+
+    // ---- configuration check (combinational, every call) -------------------------------------
+    wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
+    wire        width_ok  = i_dac_width >= W_DAC_MIN && i_dac_width <= W_DAC_MAX;
+    wire [17:0] amp_max   = (18'd1 << (i_dac_width - 5'd1)) - 18'd1;   // used only if width_ok
+    wire        amp_ok    = width_ok && i_amplitude >= 18'd1 && i_amplitude <= amp_max;
+    wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
+    wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && i_ratio != 37'd0 &&
+                            i_pace_m >= 16'd2 && i_tbl_period == i_period;
+
+    // a period change is a reconfiguration: one call in the safe state
+    reg  [12:0] period_q;
+    wire        period_changed = i_period != period_q;
+    wire        safe      = !cfg_ok || period_changed;
+    wire        blk_rst   = i_rst || safe;            // every block held in reset
+
+    reg         cfg_err_q;
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            period_q  <= PERIOD_DEFAULT;
+            cfg_err_q <= 1'b0;
+        end else begin
+            period_q  <= i_period;
+            cfg_err_q <= safe;
+        end
+    end
+
+    // ---- blocks ------------------------------------------------------------------------------
+    // switch debounce
+    wire swf_f, swf_valid, swf_glitch, swf_f_d, swf_valid_d, swf_glitch_d;
+    input_filter #(.W_CNT(16)) u_swf (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_pin(i_sw), .i_n(i_sw_debounce),
+        .o_f(swf_f), .o_valid(swf_valid), .o_glitch(swf_glitch),
+        .o_f_d(swf_f_d), .o_valid_d(swf_valid_d), .o_glitch_d(swf_glitch_d));
+
+    // decoder
+    wire signed [1:0]  dec_step;
+    wire signed [31:0] dec_raw;
+    wire               dec_illegal, dec_ovs, dec_illegal_st, dec_ovs_st, dec_lerr, dec_lerr_alarm;
+    wire               dec_glitch_st;
+    wire [7:0]         dec_err_cnt;
+    quad_decoder u_dec (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_a(i_a), .i_b(i_b), .i_lerr(i_lerr),
+        .i_glitch_n(i_glitch_n), .i_min_spacing(i_min_spacing), .i_clear(i_clear),
+        .o_step(dec_step), .o_raw_count(dec_raw), .o_illegal(dec_illegal), .o_ovs(dec_ovs),
+        .o_err_cnt(dec_err_cnt), .o_illegal_st(dec_illegal_st), .o_ovs_st(dec_ovs_st),
+        .o_lerr(dec_lerr), .o_lerr_alarm(dec_lerr_alarm), .o_glitch_st(dec_glitch_st));
+
+    // multiplier: consumes the decoder step of the previous call
+    wire signed [37:0] mul_comp;
+    wire signed [38:0] mul_delta;
+    pulse_multiplier u_mul (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(i_ratio),
+        .o_comp(mul_comp), .o_delta(mul_delta));
+
+    // pacer: consumes the multiplier delta of the previous call
+    wire signed [1:0]  pac_pstep;
+    wire signed [37:0] pac_paced;
+    wire signed [39:0] pac_backlog;
+    wire               pac_ovs, pac_ovs_st;
+    output_pacer u_pac (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(mul_delta), .i_pace_m(i_pace_m),
+        .i_thr(i_backlog_thr), .i_clear(i_clear),
+        .o_pstep(pac_pstep), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
+        .o_ovs_st(pac_ovs_st));
+
+    // rephase: pacer step, debounced switch and laser error of the previous call
+    wire signed [1:0]  rep_ostep;
+    wire signed [37:0] rep_out_pos, rep_a, rep_b, rep_c, rep_z, rep_adj;
+    wire               rep_mark, rep_homed;
+    wire [1:0]         rep_stage;
+    wire [11:0]        rep_d;
+    rephase u_rep (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_sw(swf_f), .i_sw_valid(swf_valid),
+        .i_rehome(i_rehome), .i_unhome(dec_lerr), .i_period(i_period), .i_mark_len(i_mark_len),
+        .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
+        .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),
+        .o_homed(rep_homed));
+
+    // DDS: rephase output step of the previous call; the table port is always active
+    wire signed [17:0] dds_sin, dds_cos;
+    dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(i_period),
+        .i_amplitude(i_amplitude), .i_tbl_we(i_tbl_we), .i_tbl_addr(i_tbl_addr),
+        .i_tbl_data(i_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
+
+    // ---- digital A/B/Z: rephase outputs of call t-2 ------------------------------------------
+    reg [1:0] rep_pos2_q, out_pos2_q;   // out_pos mod 4: rep_q2 stage, output stage
+    reg       rep_mark2_q, out_mark2_q;
+    always @(posedge i_clk) begin
+        if (blk_rst) begin
+            rep_pos2_q  <= 2'd0;
+            rep_mark2_q <= 1'b0;
+            out_pos2_q  <= 2'd0;
+            out_mark2_q <= 1'b0;
+        end else begin
+            rep_pos2_q  <= rep_out_pos[1:0];
+            rep_mark2_q <= rep_mark;
+            out_pos2_q  <= rep_pos2_q;
+            out_mark2_q <= rep_mark2_q;
+        end
+    end
+
+    // quadrature level of pos mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1)
+    assign o_qa     = out_pos2_q == 2'd1 || out_pos2_q == 2'd2;
+    assign o_qb     = out_pos2_q == 2'd2 || out_pos2_q == 2'd3;
+    assign o_qz     = out_mark2_q;
+    assign o_ref_mark = out_mark2_q;
+    assign o_sin    = dds_sin;
+    assign o_cos    = dds_cos;
+
+    // ---- status (block registers are in their reset state after a safe-state call) -----------
+    assign o_cfg_err        = cfg_err_q;
+    assign o_stage          = rep_stage;
+    assign o_homed          = rep_homed;
+    assign o_lerr_alarm     = dec_lerr_alarm;
+    assign o_illegal_st     = dec_illegal_st;
+    assign o_err_cnt        = dec_err_cnt;
+    assign o_ovs_edge_st    = dec_ovs_st;
+    assign o_ovs_backlog_st = pac_ovs_st;
+    assign o_glitch_st      = dec_glitch_st;
+    assign o_alarm          = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st;
+
+    // ---- taps --------------------------------------------------------------------------------
+    assign o_raw_count = dec_raw;
+    assign o_step      = dec_step;
+    assign o_comp_pos  = mul_comp;
+    assign o_delta     = mul_delta;
+    assign o_backlog   = pac_backlog;
+    assign o_pstep     = pac_pstep;
+    assign o_paced_pos = pac_paced;
+    assign o_ostep     = rep_ostep;
+    assign o_out_pos   = rep_out_pos;
+    assign o_adj       = rep_adj;
+    assign o_a_pos     = rep_a;
+    assign o_b_pos     = rep_b;
+    assign o_c_pos     = rep_c;
+    assign o_z_pos     = rep_z;
+    assign o_d         = rep_d;
+    assign o_rep_mark  = rep_mark;
+
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,168 @@
+// compensate_cmd.cpp — `laserax compensate`, see compensate_cmd.h.
+#include "tools/common/compensate_cmd.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+#include "golden/air_index.h"
+#include "golden/thermal.h"
+#include "tools/common/compensation.h"
+
+namespace lxt {
+
+const char* const kCompensateUsage =
+    "usage: laserax compensate [options]\n"
+    "  --wavelength-nm L     vacuum wavelength (default 632.991)\n"
+    "  --temp-c T            air temperature, degC (default 20)\n"
+    "  --pressure-pa P       air pressure, Pa (default 101325)\n"
+    "  --pressure-kpa P      air pressure, kPa (instead of --pressure-pa)\n"
+    "  --rh H                relative humidity, % (default 50)\n"
+    "  --co2-ppm C           CO2, umol/mol (default 450; Ciddor only)\n"
+    "  --material NAME       workpiece material preset (steel, cast-iron, aluminium, granite, invar)\n"
+    "  --alpha-ppm X         workpiece expansion coefficient, ppm/degC (instead of --material)\n"
+    "  --material-temp-c TM  workpiece temperature, degC (default: the air temperature)\n"
+    "  --origin-um U         thermal origin (zero-correction point, K168), um (default 0)\n"
+    "  --equation E          edlen or ciddor: the index used for the register (default ciddor)\n"
+    "ranges: Ciddor 300..1700 nm, -40..100 degC, 10..140 kPa; modified Edlen 350..650 nm, 0..40 degC,\n"
+    "        60..120 kPa; RH 0..100 %; CO2 0..2000 umol/mol; workpiece -20..80 degC, |alpha| <= 300 ppm/degC\n";
+
+namespace {
+
+bool parse_num(const std::string& s, double* v) {
+    if (s.empty()) return false;
+    char* end = nullptr;
+    errno = 0;
+    const double x = std::strtod(s.c_str(), &end);
+    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x)) return false;
+    *v = x;
+    return true;
+}
+
+void print_index(FILE* out, const char* label, const golden::air_index_result& r, double u95) {
+    if (r.ok) std::fprintf(out, "    %-16s n = %.10f   (n - 1 = %.4f ppm, equation U95 %.1e)\n", label, r.n, (r.n - 1.0) * 1e6, u95);
+    else std::fprintf(out, "    %-16s not evaluated: %s\n", label, r.error.c_str());
+}
+
+}  // namespace
+
+int cmd_compensate(const std::vector<std::string>& args, size_t first) { return cmd_compensate(args, first, stdout, stderr); }
+
+int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out, FILE* err) {
+    comp_inputs in;
+    std::string material;
+    bool have_alpha = false, have_mtemp = false, have_pa = false, have_kpa = false, have_co2 = false;
+    for (size_t i = first; i < args.size(); ++i) {
+        const std::string& o = args[i];
+        if (o == "--help" || o == "-h") {
+            std::fprintf(out, "%s", kCompensateUsage);
+            return 0;
+        }
+        static const char* const kNumeric[] = {"--wavelength-nm", "--temp-c", "--pressure-pa", "--pressure-kpa", "--rh",
+                                               "--co2-ppm", "--alpha-ppm", "--material-temp-c", "--origin-um"};
+        bool numeric = false;
+        for (const char* k : kNumeric) numeric = numeric || o == k;
+        if (!numeric && o != "--material" && o != "--equation") {
+            std::fprintf(err, "laserax compensate: unknown option '%s'\n%s", o.c_str(), kCompensateUsage);
+            return 2;
+        }
+        if (i + 1 >= args.size()) {
+            std::fprintf(err, "laserax compensate: %s needs a value\n", o.c_str());
+            return 2;
+        }
+        const std::string& v = args[++i];
+        if (o == "--material") {
+            material = v;
+            continue;
+        }
+        if (o == "--equation") {
+            if (v == "edlen") in.equation = golden::air_equation::edlen;
+            else if (v == "ciddor") in.equation = golden::air_equation::ciddor;
+            else {
+                std::fprintf(err, "laserax compensate: --equation must be edlen or ciddor, not '%s'\n", v.c_str());
+                return 2;
+            }
+            continue;
+        }
+        double x = 0;
+        if (!parse_num(v, &x)) {
+            std::fprintf(err, "laserax compensate: %s: not a number: '%s'\n", o.c_str(), v.c_str());
+            return 2;
+        }
+        if (o == "--wavelength-nm") in.wavelength_nm = x;
+        else if (o == "--temp-c") in.air_temp_c = x;
+        else if (o == "--pressure-pa") in.pressure_pa = x, have_pa = true;
+        else if (o == "--pressure-kpa") in.pressure_pa = x * 1e3, have_kpa = true;
+        else if (o == "--rh") in.rh_percent = x;
+        else if (o == "--co2-ppm") in.co2_ppm = x, have_co2 = true;
+        else if (o == "--alpha-ppm") in.alpha_ppm_per_c = x, have_alpha = true;
+        else if (o == "--material-temp-c") in.material_temp_c = x, have_mtemp = true;
+        else if (o == "--origin-um") in.origin_um = x;
+    }
+    if (have_pa && have_kpa) {
+        std::fprintf(err, "laserax compensate: give the pressure once (--pressure-pa or --pressure-kpa)\n");
+        return 2;
+    }
+    if (have_alpha && !material.empty()) {
+        std::fprintf(err, "laserax compensate: give either --material or --alpha-ppm, not both\n");
+        return 2;
+    }
+    std::string mat_label = "none (no expansion correction)";
+    if (!material.empty()) {
+        const golden::material_preset* m = golden::find_material(material);
+        if (!m) {
+            std::fprintf(err, "laserax compensate: unknown material '%s' (known: %s; or use --alpha-ppm)\n",
+                         material.c_str(), golden::material_names().c_str());
+            return 2;
+        }
+        in.alpha_ppm_per_c = m->alpha_ppm_per_c;
+        mat_label = m->name;
+    } else if (have_alpha) {
+        mat_label = "user alpha";
+    }
+    if (!have_mtemp) in.material_temp_c = (!material.empty() || have_alpha) ? in.air_temp_c : 20.0;
+
+    const comp_outputs c = compute_compensation(in);
+    if (!c.ok) {
+        std::fprintf(err, "laserax compensate: %s\n", c.error.c_str());
+        return 2;
+    }
+    golden::air_input ai;
+    ai.wavelength_nm = in.wavelength_nm;
+    ai.temp_c = in.air_temp_c;
+    ai.pressure_pa = in.pressure_pa;
+    ai.rh_percent = in.rh_percent;
+    ai.co2_ppm = in.co2_ppm;
+
+    std::fprintf(out, "laserax compensate: vacuum wavelength %.6g nm; air %g degC, %.6g Pa, %g %%RH, CO2 %g umol/mol\n",
+                 in.wavelength_nm, in.air_temp_c, in.pressure_pa, in.rh_percent, in.co2_ppm);
+    std::fprintf(out, "  water vapour: saturation %.2f Pa, partial %.2f Pa\n", c.ciddor.ok ? c.ciddor.psv_pa : c.edlen.psv_pa,
+                 c.ciddor.ok ? c.ciddor.pv_pa : c.edlen.pv_pa);
+    std::fprintf(out, "  refractive index of air\n");
+    print_index(out, "Ciddor", c.ciddor, golden::ciddor_expanded_uncertainty(ai));
+    print_index(out, "modified Edlen", c.edlen, golden::edlen_expanded_uncertainty(ai));
+    if (c.ciddor.ok && c.edlen.ok)
+        std::fprintf(out, "    Edlen - Ciddor   %+.2f ppb (parts in 10^9)\n", (c.edlen.n - c.ciddor.n) * 1e9);
+    std::fprintf(out, "    used             %s\n", golden::air_equation_name(in.equation));
+    if (have_co2 && in.equation == golden::air_equation::edlen)
+        std::fprintf(out, "    note: the Edlen equation is fixed at 450 umol/mol CO2; --co2-ppm only affects Ciddor\n");
+    std::fprintf(out, "  workpiece: %s, alpha %.3f ppm/degC, at %.3f degC, origin %g um\n", mat_label.c_str(),
+                 static_cast<double>(c.thermal.alpha_e9) / 1e3, static_cast<double>(c.thermal.temp_mc) / 1e3, in.origin_um);
+    std::fprintf(out, "  compensation relative to lambda_vac / 78.125 nm (%.9f output counts per raw count):\n",
+                 in.wavelength_nm / kOutputCountNmComp);
+    std::fprintf(out, "    air (1/n - 1)           %+12.5f ppm\n", c.air_ppm);
+    std::fprintf(out, "    expansion alpha(20-T)   %+12.5f ppm\n", c.expansion_ppm);
+    std::fprintf(out, "    total (1+g)/n - 1       %+12.5f ppm   (register applies %+.5f ppm)\n", c.total_ppm, c.register_ppm);
+    std::fprintf(out, "  ratio register (Q5.32)    %llu  (0x%llX) = %.10Lf output counts per raw count\n",
+                 static_cast<unsigned long long>(c.ratio), static_cast<unsigned long long>(c.ratio),
+                 scale_from_ratio(c.ratio, in.wavelength_nm).scale);
+    std::fprintf(out, "  encoder scaling (seed 002): K168 = %lld counts (%.4f um), K169 = %.7f (units of 1e-5)\n",
+                 static_cast<long long>(c.scaling.k168), static_cast<double>(c.scaling.k168) * kOutputCountNmComp / 1000.0,
+                 golden::k169_value(c.scaling));
+    if (std::fabs(static_cast<double>(c.scaling.k168) - c.origin_counts_exact) > 1e-9)
+        std::fprintf(out, "    note: origin rounded to a whole count (%.4f -> %lld)\n", c.origin_counts_exact,
+                     static_cast<long long>(c.scaling.k168));
+    return 0;
+}
+
+}  // namespace lxt
