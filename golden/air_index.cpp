@@ -120,6 +120,14 @@ double saturation_vapour_pressure_pa(double temp_c) {
     return t_k >= kTt ? svp_water_wagner_pruss(t_k) : svp_ice_wagner(t_k);
 }
 
+namespace {
+double vapour_pressure(double temp_c, const air_options& opt) {
+    const double t_k = temp_c + kT0;
+    if (opt.if97_vapour_pressure && t_k >= kTt) return svp_water_if97(t_k);
+    return saturation_vapour_pressure_pa(temp_c);
+}
+}  // namespace
+
 double enhancement_factor(double pressure_pa, double temp_c) {
     return kFAlpha + kFBeta * pressure_pa + kFGamma * temp_c * temp_c;
 }
@@ -140,7 +148,7 @@ air_index_result air_index_ciddor(const air_input& in, const air_options& opt) {
     r.extrapolated = outside;
 
     const double t = in.temp_c, T = t + kT0, p = in.pressure_pa, xc = in.co2_ppm;
-    r.psv_pa = saturation_vapour_pressure_pa(t);
+    r.psv_pa = vapour_pressure(t, opt);
     r.pv_pa = in.rh_percent / 100.0 * r.psv_pa;
     r.xv = enhancement_factor(p, t) * r.pv_pa / p;
     if (!(r.xv < 1.0)) {
@@ -181,7 +189,7 @@ air_index_result air_index_edlen(const air_input& in, const air_options& opt) {
     r.extrapolated = outside;
 
     const double t = in.temp_c, T = t + kT0, p = in.pressure_pa;
-    r.psv_pa = saturation_vapour_pressure_pa(t);
+    r.psv_pa = vapour_pressure(t, opt);
     r.pv_pa = in.rh_percent / 100.0 * r.psv_pa;
     if (!(r.pv_pa < p)) {
         char buf[160];

@@ -73,6 +73,8 @@ struct air_input {
 struct air_options {
     bool allow_extrapolation = false;  // evaluate outside the adopted range (result flagged)
     bool nist_water_term = true;       // Edlén: NIST's 292.75/T factor on the water vapour term
+    bool if97_vapour_pressure = false; // above 0 °C use IAPWS-IF97 (what the NIST calculator uses)
+                                       // instead of Wagner & Pruss (for reproducing NIST's table)
 };
 
 struct air_index_result {

@@ -18,17 +18,21 @@ bool config_ok(const axis_regs& r) {
 
 void axis_chain::reset() {
     const int64_t keep = last_period_;  // the period memory is not part of the chain's reset
+    const bool keep_run = was_running_;
     *this = axis_chain{};
     last_period_ = keep;
+    was_running_ = keep_run;
 }
 
 axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     axis_out o{};
-    // DESIGN 4.7: a change of the period register is a reconfiguration; the call in which the
-    // new value appears is a safe-state call. The remembered period powers up at 256.
-    const bool period_changed = regs.period != last_period_;
+    // DESIGN 4.7: a change of the period register between two running calls is a
+    // reconfiguration: the call in which the new value appears is a safe-state call.
+    const bool period_changed = was_running_ && regs.period != last_period_;
+    const bool running = config_ok(regs) && !period_changed;
     last_period_ = regs.period;
-    if (!config_ok(regs) || period_changed) {
+    was_running_ = running;
+    if (!running) {
         // safe state: every block and every inter-block register (including the t-2 delay of
         // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
         reset();

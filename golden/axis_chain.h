@@ -93,7 +93,8 @@ private:
     output_pacer::out pac_q_{};
     rephase::out rep_q_{};   // rephase output of call t-1
     rephase::out rep_q2_{};  // rephase output of call t-2 (qa, qb, qz, ref_mark)
-    int64_t last_period_ = 256;  // period register of the previous call (reset value of period)
+    int64_t last_period_ = 0;    // period register of the previous call
+    bool was_running_ = false;   // the previous call ran with a valid configuration
 };
 
 }  // namespace golden

@@ -127,11 +127,14 @@ public:
     axis_out step(const axis_pins& pins, const axis_regs& regs) {
         if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
         axis_out o = axis_out{};
-        // A period change is a reconfiguration: the phase counters of the old period are
-        // meaningless for the new one, so the chain restarts (one call in the safe state).
-        const bool period_changed = regs.period != period_q_;
+        // A period change while running is a reconfiguration: the phase counters of the old
+        // period are meaningless for the new one, so the chain restarts (one call in the safe
+        // state). Coming out of reset or of an invalid configuration the blocks are already reset.
+        const bool period_changed = run_q_ && regs.period != period_q_;
+        const bool ok = axis_config_ok(regs) && !period_changed;
         period_q_ = regs.period;
-        if (!axis_config_ok(regs) || period_changed) {
+        run_q_ = ok;
+        if (!ok) {
             reset();  // safe state: every block held in reset
             o.cfg_err = true;
             o.alarm = true;
@@ -201,7 +204,8 @@ private:
     pulse_multiplier::out_t mul_q_;
     output_pacer::out_t pac_q_;
     rephase::out_t rep_q_, rep_q2_;
-    period_t period_q_ = axis_core_cfg::PERIOD_DEFAULT;  // period of the previous call
+    period_t period_q_ = 0;  // period register of the previous call
+    bool run_q_ = false;     // the previous call ran with a valid configuration
 };
 
 }  // namespace lx

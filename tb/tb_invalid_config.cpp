@@ -6,6 +6,7 @@
 //   width's maximum, tbl_period != period, mark_len outside P/4..P), applied while the axis is
 //   moving: cfg_err = 1, alarm = 1, sin = cos = 0, no mark, no A/B/Z, stage 1, hls == golden;
 //   after the register is restored the chain restarts from reset and tracks again.
+// * A period change while running costs exactly one safe-state call (and power-up none).
 #include <functional>
 
 #include "tb/tb_util.h"
@@ -89,6 +90,30 @@ int main(int argc, char** argv) {
         res.check(!ax.hls().cfg_err && ax.hls().raw_count > 0 && ax.hls().raw_count < 700 &&
                       (ax.hls().cos != 0 || ax.hls().sin != 0),
                   std::string(b.name) + ": chain did not restart after the register was restored");
+    }
+    {  // a period change while running costs exactly one safe-state call, then the chain restarts
+        lxt::axis_settings s;
+        s.glitch_n = 0;
+        lxt::dual_axis ax(s);
+        int64_t n = 0;
+        int safe_calls = 0;
+        for (int t = 0; t < 4000; ++t) {
+            if (t == 2000) {
+                lxt::axis_settings s2 = s;
+                s2.period = s2.tbl_period = 320;
+                s2.mark_len = 80;
+                ax.set(s2);
+            }
+            if (t % 5 == 0) ++n;
+            lx::axis_pins p;
+            lxt::quad_pins(n, p.a, p.b);
+            const std::string m = ax.step(p);
+            res.expect(m.empty(), [&] { return "period change: " + m; });
+            if (ax.hls().cfg_err) ++safe_calls;
+            if (t == 2000) res.check(ax.hls().cfg_err && ax.hls().raw_count == 0, "period change: no safe-state call");
+            if (t == 2001) res.check(!ax.hls().cfg_err, "period change: more than one safe-state call");
+        }
+        res.check(safe_calls == 1, "period change: " + std::to_string(safe_calls) + " safe-state calls (power-up must cost none)");
     }
     return res.finish();
 }

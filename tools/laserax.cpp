@@ -176,6 +176,7 @@ int cmd_run(args& a, const std::string& cmdline) {
         struct stat st;
         if (stat(py.c_str(), &st) == 0) {
             const std::string c = py + " scripts/plot_homing.py " + out + "/trace.csv " + out + "/homing.png";
+            std::fflush(stdout);
             if (std::system(c.c_str()) == 0) std::printf("  wrote %s/homing.png\n", out.c_str());
             else std::printf("  plot skipped (scripts/plot_homing.py failed; run `make deps`)\n");
         } else {

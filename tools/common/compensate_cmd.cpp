@@ -89,15 +89,30 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
             std::fprintf(err, "laserax compensate: %s: not a number: '%s'\n", o.c_str(), v.c_str());
             return 2;
         }
-        if (o == "--wavelength-nm") in.wavelength_nm = x;
-        else if (o == "--temp-c") in.air_temp_c = x;
-        else if (o == "--pressure-pa") in.pressure_pa = x, have_pa = true;
-        else if (o == "--pressure-kpa") in.pressure_pa = x * 1e3, have_kpa = true;
-        else if (o == "--rh") in.rh_percent = x;
-        else if (o == "--co2-ppm") in.co2_ppm = x, have_co2 = true;
-        else if (o == "--alpha-ppm") in.alpha_ppm_per_c = x, have_alpha = true;
-        else if (o == "--material-temp-c") in.material_temp_c = x, have_mtemp = true;
-        else if (o == "--origin-um") in.origin_um = x;
+        if (o == "--wavelength-nm") {
+            in.wavelength_nm = x;
+        } else if (o == "--temp-c") {
+            in.air_temp_c = x;
+        } else if (o == "--pressure-pa") {
+            in.pressure_pa = x;
+            have_pa = true;
+        } else if (o == "--pressure-kpa") {
+            in.pressure_pa = x * 1e3;
+            have_kpa = true;
+        } else if (o == "--rh") {
+            in.rh_percent = x;
+        } else if (o == "--co2-ppm") {
+            in.co2_ppm = x;
+            have_co2 = true;
+        } else if (o == "--alpha-ppm") {
+            in.alpha_ppm_per_c = x;
+            have_alpha = true;
+        } else if (o == "--material-temp-c") {
+            in.material_temp_c = x;
+            have_mtemp = true;
+        } else {  // --origin-um
+            in.origin_um = x;
+        }
     }
     if (have_pa && have_kpa) {
         std::fprintf(err, "laserax compensate: give the pressure once (--pressure-pa or --pressure-kpa)\n");
