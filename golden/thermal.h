@@ -27,8 +27,9 @@
 //     K169         = alpha_e9 * (20000 - temp_mc) * 1e-7,  i.e.  k169_e7 = alpha_e9 * (20000 - temp_mc)
 // exactly, so (1) and (2) are the same rational number for every position and both floors agree
 // bit for bit. (In binary floating point they do not: alpha*(20-T) is not representable, and a
-// correction that should be an exact integer, e.g. 20000 counts * 10 ppm/°C * 5 °C = 1, can come
-// out as 0.9999999999999999 in one form and 1.0 in the other.)
+// correction that should be an exact integer comes out on either side of it. Steel at 17 °C,
+// 2 000 000 counts (156.25 mm) from the origin: the correction is exactly 69 counts; in double,
+// form (1) gives 69 and form (2) 68.999999999999986, so the two floors differ by one count.)
 //
 // Input limits (make_thermal rejects anything else): |alpha| <= 300 ppm/°C (every engineering
 // material including most plastics), material temperature -20 .. 80 °C (the correction is

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/compensate_cmd.h"
 #include "tools/common/homing.h"
 #include "tools/common/trace.h"
 #include "tools/common/vectors.h"
@@ -23,6 +24,7 @@ namespace {
 const char* kUsage =
     "usage: laserax [run] [options]\n"
     "       laserax vectors [--out DIR] [--seed N] [--calls N]\n"
+    "       laserax compensate [--temp-c T] [--pressure-kpa P] [--rh RH] [--material M] ...  (--help)\n"
     "run options:\n"
     "  --pitch-um U      sin/cos period in um: 20, 25, 40, 50, 100 (default 20 = 256 counts)\n"
     "  --period P        period in output counts (8..4096, multiple of 8); overrides --pitch-um\n"
@@ -199,6 +201,7 @@ int main(int argc, char** argv) {
     if (a.more() && a.v[0].rfind("--", 0) != 0) cmd = a.next("");
     if (cmd == "run") return cmd_run(a, cmdline);
     if (cmd == "vectors") return lxt::cmd_vectors(a.v, a.i, cmdline);
+    if (cmd == "compensate") return lxt::cmd_compensate(a.v, a.i);
     if (cmd == "help" || cmd == "-h" || cmd == "--help") {
         std::printf("%s", kUsage);
         return 0;

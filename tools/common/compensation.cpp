@@ -4,7 +4,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tools/common/sim.h"
+
 namespace lxt {
+
+static_assert(kOutputCountNmComp == kOutputCountNm, "output count differs from sim.h");
 
 bool ratio_from_scale(long double scale, uint64_t* ratio, std::string* err) {
     const long double r = scale * 4294967296.0L;

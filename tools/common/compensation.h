@@ -41,7 +41,8 @@ struct comp_inputs {
     golden::air_equation equation = golden::air_equation::ciddor;  // the one used for the register
     double alpha_ppm_per_c = 0.0;    // workpiece expansion coefficient (0: no thermal correction)
     double material_temp_c = 20.0;
-    double origin_um = 0.0;          // thermal origin (K168), um from raw count 0 / home
+    double origin_um = 0.0;          // thermal origin (K168), um from raw count 0 / home;
+                                     // rounded to the nearest output count (half up)
 };
 
 struct comp_outputs {
