@@ -1,0 +1,219 @@
+// encoder_counter.h — two 32-bit signed wrapping encoder counters with encoder simulation,
+// reset now / at the next start trigger, on-the-fly correction every 10 us and wait-for-encoder.
+//
+// docs/PSO_COUNTERS.md §3 is the normative per-call description; in short, per call:
+//   correction  every corr_period calls (1000 = 10 us at 100 MHz): corr_c' = pos_c +
+//               round_half_up(scale_c * cnt_c / 2^24) from the counter registers before the call;
+//   counting    source 0: the quadrature step input; source 1: simulation, a Q0.32 phase
+//               accumulator (1 MHz = 0.01 count/clock by default) whose carry is one count, up
+//               or down; cnt' = cnt + step with 32-bit wrap (max + 1 -> min);
+//               reset request: immediately, or (rst_on_trig) at the first start trigger in a
+//               later call; a reset clears the counter and the simulation phase and takes
+//               priority over a load (preset) and over the step of that call;
+//   wait        armed by wait_arm (channel, value, direction latched); reached in the first call
+//               whose counter after the call is strictly beyond the value in the chosen
+//               direction, judged on the wrap-aware signed difference s32(cnt - value).
+//
+// Widths: counters 32 signed; simulation rate Q0.32 (legal <= 0.25 count/clock = 25 MHz);
+// scale Q8.24 signed (bits per count); product 64 signed; correction output 40 signed.
+// Latency: a step at call t is in cnt of call t; correction outputs change in the tick call.
+#ifndef LASERAX_HLS_ENCODER_COUNTER_H
+#define LASERAX_HLS_ENCODER_COUNTER_H
+
+#include "hls/axis_config.h"
+
+namespace lx {
+
+struct encoder_counter_cfg {
+    // primary
+    static constexpr int N_CH = 2;
+    static constexpr int W_CNT = 32;     // counters, signed, wrap
+    static constexpr int W_INC = 32;     // simulation rate, Q0.32 counts per clock
+    static constexpr int S_FRAC = 24;    // scale fraction bits
+    static constexpr int W_SCALE = 32;   // scale, signed Q8.24 bits per count
+    static constexpr int W_PER = 16;     // correction period register, clocks
+    static constexpr int W_POSIN = 32;   // nominal output position input, bits, signed
+    static constexpr int PERIOD_DEFAULT = 1000;  // 10 us at 100 MHz
+    static constexpr int CLOCK_HZ = 100000000;
+    static constexpr int SIM_HZ_DEFAULT = 1000000;  // 1 MHz counting rate
+    static constexpr int SIM_HZ_MAX = 25000000;     // 0.25 count per clock
+    // derived
+    static constexpr int W_PROD = W_SCALE + W_CNT;            // 64: |scale * cnt| <= 2^62
+    static constexpr int W_CORR = W_PROD - S_FRAC;            // 40: |prod / 2^24| <= 2^38, + pos < 2^39
+    // round(1 MHz / 100 MHz * 2^32) = 42949673 (0.9 ppb fast)
+    static constexpr unsigned long long SIM_INC_DEFAULT =
+        ((static_cast<unsigned long long>(SIM_HZ_DEFAULT) << (W_INC + 1)) / CLOCK_HZ + 1) / 2;
+    static constexpr unsigned long long SIM_INC_MAX =
+        (static_cast<unsigned long long>(SIM_HZ_MAX) << W_INC) / CLOCK_HZ;  // 2^30
+    static constexpr unsigned long long HALF = 1ULL << (S_FRAC - 1);
+
+    using cnt_t = sint<W_CNT>;
+    using inc_t = uint<W_INC>;
+    using scale_t = sint<W_SCALE>;
+    using per_t = uint<W_PER>;
+    using posin_t = sint<W_POSIN>;
+    using prod_t = sint<W_PROD>;
+    using corr_t = sint<W_CORR>;
+    using src_t = uint<2>;  // 0 quadrature step, 1 simulation (2, 3 illegal)
+};
+
+struct encoder_counter_regs {
+    encoder_counter_cfg::src_t src[encoder_counter_cfg::N_CH];
+    encoder_counter_cfg::inc_t sim_inc[encoder_counter_cfg::N_CH];
+    bool sim_down[encoder_counter_cfg::N_CH];
+    encoder_counter_cfg::scale_t scale[encoder_counter_cfg::N_CH];
+    bool rst_req[encoder_counter_cfg::N_CH];   // pulse: reset request
+    bool load[encoder_counter_cfg::N_CH];      // pulse: preset the counter to load_val
+    encoder_counter_cfg::cnt_t load_val[encoder_counter_cfg::N_CH];
+    bool rst_on_trig;                          // reset at the next start trigger instead of now
+    encoder_counter_cfg::per_t corr_period;
+    bool wait_arm;                             // pulse
+    bool wait_ch;                              // false: counter 0, true: counter 1
+    encoder_counter_cfg::cnt_t wait_val;
+    bool wait_down;                            // false: wait to overstep, true: to understep
+
+    encoder_counter_regs() : rst_on_trig(false), corr_period(encoder_counter_cfg::PERIOD_DEFAULT), wait_arm(false),
+                             wait_ch(false), wait_val(0), wait_down(false) {
+        for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+            src[c] = 0;
+            sim_inc[c] = encoder_counter_cfg::SIM_INC_DEFAULT;
+            sim_down[c] = false;
+            scale[c] = 0;
+            rst_req[c] = false;
+            load[c] = false;
+            load_val[c] = 0;
+        }
+    }
+};
+
+struct encoder_counter_in {
+    step_t qstep[encoder_counter_cfg::N_CH];          // from the quadrature decoders
+    bool trig;                                        // start trigger (pulse)
+    encoder_counter_cfg::posin_t pos[encoder_counter_cfg::N_CH];  // nominal output position, bits
+};
+
+inline bool encoder_counter_config_ok(const encoder_counter_regs& r) {
+    bool ok = r.corr_period >= 1;
+    for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+        ok = ok && r.src[c] <= 1;
+        ok = ok && (r.src[c] != 1 || r.sim_inc[c] <= encoder_counter_cfg::SIM_INC_MAX);
+    }
+    return ok;
+}
+
+class encoder_counter {
+public:
+    using cfg = encoder_counter_cfg;
+    struct out_t {
+        cfg::cnt_t cnt[cfg::N_CH];
+        step_t step[cfg::N_CH];        // count applied in this call
+        bool rst_done[cfg::N_CH];      // the counter was reset in this call
+        bool rst_pending[cfg::N_CH];   // waiting for a start trigger
+        cfg::corr_t corr[cfg::N_CH];   // corrected output positions (held between ticks)
+        bool tick;                     // corr updated in this call
+        bool waiting;
+        bool reached;                  // pulse: the awaited counter passed the value
+        bool cfg_err;
+    };
+
+    encoder_counter() { reset(); }
+
+    void reset() {
+        for (int c = 0; c < cfg::N_CH; ++c) {
+            cnt_[c] = 0;
+            ph_[c] = 0;
+            pending_[c] = false;
+            corr_[c] = 0;
+        }
+        timer_ = 0;
+        waiting_ = false;
+        w_ch_ = false;
+        w_val_ = 0;
+        w_down_ = false;
+    }
+
+    out_t step(const encoder_counter_in& in, const encoder_counter_regs& r) {
+        out_t o = out_t{};
+        if (!encoder_counter_config_ok(r)) {
+            reset();
+            o.cfg_err = true;
+            return o;
+        }
+        // correction from the counters before this call
+        const bool tick = timer_ + 1 >= r.corr_period;
+        timer_ = tick ? cfg::per_t(0) : cfg::per_t(timer_ + 1);
+        if (tick) {
+            for (int c = 0; c < cfg::N_CH; ++c) {
+#pragma HLS UNROLL
+                const cfg::prod_t prod = cfg::prod_t(r.scale[c]) * cnt_[c];
+                const cfg::prod_t biased = prod + cfg::prod_t(cfg::HALF);  // |prod| <= 2^62: no overflow
+                // floor(biased / 2^S_FRAC): the low W_CORR bits of the logical shift are the
+                // arithmetic shift's (the quotient fits W_CORR bits)
+                const cfg::corr_t q = uint<cfg::W_PROD>(biased) >> cfg::S_FRAC;
+                corr_[c] = q + in.pos[c];
+            }
+        }
+        for (int c = 0; c < cfg::N_CH; ++c) {
+#pragma HLS UNROLL
+            const uint<cfg::W_INC + 1> sum = uint<cfg::W_INC + 1>(ph_[c]) + r.sim_inc[c];
+            const bool carry = (sum >> cfg::W_INC) != 0;
+            ph_[c] = sum;
+            step_t st = 0;
+            if (r.src[c] == 1) {
+                if (carry) st = r.sim_down[c] ? step_t(-1) : step_t(1);
+            } else {
+                st = in.qstep[c];
+            }
+            const bool do_rst = (r.rst_req[c] && !r.rst_on_trig) || (pending_[c] && in.trig);
+            pending_[c] = (r.rst_req[c] && r.rst_on_trig) || (pending_[c] && !in.trig);
+            if (do_rst) {
+                cnt_[c] = 0;
+                ph_[c] = 0;
+                st = 0;
+            } else if (r.load[c]) {
+                cnt_[c] = r.load_val[c];
+                st = 0;
+            } else {
+                cnt_[c] = cnt_[c] + st;  // 32-bit wrap: max + 1 -> min
+            }
+            o.step[c] = st;
+            o.rst_done[c] = do_rst;
+        }
+        bool reached = false;
+        if (waiting_) {
+            const cfg::cnt_t diff = cnt_[w_ch_ ? 1 : 0] - w_val_;  // wrap-aware signed difference
+            reached = w_down_ ? diff < 0 : diff > 0;
+            if (reached) waiting_ = false;
+        }
+        if (r.wait_arm) {
+            waiting_ = true;
+            w_ch_ = r.wait_ch;
+            w_val_ = r.wait_val;
+            w_down_ = r.wait_down;
+        }
+        for (int c = 0; c < cfg::N_CH; ++c) {
+            o.cnt[c] = cnt_[c];
+            o.rst_pending[c] = pending_[c];
+            o.corr[c] = corr_[c];
+        }
+        o.tick = tick;
+        o.waiting = waiting_;
+        o.reached = reached;
+        return o;
+    }
+
+private:
+    cfg::cnt_t cnt_[cfg::N_CH];
+    cfg::inc_t ph_[cfg::N_CH];
+    bool pending_[cfg::N_CH];
+    cfg::corr_t corr_[cfg::N_CH];
+    cfg::per_t timer_;
+    bool waiting_;
+    bool w_ch_;
+    cfg::cnt_t w_val_;
+    bool w_down_;
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_ENCODER_COUNTER_H

@@ -1,0 +1,409 @@
+// pso.h — position-synchronised output (PSO): vector-distance tracking of up to three axes, a
+// firing comparator with remainder carry, pulse output of programmable width, a position window,
+// an array of firing distances and the part-speed pulse generator (24 MHz limit).
+//
+// docs/PSO_COUNTERS.md §2 is the normative per-call description; in short:
+//
+//   stage A (this call's inputs)   tracking window: per-axis signed travel D since the window
+//                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
+//                                  window at the previous position, |D_i| reaching K closes it at
+//                                  the current one; address s = sum D_i^2 of the chord ROM.
+//                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
+//                                  24 MHz), one distance count per carry.
+//   stage B (stage A of last call) chord = ROM[s] = round(sqrt(s) * 2^32) (registered BRAM
+//                                  read), remainder update, fire when remainder + open-window
+//                                  chord >= threshold, subtract the threshold (carry), pulse timer.
+//
+// With K = 1 every step closes its window and the increment is the per-call magnitude
+// 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
+// removes the staircase over-estimate of diagonal moves (see the document for figures).
+//
+// Widths (all derived from the primaries in pso_cfg): distances Q24.32 (56 bits unsigned),
+// remainder 58 bits signed, chord 39 bits, window travel 7 bits signed, ROM 3073 x 39 bits
+// (K_MAX = 32). Latency: a step at call t can fire at call t+1 (the fire/emit/pulse outputs of
+// call t+1); flags about this call's command (rate_over, spacing_err) are outputs of call t.
+#ifndef LASERAX_HLS_PSO_H
+#define LASERAX_HLS_PSO_H
+
+#include "hls/axis_config.h"
+
+namespace lx {
+
+struct pso_cfg {
+    // primary
+    static constexpr int N_AXES = 3;
+    static constexpr int D_FRAC = 32;       // fraction bits of every distance (2^-32 count)
+    static constexpr int D_INT = 24;        // distance registers: < 2^24 counts (1.31 m)
+    static constexpr int K_MAX = 32;        // longest tracking window, counts on one axis
+    static constexpr int ARR_DEPTH = 64;    // firing-distance array (distributed RAM)
+    static constexpr int W_PW = 16;         // pulse width register, clocks
+    static constexpr int W_GAP = 16;        // laser minimum pulse period register, clocks
+    static constexpr int W_INC = 32;        // part-speed rate, Q0.32 counts per clock
+    static constexpr int W_FCNT = 32;       // emitted-pulse counter (wraps)
+    static constexpr int W_OVL = 16;        // overlap counter (saturating)
+    static constexpr int CLOCK_HZ = 100000000;
+    static constexpr int PULSE_HZ_MAX = 24000000;  // pulse generator limit (seed 003)
+    // derived
+    static constexpr int W_DIST = D_INT + D_FRAC;                    // 56, unsigned
+    static constexpr int W_REM = D_INT + 2 + D_FRAC;                 // 58, signed
+    static constexpr int W_K = clog2p1(K_MAX);                       // 6, K register
+    static constexpr int W_WIN = W_K + 1;                            // 7, signed travel -K..K
+    static constexpr int S_MAX = N_AXES * K_MAX * K_MAX;             // 3072
+    static constexpr int W_S = clog2p1(S_MAX);                       // 12, ROM address
+    static constexpr int W_CHORD = clog2p1(2 * K_MAX) + D_FRAC;      // 39: sqrt(3)*K < 2K
+    static constexpr int W_ADDR = clog2p1(ARR_DEPTH - 1);            // 6
+    static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
+    static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
+    static constexpr unsigned long long ONE = 1ULL << D_FRAC;        // one count
+    static constexpr unsigned long long MIN_DIST = 2ULL << D_FRAC;   // smallest legal threshold
+    // floor(24 MHz / 100 MHz * 2^32): the largest increment whose carry rate is <= 24 MHz
+    static constexpr unsigned long long INC_MAX =
+        (static_cast<unsigned long long>(PULSE_HZ_MAX) << W_INC) / static_cast<unsigned long long>(CLOCK_HZ);
+    static constexpr unsigned long long GAP_MAX = (1ULL << W_GAP) - 1;
+    static constexpr unsigned long long OVL_MAX = (1ULL << W_OVL) - 1;
+
+    using dist_t = uint<W_DIST>;
+    using rem_t = sint<W_REM>;
+    using chord_t = uint<W_CHORD>;
+    using win_t = sint<W_WIN>;
+    using s_t = uint<W_S>;
+    using k_t = uint<W_K>;
+    using pw_t = uint<W_PW>;
+    using gap_t = uint<W_GAP>;
+    using inc_t = uint<W_INC>;
+    using fcnt_t = uint<W_FCNT>;
+    using ovl_t = uint<W_OVL>;
+    using addr_t = uint<W_ADDR>;
+    using len_t = uint<W_LEN>;
+    using prod_t = uint<W_PROD>;
+    using mask_t = uint<N_AXES>;
+    using src_t = uint<2>;      // window source: 0..2 axis position, 3 part-speed pulse count
+    using bad_t = uint<ARR_DEPTH>;
+};
+
+// Chord ROM: v[s] = round(sqrt(s) * 2^D_FRAC), s = 0..S_MAX, computed at compile time with the
+// digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
+// partial remainder stays below 2 * root + 1 < 2^40). Ties cannot occur (sqrt(s) * 2^32 is an
+// integer or irrational), so "round to nearest" needs no tie rule: root + 1 when the remainder
+// x - root^2 exceeds root.
+struct pso_chord_rom {
+    uint64_t v[pso_cfg::S_MAX + 1];
+
+    constexpr pso_chord_rom() : v() {
+        for (int s = 0; s <= pso_cfg::S_MAX; ++s) v[s] = round_sqrt(static_cast<uint64_t>(s));
+    }
+
+    static constexpr uint64_t round_sqrt(uint64_t s) {
+        constexpr int s_pairs = (pso_cfg::W_S + 1) / 2;
+        uint64_t root = 0;
+        uint64_t rem = 0;
+        for (int i = 0; i < s_pairs + pso_cfg::D_FRAC; ++i) {
+            const uint64_t pair = i < s_pairs ? (s >> (2 * (s_pairs - 1 - i))) & 3u : 0u;
+            rem = (rem << 2) | pair;
+            const uint64_t trial = (root << 2) | 1u;
+            if (rem >= trial) {
+                rem -= trial;
+                root = (root << 1) | 1u;
+            } else {
+                root <<= 1;
+            }
+        }
+        return rem > root ? root + 1 : root;
+    }
+};
+
+inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
+    static constexpr pso_chord_rom rom{};
+#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
+    return rom.v[s.to_uint()];
+}
+
+// Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched
+// at the rising edge of the run state (enable with a valid configuration); the others act live.
+struct pso_regs {
+    bool enable = false;
+    bool part_speed = false;
+    pso_cfg::mask_t axis_mask = 3;
+    pso_cfg::k_t win_k = 16;
+    pso_cfg::dist_t fire_dist = 128ULL << pso_cfg::D_FRAC;  // 128 counts = 10 um
+    bool arr_en = false;
+    pso_cfg::len_t arr_len = 1;
+    bool arr_wrap = false;
+    bool arr_we = false;  // array write port (acts in every call, also while disabled)
+    pso_cfg::addr_t arr_addr = 0;
+    pso_cfg::dist_t arr_data = 0;
+    pso_cfg::pw_t pulse_w = 10;
+    bool win_en = false;
+    pso_cfg::src_t win_src = 0;
+    pos_t win_low = 0;
+    pos_t win_high = 0;
+    pso_cfg::gap_t min_period = 0;  // laser minimum pulse period in clocks, 0 = no check
+    bool clear = false;             // clears the sticky flags and the overlap counter
+};
+
+struct pso_in {
+    step_t step[pso_cfg::N_AXES];  // tracked axis steps (-1, 0, +1)
+    pos_t pos[pso_cfg::N_AXES];    // axis positions after the step (window comparison)
+    pso_cfg::inc_t ps_inc;         // part-speed commanded vector rate, Q0.32 counts per clock
+};
+
+// Configuration check (combinational, every call).
+inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
+    const bool k_ok = r.win_k >= 1 && r.win_k <= pso_cfg::K_MAX;
+    const bool axes_ok = r.part_speed || r.axis_mask != 0;
+    bool thr_ok;
+    if (r.arr_en) {
+        const bool len_ok = r.arr_len >= 1 && r.arr_len <= pso_cfg::ARR_DEPTH;
+        pso_cfg::bad_t used = ~pso_cfg::bad_t(0);
+        if (len_ok && r.arr_len < pso_cfg::ARR_DEPTH) used = (pso_cfg::bad_t(1) << r.arr_len.to_uint()) - 1;
+        thr_ok = len_ok && (arr_bad & used) == 0;
+    } else {
+        thr_ok = r.fire_dist >= pso_cfg::MIN_DIST;
+    }
+    const bool win_ok = !r.win_en || (r.win_low <= r.win_high && (r.win_src != 3 || r.part_speed));
+    return k_ok && axes_ok && thr_ok && win_ok && r.pulse_w >= 1;
+}
+
+class pso {
+public:
+    using cfg = pso_cfg;
+    struct out_t {
+        bool fire;          // the tracked distance crossed the threshold (stage B)
+        bool emit;          // fire inside the window: a pulse starts
+        bool pulse;         // output level (pulse_w calls from the emit)
+        bool in_win;        // window condition used by this call's fire
+        cfg::rem_t dist;    // distance since the last fire, Q.32 counts (after this call's fire)
+        cfg::len_t idx;     // array: index of the entry that gives the next threshold
+        bool arr_done;      // array without wrap: every entry has fired
+        cfg::fcnt_t fire_cnt;     // emitted pulses (wraps)
+        cfg::ovl_t overlap_cnt;   // emits while the previous pulse was still high (saturating)
+        bool overlap, overlap_st;
+        bool rate_over, rate_over_st;   // part-speed command above 24 MHz (clamped)
+        bool spacing_err, spacing_st;   // threshold below rate * min_period (part-speed)
+        bool freq_err, freq_st;         // emit fewer than min_period calls after the previous one
+        bool ps_pulse;                  // pulse-generator output of this call
+        pos_t ps_count;                 // pulse-generator count since the run started
+        bool cfg_err;
+    };
+
+    pso() {
+        for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
+        arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
+        reset();
+    }
+
+    // Reset of the state (not of the array RAM).
+    void reset() {
+        reset_track();
+        run_q_ = false;
+        fire_cnt_ = 0;
+        ovl_cnt_ = 0;
+        overlap_st_ = false;
+        rate_over_st_ = false;
+        spacing_st_ = false;
+        freq_st_ = false;
+    }
+
+    out_t step(const pso_in& in, const pso_regs& r) {
+        if (r.arr_we) {
+            arr_[r.arr_addr.to_uint()] = r.arr_data;
+            const cfg::bad_t bit = cfg::bad_t(1) << r.arr_addr.to_uint();
+            arr_bad_ = (r.arr_data < cfg::MIN_DIST) ? cfg::bad_t(arr_bad_ | bit) : cfg::bad_t(arr_bad_ & ~bit);
+        }
+        out_t o = out_t{};
+        if (!pso_config_ok(r, arr_bad_)) {
+            reset();
+            o.cfg_err = true;
+            return o;
+        }
+        if (r.clear) {  // clear acts first; an event of this call sets its flag again
+            overlap_st_ = false;
+            rate_over_st_ = false;
+            spacing_st_ = false;
+            freq_st_ = false;
+            ovl_cnt_ = 0;
+        }
+        if (!r.enable) {
+            reset_track();
+            fill_status(o);
+            return o;
+        }
+        if (!run_q_) {  // start of a run: latch the mode registers
+            ps_q_ = r.part_speed;
+            mask_q_ = r.axis_mask;
+            arr_en_q_ = r.arr_en;
+            arr_len_q_ = r.arr_len;
+            arr_wrap_q_ = r.arr_wrap;
+            run_q_ = true;
+        }
+        const cfg::dist_t thr = arr_en_q_ ? arr_[idx_.to_uint()] : r.fire_dist;
+
+        // ---- stage B: accumulate the chord read for last call's window, fire, pulse ----
+        const cfg::chord_t chord = pso_chord(a_s_);
+        const int64_t thr_v = static_cast<int64_t>(thr.to_uint64());
+        int64_t base = rem_.to_int64();
+        if (a_rev_) base += static_cast<int64_t>(part_.to_uint64());
+        if (a_kclose_) base += static_cast<int64_t>(chord.to_uint64());
+        if (a_pulse_) base += static_cast<int64_t>(cfg::ONE);
+        const cfg::chord_t partial = a_kclose_ ? cfg::chord_t(0) : chord;
+        const int64_t value = base + static_cast<int64_t>(partial.to_uint64());
+        const bool fire = !done_ && value >= thr_v;
+        const cfg::rem_t frozen = rem_.to_int64() + static_cast<int64_t>(part_.to_uint64());
+        if (!done_) {
+            rem_ = fire ? base - thr_v : base;
+            part_ = partial;
+        }
+        if (fire && arr_en_q_) {
+            if (idx_ + 1 >= arr_len_q_) {
+                if (arr_wrap_q_) idx_ = 0;
+                else done_ = true;
+            } else {
+                idx_ = idx_ + 1;
+            }
+        }
+        const bool emit = fire && a_inwin_;
+        const bool overlap = emit && timer_ != 0;
+        const bool freq_err = emit && r.min_period != 0 && since_ + 1 < r.min_period;
+        if (emit) {
+            timer_ = r.pulse_w;
+            since_ = 0;
+            fire_cnt_ = fire_cnt_ + 1;
+        } else {
+            if (timer_ != 0) timer_ = timer_ - 1;
+            if (since_ != cfg::GAP_MAX) since_ = since_ + 1;
+        }
+        if (overlap) {
+            overlap_st_ = true;
+            if (ovl_cnt_ != cfg::OVL_MAX) ovl_cnt_ = ovl_cnt_ + 1;
+        }
+        if (freq_err) freq_st_ = true;
+
+        // ---- stage A: part-speed generator and tracking window for this call's steps ----
+        bool ps_pulse = false;
+        bool rate_over = false;
+        bool spacing_err = false;
+        if (ps_q_) {
+            rate_over = in.ps_inc > cfg::INC_MAX;
+            const cfg::inc_t inc = rate_over ? cfg::inc_t(cfg::INC_MAX) : in.ps_inc;
+            const uint<cfg::W_INC + 1> sum = uint<cfg::W_INC + 1>(ph_) + inc;
+            ps_pulse = (sum >> cfg::W_INC) != 0;
+            ph_ = sum;  // keeps the low W_INC bits
+            if (ps_pulse) ps_cnt_ = ps_cnt_ + 1;
+            const cfg::prod_t min_spacing = cfg::prod_t(inc) * r.min_period;
+            spacing_err = r.min_period != 0 && thr < min_spacing;
+        }
+        if (rate_over) rate_over_st_ = true;
+        if (spacing_err) spacing_st_ = true;
+
+        bool rev = false;
+        cfg::win_t d[cfg::N_AXES];
+        for (int i = 0; i < cfg::N_AXES; ++i) {
+#pragma HLS UNROLL
+            const bool tracked = !ps_q_ && ((mask_q_ >> i) & 1) != 0;
+            d[i] = tracked ? cfg::win_t(in.step[i]) : cfg::win_t(0);
+            if (d[i] != 0 && trav_[i] != 0 && (d[i] > 0) != (trav_[i] > 0)) rev = true;
+        }
+        bool kclose = false;
+        uint<cfg::W_S> s = 0;
+        cfg::win_t dn[cfg::N_AXES];
+        for (int i = 0; i < cfg::N_AXES; ++i) {
+#pragma HLS UNROLL
+            dn[i] = (rev ? cfg::win_t(0) : trav_[i]) + d[i];
+            const cfg::k_t mag = dn[i] < 0 ? cfg::k_t(-dn[i]) : cfg::k_t(dn[i]);
+            if (mag >= r.win_k) kclose = true;
+            s = s + uint<cfg::W_S>(uint<2 * cfg::W_K>(mag) * mag);
+        }
+        for (int i = 0; i < cfg::N_AXES; ++i) {
+#pragma HLS UNROLL
+            trav_[i] = kclose ? cfg::win_t(0) : dn[i];
+        }
+        a_rev_ = rev;
+        a_kclose_ = kclose;
+        a_s_ = s;
+        a_pulse_ = ps_pulse;
+        bool inw = true;
+        if (r.win_en) {
+            const pos_t wp = r.win_src == 3 ? ps_cnt_ : in.pos[r.win_src.to_uint()];
+            inw = r.win_low <= wp && wp <= r.win_high;
+        }
+        const bool in_win_used = a_inwin_;
+        a_inwin_ = inw;
+
+        o.fire = fire;
+        o.emit = emit;
+        o.in_win = in_win_used;
+        o.dist = (done_ && !fire) ? frozen : cfg::rem_t(fire ? value - thr_v : value);
+        o.overlap = overlap;
+        o.rate_over = rate_over;
+        o.spacing_err = spacing_err;
+        o.freq_err = freq_err;
+        o.ps_pulse = ps_pulse;
+        fill_status(o);
+        return o;
+    }
+
+private:
+    void reset_track() {
+        for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
+        a_rev_ = false;
+        a_kclose_ = false;
+        a_s_ = 0;
+        a_pulse_ = false;
+        a_inwin_ = false;
+        rem_ = 0;
+        part_ = 0;
+        idx_ = 0;
+        done_ = false;
+        timer_ = 0;
+        since_ = cfg::GAP_MAX;
+        ph_ = 0;
+        ps_cnt_ = 0;
+        run_q_ = false;
+        ps_q_ = false;
+        mask_q_ = 0;
+        arr_en_q_ = false;
+        arr_len_q_ = 1;
+        arr_wrap_q_ = false;
+    }
+
+    void fill_status(out_t& o) const {
+        o.pulse = timer_ != 0;
+        o.idx = idx_;
+        o.arr_done = done_;
+        o.fire_cnt = fire_cnt_;
+        o.overlap_cnt = ovl_cnt_;
+        o.overlap_st = overlap_st_;
+        o.rate_over_st = rate_over_st_;
+        o.spacing_st = spacing_st_;
+        o.freq_st = freq_st_;
+        o.ps_count = ps_cnt_;
+    }
+
+    // array RAM and its "entry below the minimum distance" bitmap
+    cfg::dist_t arr_[cfg::ARR_DEPTH];
+    cfg::bad_t arr_bad_;
+    // stage A
+    cfg::win_t trav_[cfg::N_AXES];
+    bool a_rev_, a_kclose_, a_pulse_, a_inwin_;
+    cfg::s_t a_s_;
+    cfg::inc_t ph_;
+    pos_t ps_cnt_;
+    // stage B
+    cfg::rem_t rem_;
+    cfg::chord_t part_;
+    cfg::len_t idx_;
+    bool done_;
+    cfg::pw_t timer_;
+    cfg::gap_t since_;
+    cfg::fcnt_t fire_cnt_;
+    cfg::ovl_t ovl_cnt_;
+    bool overlap_st_, rate_over_st_, spacing_st_, freq_st_;
+    // run state and latched mode registers
+    bool run_q_, ps_q_, arr_en_q_, arr_wrap_q_;
+    cfg::mask_t mask_q_;
+    cfg::len_t arr_len_q_;
+};
+
+}  // namespace lx
+
+#endif  // LASERAX_HLS_PSO_H
