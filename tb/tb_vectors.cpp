@@ -36,7 +36,7 @@ int main(int argc, char** argv) {
     if (!res.check(std::system(cmd.c_str()) == 0, "failed: " + cmd)) return res.finish();
 
     const char* blocks[] = {"input_filter", "quad_decoder", "pulse_multiplier", "output_pacer", "rephase", "dds_sincos",
-                            "laserax_top"};
+                            "laserax_top", "pso", "encoder_counter"};
     for (const char* b : blocks) {
         std::string text, hex, err;
         lxt::vec_table t, th;

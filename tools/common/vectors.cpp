@@ -468,7 +468,7 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
     }
     std::vector<vec_table> tables;
     std::string err;
-    if (!build_vectors(seed, calls, tables, &err)) {
+    if (!build_vectors(seed, calls, tables, &err) || !build_motion_vectors(seed, calls, tables, &err)) {
         std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
         return 1;
     }

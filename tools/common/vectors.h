@@ -37,6 +37,8 @@ bool read_file(const std::string& path, std::string& text, std::string* err);
 // Builds every block's table from one seeded scenario (golden models give the expected columns;
 // the hls models are stepped alongside and must agree, else err is set).
 bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& out, std::string* err);
+// The same for the motion-synchronised blocks (pso, encoder_counter); appends to `out`.
+bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>& out, std::string* err);
 
 // `laserax vectors` (argument parsing included); returns the process exit code.
 int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::string& command);
