@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(0.0, 1.0);
     const double alphas[] = {0.0, 1.2, 7.9, 10.5, 11.5, 23.1};  // invar .. aluminium, ppm/degC
-    const long double axis_nm = 10e6L;                           // 10 m
+    const long double axis_nm = 1e10L;                           // 10 m in nm
     long double worst_nm = 0, worst_bound_nm = 0;
     for (long long i = 0; i < samples; ++i) {
         lxt::comp_inputs in;

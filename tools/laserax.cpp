@@ -16,6 +16,7 @@
 
 #include "tools/common/compensate_cmd.h"
 #include "tools/common/counters_cmd.h"
+#include "tools/common/gantry_cmd.h"
 #include "tools/common/homing.h"
 #include "tools/common/pso_cmd.h"
 #include "tools/common/trace.h"
@@ -27,7 +28,7 @@ const char* kUsage =
     "usage: laserax [run] [options]\n"
     "       laserax vectors [--out DIR] [--seed N] [--calls N]\n"
     "       laserax compensate [--temp-c T] [--pressure-kpa P] [--rh RH] [--material M] ...  (--help)\n"
-    "       laserax pso [options] | laserax counters [options]   (--help for each)\n"
+    "       laserax pso [options] | laserax counters [options] | laserax gantry [options]   (--help for each)\n"
     "run options:\n"
     "  --pitch-um U      sin/cos period in um: 20, 25, 40, 50, 100 (default 20 = 256 counts)\n"
     "  --period P        period in output counts (8..4096, multiple of 8); overrides --pitch-um\n"
@@ -207,6 +208,7 @@ int main(int argc, char** argv) {
     if (cmd == "compensate") return lxt::cmd_compensate(a.v, a.i);
     if (cmd == "pso") return lxt::cmd_pso(a.v, a.i);
     if (cmd == "counters") return lxt::cmd_counters(a.v, a.i);
+    if (cmd == "gantry") return lxt::cmd_gantry(a.v, a.i);
     if (cmd == "help" || cmd == "-h" || cmd == "--help") {
         std::printf("%s", kUsage);
         return 0;
