@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tools/common/compensate_cmd.h"
+#include "tools/common/compensation.h"
 #include "tools/common/counters_cmd.h"
 #include "tools/common/gantry_cmd.h"
 #include "tools/common/homing.h"
@@ -35,6 +36,8 @@ const char* kUsage =
     "  --dir D           homing direction, +1 or -1 (default +1)\n"
     "  --speed MM_S      homing speed in mm/s (default 5)\n"
     "  --air-index N     refractive index of air (default 1.000271)\n"
+    "  --air-temp-c T, --pressure-kpa P, --rh H       air for the Ciddor equation (sets the index)\n"
+    "  --alpha-ppm A, --material-temp-c TM           workpiece expansion folded into the ratio\n"
     "  --ratio R         ratio register, Q5.32 integer (default from the air index)\n"
     "  --seed S          power-up position and fringe phase (default 1)\n"
     "  --cycles N        stop after N clocks (default: when the run is complete)\n"
@@ -87,6 +90,8 @@ int cmd_run(args& a, const std::string& cmdline) {
     lxt::homing_params p;
     std::string out = "out";
     bool every = false, plot = true;
+    lxt::comp_inputs env;
+    bool use_env = false;
     while (a.more()) {
         const std::string o = a.next("");
         if (o == "--pitch-um") {
@@ -101,6 +106,11 @@ int cmd_run(args& a, const std::string& cmdline) {
         else if (o == "--dir") p.dir = static_cast<int>(to_ll(a.next(o), o));
         else if (o == "--speed") p.speed_mm_s = to_double(a.next(o), o);
         else if (o == "--air-index") p.air_index = to_double(a.next(o), o);
+        else if (o == "--air-temp-c") { env.air_temp_c = to_double(a.next(o), o); use_env = true; }
+        else if (o == "--pressure-kpa") { env.pressure_pa = 1000.0 * to_double(a.next(o), o); use_env = true; }
+        else if (o == "--rh") { env.rh_percent = to_double(a.next(o), o); use_env = true; }
+        else if (o == "--alpha-ppm") { env.alpha_ppm_per_c = to_double(a.next(o), o); use_env = true; }
+        else if (o == "--material-temp-c") { env.material_temp_c = to_double(a.next(o), o); use_env = true; }
         else if (o == "--ratio") p.ratio = static_cast<uint64_t>(to_ll(a.next(o), o));
         else if (o == "--seed") p.seed = static_cast<uint64_t>(to_ll(a.next(o), o));
         else if (o == "--cycles") p.max_cycles = to_ll(a.next(o), o);
@@ -125,6 +135,16 @@ int cmd_run(args& a, const std::string& cmdline) {
         std::fprintf(stderr, "laserax: --speed must be in (0, 1000] mm/s\n");
         return 2;
     }
+    lxt::comp_outputs comp;
+    if (use_env) {
+        comp = lxt::compute_compensation(env);
+        if (!comp.ok) {
+            std::fprintf(stderr, "laserax: environment rejected: %s\n", comp.error.c_str());
+            return 2;
+        }
+        p.air_index = comp.n;
+        if (p.ratio == 0) p.ratio = comp.ratio;
+    }
     if (!(p.air_index >= 1.0 && p.air_index < 1.01)) {
         std::fprintf(stderr, "laserax: --air-index must be in [1, 1.01)\n");
         return 2;
@@ -144,6 +164,11 @@ int cmd_run(args& a, const std::string& cmdline) {
                 p.period * count_um, p.dir, p.speed_mm_s, static_cast<unsigned long long>(p.seed));
     std::printf("  raw count %.4f nm (air index %.7f), ratio register %llu (%.9f output counts per raw count)\n",
                 r.lambda_nm, p.air_index, static_cast<unsigned long long>(r.ratio), static_cast<double>(r.ratio) / 4294967296.0);
+    if (use_env)
+        std::printf("  environment: air %.2f degC, %.3f kPa, %.1f %%RH -> n = %.9f (Ciddor), air %+.4f ppm; workpiece "
+                    "alpha %.2f ppm/degC at %.2f degC -> %+.4f ppm; total %+.4f ppm\n",
+                    env.air_temp_c, env.pressure_pa / 1000.0, env.rh_percent, comp.n, comp.air_ppm, env.alpha_ppm_per_c,
+                    env.material_temp_c, comp.expansion_ppm, comp.total_ppm);
     std::printf("  power-up %.1f nm before the switch, %lld clocks simulated (%.3f ms at %.0f MHz)\n",
                 -p.dir * r.start_nm, r.cycles, static_cast<double>(r.cycles) / p.clock_hz * 1e3, p.clock_hz / 1e6);
     std::printf("\n  %-5s %10s %14s %12s %12s %12s %10s\n", "event", "cycle", "true_nm", "real_counts", "real_um",
