@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "tools/common/cli_util.h"
 #include "tools/common/compensate_cmd.h"
 #include "tools/common/compensation.h"
 #include "tools/common/counters_cmd.h"
@@ -46,11 +47,6 @@ const char* kUsage =
     "  --every-clock     trace.csv gets a row for every clock\n"
     "  --no-plot         do not call the plotting script\n";
 
-bool make_dir(const std::string& d) {
-    if (mkdir(d.c_str(), 0755) == 0 || errno == EEXIST) return true;
-    std::fprintf(stderr, "laserax: cannot create %s: %s\n", d.c_str(), std::strerror(errno));
-    return false;
-}
 
 struct args {
     std::vector<std::string> v;
@@ -149,7 +145,7 @@ int cmd_run(args& a, const std::string& cmdline) {
         std::fprintf(stderr, "laserax: --air-index must be in [1, 1.01)\n");
         return 2;
     }
-    if (!make_dir(out)) return 1;
+    if (!lxt::make_dirs(out, "laserax")) return 1;
     lxt::trace_writer tw;
     std::string err;
     if (!tw.open(out, every, p.period, cmdline, &err)) {

@@ -1,6 +1,8 @@
 // compensate_cmd.cpp — `laserax compensate`, see compensate_cmd.h.
 #include "tools/common/compensate_cmd.h"
 
+#include "tools/common/cli_util.h"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -29,15 +31,6 @@ const char* const kCompensateUsage =
 
 namespace {
 
-bool parse_num(const std::string& s, double* v) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x)) return false;
-    *v = x;
-    return true;
-}
 
 void print_index(FILE* out, const char* label, const golden::air_index_result& r, double u95) {
     if (r.ok) std::fprintf(out, "    %-16s n = %.10f   (n - 1 = %.4f ppm, equation U95 %.1e)\n", label, r.n, (r.n - 1.0) * 1e6, u95);
@@ -85,7 +78,7 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
             continue;
         }
         double x = 0;
-        if (!parse_num(v, &x)) {
+        if (!parse_double(v, &x)) {
             std::fprintf(err, "laserax compensate: %s: not a number: '%s'\n", o.c_str(), v.c_str());
             return 2;
         }

@@ -1,6 +1,8 @@
 // counters_cmd.cpp — `laserax counters` and the encoder counter test support, see counters_cmd.h.
 #include "tools/common/counters_cmd.h"
 
+#include "tools/common/cli_util.h"
+
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -81,14 +83,6 @@ const char* const kCountersUsage =
 
 namespace {
 
-bool parse_d(const std::string& s, double* v) {
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x)) return false;
-    *v = x;
-    return true;
-}
 
 }  // namespace
 
@@ -116,7 +110,7 @@ int cmd_counters(const std::vector<std::string>& args, size_t first) {
             continue;
         }
         double x = 0;
-        if (!parse_d(v, &x)) {
+        if (!parse_double(v, &x)) {
             std::fprintf(stderr, "laserax counters: %s: not a number: '%s'\n", o.c_str(), v.c_str());
             return 2;
         }
@@ -137,10 +131,7 @@ int cmd_counters(const std::vector<std::string>& args, size_t first) {
         return 2;
     }
     const long long calls = static_cast<long long>(calls_d);
-    if (mkdir(out.c_str(), 0755) != 0 && errno != EEXIST) {
-        std::fprintf(stderr, "laserax counters: cannot create %s: %s\n", out.c_str(), std::strerror(errno));
-        return 2;
-    }
+    if (!make_dirs(out, "laserax counters")) return 2;
     const std::string trace_path = out + "/counters_trace.csv";
     FILE* tr = std::fopen(trace_path.c_str(), "w");
     if (!tr) {

@@ -1,6 +1,8 @@
 // gantry_cmd.cpp — `laserax gantry`, see gantry_cmd.h.
 #include "tools/common/gantry_cmd.h"
 
+#include "tools/common/cli_util.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -38,29 +40,8 @@ const char* const kGantryUsage =
 
 namespace {
 
-bool parse_int(const std::string& s, long long* v) {
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(s.c_str(), &end, 0);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE) return false;
-    *v = x;
-    return true;
-}
 
-bool parse_double(const std::string& s, double* v) {
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x)) return false;
-    *v = x;
-    return true;
-}
 
-bool make_dir(const std::string& d) {
-    if (mkdir(d.c_str(), 0755) == 0 || errno == EEXIST) return true;
-    std::fprintf(stderr, "laserax gantry: cannot create %s: %s\n", d.c_str(), std::strerror(errno));
-    return false;
-}
 
 // The differences between a run and the golden model ("" if none).
 std::string compare_golden(const lxt::gantry_result& r, const golden::gantry_prediction& g, bool conventional) {
@@ -188,7 +169,7 @@ int cmd_gantry(const std::vector<std::string>& args, size_t first) {
         std::fprintf(stderr, "laserax gantry: %s\n", err.c_str());
         return 2;
     }
-    if (!make_dir(out)) return 1;
+    if (!make_dirs(out)) return 1;
     const int lim = c.skew_limit < 0 ? p : c.skew_limit;
 
     std::printf("laserax gantry: P = %d counts (%.3f um), %s, controller %d units/period, compliance %.3g, arm %s\n", p,

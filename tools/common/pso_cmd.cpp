@@ -1,6 +1,8 @@
 // pso_cmd.cpp — `laserax pso` and the PSO test support, see pso_cmd.h.
 #include "tools/common/pso_cmd.h"
 
+#include "tools/common/cli_util.h"
+
 #include <sys/stat.h>
 
 #include <algorithm>
@@ -271,20 +273,7 @@ const char* const kPsoUsage =
 
 namespace {
 
-bool parse_d(const std::string& s, double* v) {
-    char* end = nullptr;
-    errno = 0;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || errno == ERANGE || !std::isfinite(x)) return false;
-    *v = x;
-    return true;
-}
 
-bool make_dir(const std::string& d) {
-    if (mkdir(d.c_str(), 0755) == 0 || errno == EEXIST) return true;
-    std::fprintf(stderr, "laserax pso: cannot create %s: %s\n", d.c_str(), std::strerror(errno));
-    return false;
-}
 
 }  // namespace
 
@@ -320,14 +309,14 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
         }
         if (o == "--window-um") {
             const size_t c = v.find(':');
-            if (c == std::string::npos || !parse_d(v.substr(0, c), &win_lo) || !parse_d(v.substr(c + 1), &win_hi)) {
+            if (c == std::string::npos || !parse_double(v.substr(0, c), &win_lo) || !parse_double(v.substr(c + 1), &win_hi)) {
                 std::fprintf(stderr, "laserax pso: --window-um needs LO:HI, not '%s'\n", v.c_str());
                 return 2;
             }
             window = true;
             continue;
         }
-        if (!parse_d(v, &x)) {
+        if (!parse_double(v, &x)) {
             std::fprintf(stderr, "laserax pso: %s: not a number: '%s'\n%s", o.c_str(), v.c_str(), kPsoUsage);
             return 2;
         }
@@ -402,7 +391,7 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
     // With part-speed the virtual path length is feed/speed times the real one (same time).
     const double ps_scale = part_speed ? (cpu * 78.125e-6) * (feed / speed) : 1.0;
 
-    if (!make_dir(out)) return 2;
+    if (!make_dirs(out)) return 2;
     const std::string trace_path = out + "/pso_trace.csv", fires_path = out + "/pso_fires.csv";
     FILE* tr = std::fopen(trace_path.c_str(), "w");
     FILE* fr = std::fopen(fires_path.c_str(), "w");

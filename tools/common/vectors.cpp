@@ -1,5 +1,7 @@
 #include "tools/common/vectors.h"
 
+#include "tools/common/cli_util.h"
+
 #include <sys/stat.h>
 
 #include <cerrno>
@@ -455,17 +457,7 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
         std::fprintf(stderr, "laserax vectors: --calls must be 100..1e8\n");
         return 2;
     }
-    // mkdir -p
-    std::string acc;
-    for (size_t i = 0; i <= dir.size(); ++i) {
-        if (i == dir.size() || dir[i] == '/') {
-            if (!acc.empty() && mkdir(acc.c_str(), 0755) != 0 && errno != EEXIST) {
-                std::fprintf(stderr, "laserax vectors: cannot create %s: %s\n", acc.c_str(), std::strerror(errno));
-                return 1;
-            }
-        }
-        if (i < dir.size()) acc += dir[i];
-    }
+    if (!make_dirs(dir, "laserax vectors")) return 1;
     std::vector<vec_table> tables;
     std::string err;
     if (!build_vectors(seed, calls, tables, &err) || !build_motion_vectors(seed, calls, tables, &err)) {
