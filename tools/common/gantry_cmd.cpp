@@ -169,7 +169,7 @@ int cmd_gantry(const std::vector<std::string>& args, size_t first) {
         std::fprintf(stderr, "laserax gantry: %s\n", err.c_str());
         return 2;
     }
-    if (!make_dirs(out)) return 1;
+    if (!make_dirs(out, "laserax gantry")) return 1;
     const int lim = c.skew_limit < 0 ? p : c.skew_limit;
 
     std::printf("laserax gantry: P = %d counts (%.3f um), %s, controller %d units/period, compliance %.3g, arm %s\n", p,

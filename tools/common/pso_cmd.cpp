@@ -391,7 +391,7 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
     // With part-speed the virtual path length is feed/speed times the real one (same time).
     const double ps_scale = part_speed ? (cpu * 78.125e-6) * (feed / speed) : 1.0;
 
-    if (!make_dirs(out)) return 2;
+    if (!make_dirs(out, "laserax pso")) return 2;
     const std::string trace_path = out + "/pso_trace.csv", fires_path = out + "/pso_fires.csv";
     FILE* tr = std::fopen(trace_path.c_str(), "w");
     FILE* fr = std::fopen(fires_path.c_str(), "w");
