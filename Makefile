@@ -1,7 +1,7 @@
 # laserax — top-level entry points. Every target works on a fresh Debian machine: `deps`
 # installs what is missing (as root) or prints the apt command to run.
 #
-#   make deps | build | run [ARGS=...] | test | soak | bench | vectors | plot | clean
+#   make deps | build | run [ARGS=...] | test | soak | bench | vectors | plot | synth | clean
 #
 # Variables: BUILD_DIR (build), ASAN_DIR (build-asan), BUILD_TYPE (Release), JOBS (2),
 #            ARGS (arguments after `laserax run`), ASAN=0 (make test without the sanitizer pass),
@@ -58,8 +58,18 @@ plot: deps
 	@test -f $(OUT)/trace.csv || $(MAKE) --no-print-directory run
 	$(PYTHON) scripts/plot_homing.py $(OUT)/trace.csv $(OUT)/homing.png
 
-# synth: added by a later issue (yosys / nextpnr-ice40 on rtl_ref/, and Vitis HLS through
-# scripts/run_hls.tcl where Vitis is installed).
-
 clean:
 	rm -rf $(BUILD_DIR) $(ASAN_DIR) $(OUT) scripts/__pycache__
+
+# ---- synth: rtl_ref/ through Yosys (generic and synth_ice40) and nextpnr-ice40 ----------------
+# Prints (and writes to $(OUT)/synth/synth_report.md) LUTs, flip-flops, block RAMs and the
+# nextpnr maximum clock frequency of every block and of the top. Not part of `make test`.
+# Variables: SYNTH_DEVICE (hx8k | up5k), SYNTH_FREQ (target MHz, 100), SYNTH_ARGS (more options
+# of scripts/synth_report.py, e.g. --modules rephase,dds_sincos or --no-pnr).
+SYNTH_DEVICE ?= hx8k
+SYNTH_FREQ   ?= 100
+SYNTH_ARGS   ?=
+.PHONY: synth
+synth: build
+	$(PYTHON) scripts/synth_report.py --build $(BUILD_DIR) --out $(OUT)/synth --device $(SYNTH_DEVICE) \
+	    --freq $(SYNTH_FREQ) --jobs $(JOBS) $(SYNTH_ARGS)

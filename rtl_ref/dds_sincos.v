@@ -86,19 +86,21 @@ module dds_sincos #(
     end
 
     // position-in-period counter
+    wire          ostep_pos = !i_ostep[1] && i_ostep[0];   // ostep > 0
+    wire          ostep_neg = i_ostep[1];                  // ostep < 0
     reg [1:0]     q_d;
     reg [W_R-1:0] r_d;
     always @* begin
         q_d = q_q;
         r_d = r_q;
-        if (!i_ostep[1] && i_ostep[0]) begin                       // ostep > 0
+        if (ostep_pos) begin
             if ({1'b0, r_q} == {1'b0, quarter} - {{W_R{1'b0}}, 1'b1}) begin
                 r_d = {W_R{1'b0}};
                 q_d = q_q + 2'd1;
             end else begin
                 r_d = r_q + {{(W_R-1){1'b0}}, 1'b1};
             end
-        end else if (i_ostep[1]) begin                             // ostep < 0
+        end else if (ostep_neg) begin
             if (r_q == {W_R{1'b0}}) begin
                 r_d = quarter - {{(W_R-1){1'b0}}, 1'b1};
                 q_d = q_q - 2'd1;

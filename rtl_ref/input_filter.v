@@ -54,6 +54,7 @@ module input_filter #(
     // need = max(N, 1) and seen = cnt + 1, both W_CNT + 1 bits (no overflow)
     wire [W_CNT:0] need = (i_n == {W_CNT{1'b0}}) ? {{W_CNT{1'b0}}, 1'b1} : {1'b0, i_n};
     wire [W_CNT:0] seen = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
+    wire [W_CNT-1:0] seen_lo = seen[W_CNT-1:0];
 
     always @* begin
         s1_d     = i_pin;
@@ -76,7 +77,7 @@ module input_filter #(
             f_d   = s2_q;
             cnt_d = {W_CNT{1'b0}};
         end else begin
-            cnt_d = seen[W_CNT-1:0];     // seen < need <= 2^W_CNT - 1: fits
+            cnt_d = seen_lo;             // seen < need <= 2^W_CNT - 1: fits
         end
     end
 

@@ -14,13 +14,14 @@
 // the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
 //
 // Safe state: while the configuration check fails, and in the call in which a new period value
-// first appears (the previous-period register powers up, and resets, at 256), every block is
+// first appears after a running call (period_q != period with run_q = 1; coming out of power-up
+// or of an invalid configuration the blocks are already reset, so no extra call), every block is
 // reset at the edge (the C++ axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz =
 // ref_mark = 0, stage 1. The table write port works in every call, before the table read of the
 // same call (hls: dds_.write() precedes dds_.step()).
 //
 // i_rst (synchronous, active high) is the power-up state of the C++ object: every block reset,
-// previous period = 256, cfg_err = 0. The table RAM is not affected by any reset.
+// period_q = 0, run_q = 0, cfg_err = 0. The table RAM is not affected by any reset.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -91,8 +92,7 @@ module laserax_top #(
     output wire               o_rep_mark
 );
 
-    // ---- fixed values (hls: axis_widths, axis_core_cfg) --------------------------------------
-    localparam [12:0] PERIOD_DEFAULT = 13'd256;   // reset value of the period register
+    // ---- fixed values (hls: axis_widths) -------------------------------------------------------
     localparam [12:0] P_MIN          = 13'd8;
     localparam [12:0] P_MAX          = 13'd4096;
     localparam [4:0]  W_DAC_MIN      = 5'd12;
@@ -113,19 +113,22 @@ module laserax_top #(
     wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && i_ratio != 37'd0 &&
                             i_pace_m >= 16'd2 && i_tbl_period == i_period;
 
-    // a period change is a reconfiguration: one call in the safe state
-    reg  [12:0] period_q;
-    wire        period_changed = i_period != period_q;
+    // a period change between two running calls is a reconfiguration: one call in the safe state
+    reg  [12:0] period_q;                             // period register of the previous call
+    reg         run_q;                                // the previous call ran (not safe state)
+    wire        period_changed = run_q && i_period != period_q;
     wire        safe      = !cfg_ok || period_changed;
     wire        blk_rst   = i_rst || safe;            // every block held in reset
 
     reg         cfg_err_q;
     always @(posedge i_clk) begin
         if (i_rst) begin
-            period_q  <= PERIOD_DEFAULT;
+            period_q  <= 13'd0;
+            run_q     <= 1'b0;
             cfg_err_q <= 1'b0;
         end else begin
             period_q  <= i_period;
+            run_q     <= !safe;
             cfg_err_q <= safe;
         end
     end

@@ -135,7 +135,7 @@ module quad_decoder (
         if (ovs_d) ovs_st_d = 1'b1;
         if (fa_glitch_d || fb_glitch_d) glitch_st_d = 1'b1;
         if (lerr_d) lerr_alarm_d = 1'b1;
-        raw_d = raw_q + {{(W_RAW-2){step_d[1]}}, step_d};
+        raw_d = raw_q + step_d;                  // both signed: step sign-extended
     end
 
     always @(posedge i_clk) begin

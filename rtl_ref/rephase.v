@@ -96,19 +96,29 @@ module rephase (
         end
     endfunction
 
-    // combinational temporaries
-    wire [W_PH-1:0]        p8     = i_period[W_P-1:3];                        // P/8
-    wire [W_PH-1:0]        p_last = i_period[W_PH-1:0] - {{(W_PH-1){1'b0}}, 1'b1};  // P-1
-    wire signed [W_POS-1:0] pstep_x = {{(W_POS-2){i_pstep[1]}}, i_pstep};
+    // combinational temporaries (part selects and extensions outside the always block)
+    wire [W_PH-1:0]         p8       = i_period[W_P-1:3];                           // P/8
+    wire [W_PH-1:0]         period_ph = i_period[W_PH-1:0];                         // P mod 2^12
+    wire [W_PH-1:0]         p_last   = period_ph - {{(W_PH-1){1'b0}}, 1'b1};      // P-1
     wire signed [W_POS-1:0] period_x = $signed({{(W_POS-W_P){1'b0}}, i_period});
     wire signed [W_POS-1:0] mark_len_x = $signed({{(W_POS-W_P){1'b0}}, i_mark_len});
-    wire signed [W_POS-1:0] p4_x = $signed({{(W_POS-W_PH-1){1'b0}}, p8, 1'b0});   // 2 * P/8
-    wire                   rise   = i_sw && !sw_prev_q && sw_seen_q;
+    wire signed [W_POS-1:0] p4_x     = $signed({{(W_POS-W_PH-1){1'b0}}, p8, 1'b0}); // 2 * P/8
+    wire signed [W_DD-1:0]  period_dd = $signed({{(W_DD-W_P){1'b0}}, i_period});
+    wire signed [W_DD-1:0]  p8_dd    = $signed({{(W_DD-W_PH){1'b0}}, p8});
+    wire signed [W_TR-1:0]  period_tr = $signed({{(W_TR-W_P){1'b0}}, i_period});
+    wire [W_SUM-1:0]        period_sum = {{(W_SUM-W_P){1'b0}}, i_period};
+    wire [W_SUM-1:0]        num_sum  = {{(W_SUM-W_PH){1'b0}}, num_q};
+    wire [W_SUM-1:0]        d_sum    = {{(W_SUM-W_PH){1'b0}}, d_q};
+    wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
+    wire                    pstep_nz = i_pstep != 2'sd0;
+    wire                    pstep_fwd = !i_pstep[1];    // pstep > 0 when pstep != 0
 
-    reg signed [W_DD-1:0]  dd;
-    reg signed [1:0]       s, dq, dadj;
-    reg [W_SUM-1:0]        sum;
-    reg signed [W_POS-1:0] lo, hi;
+    reg [W_PH-1:0]          ph_a;       // phase after the real count
+    reg signed [W_DD-1:0]   ph_dd;      // ph_a extended for the d computation
+    reg signed [W_DD-1:0]   dd;
+    reg signed [1:0]        s, dq, dadj;
+    reg [W_SUM-1:0]         sum;
+    reg signed [W_POS-1:0]  lo, hi;
 
     always @* begin
         stage_d    = stage_q;
@@ -131,14 +141,16 @@ module rephase (
         sum        = {W_SUM{1'b0}};
 
         // 1. real position and phase of the target output position
-        paced_d    = paced_q + pstep_x;
-        fwd_last_d = (i_pstep != 2'sd0) ? !i_pstep[1] : fwd_last_q;
-        ph_d       = ph_step(ph_q, i_pstep, p_last);
+        paced_d    = paced_q + i_pstep;                        // signed: pstep sign-extended
+        fwd_last_d = pstep_nz ? pstep_fwd : fwd_last_q;
+        ph_a       = ph_step(ph_q, i_pstep, p_last);
+        ph_d       = ph_a;
+        ph_dd      = {{(W_DD-W_PH){1'b0}}, ph_a};
 
         // 2. stage machine
         if ((i_unhome || i_rehome) && stage_q != 2'd1) begin
             stage_d = 2'd1;
-            adj0_d  = adj_tgt_q;                        // freeze: no phase jump
+            adj0_d  = adj_tgt_q;                               // freeze: no phase jump
         end else if (stage_q == 2'd1) begin
             if (rise && !i_unhome) begin
                 stage_d = 2'd2;
@@ -149,41 +161,42 @@ module rephase (
                 q_d     = {W_P{1'b0}};
                 // d = (7P/8 - ph_A) mod P forward, (ph_A - 3P/8) mod P backward
                 if (fwd_last_d)
-                    dd = $signed({2'b00, i_period}) - $signed({{(W_DD-W_PH){1'b0}}, p8})
-                         - $signed({{(W_DD-W_PH){1'b0}}, ph_d});
+                    dd = period_dd - p8_dd - ph_dd;
                 else
-                    dd = $signed({{(W_DD-W_PH){1'b0}}, ph_d})
-                         - $signed({{(W_DD-W_PH){1'b0}}, p8}) * 3;
-                d_d = dd[W_DD-1] ? (dd[W_PH-1:0] + i_period[W_PH-1:0]) : dd[W_PH-1:0];
+                    dd = ph_dd - p8_dd * 3;
+                if (dd < 0)
+                    d_d = dd + period_dd;                      // truncated to W_PH bits
+                else
+                    d_d = dd;
             end
         end else if (stage_q == 2'd2) begin
-            s = fwd_q ? i_pstep : -i_pstep;             // step in the homing direction
-            if (!s[1] && s[0]) begin
-                sum = {2'b00, num_q} + {2'b00, d_q};
-                if (sum >= {1'b0, i_period}) begin
-                    num_d = sum[W_PH-1:0] - i_period[W_PH-1:0];
+            s = fwd_q ? i_pstep : -i_pstep;                    // step in the homing direction
+            if (s > 0) begin
+                sum = num_sum + d_sum;
+                if (sum >= period_sum) begin
+                    num_d = sum - period_sum;                  // truncated to W_PH bits
                     dq    = 2'sd1;
                 end else begin
-                    num_d = sum[W_PH-1:0];
+                    num_d = sum;
                 end
-            end else if (s[1] && tr_q > 0) begin
+            end else if (s < 0 && tr_q > 0) begin
                 if (num_q < d_q) begin
-                    num_d = num_q + i_period[W_PH-1:0] - d_q;
+                    num_d = num_q + period_ph - d_q;
                     dq    = -2'sd1;
                 end else begin
                     num_d = num_q - d_q;
                 end
             end
-            tr_d = tr_q + {{(W_TR-2){s[1]}}, s};
-            q_d  = q_q + {{(W_P-2){dq[1]}}, dq};
+            tr_d = tr_q + s;                                   // signed: s sign-extended
+            q_d  = $signed(q_q) + dq;                          // modulo 2^W_P
             if (tr_d < 0) begin
-                stage_d = 2'd1;                         // back past A: adjustment already 0
+                stage_d = 2'd1;                                // back past A: adjustment is 0
                 tr_d    = {W_TR{1'b0}};
             end else begin
                 dadj      = fwd_q ? dq : -dq;
-                adj_tgt_d = adj_tgt_q + {{(W_POS-2){dadj[1]}}, dadj};
-                ph_d      = ph_step(ph_d, dadj, p_last);
-                if (tr_d == $signed({1'b0, i_period})) begin
+                adj_tgt_d = adj_tgt_q + dadj;
+                ph_d      = ph_step(ph_a, dadj, p_last);
+                if (tr_d == period_tr) begin
                     stage_d = 2'd3;
                     adj0_d  = adj_tgt_d;
                     b_d     = fwd_q ? a_q + period_x : a_q - period_x;
@@ -197,10 +210,10 @@ module rephase (
 
         // 3. output step: the real count, or else the pending extra count
         ostep_d = i_pstep;
-        if (i_pstep == 2'sd0) begin
+        if (!pstep_nz) begin
             if (adj_tgt_d > adj_q) ostep_d = 2'sd1;
             if (adj_tgt_d < adj_q) ostep_d = -2'sd1;
-            adj_d = adj_q + {{(W_POS-2){ostep_d[1]}}, ostep_d};
+            adj_d = adj_q + ostep_d;
         end
 
         // 4. reference mark: a pure function of real position once homed

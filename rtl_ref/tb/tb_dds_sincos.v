@@ -1,4 +1,4 @@
-// tb_dds_sincos.v — golden-vector testbench of rtl_ref/dds_sincos.v.
+// tb_dds_sincos.v — vector testbench of rtl_ref/dds_sincos.v.
 //
 // DUT: dds_sincos (table RAM at its power-up contents, P = 256, amp = 32767; write port idle).
 // Reads dds_sincos.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

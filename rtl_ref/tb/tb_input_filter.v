@@ -1,4 +1,4 @@
-// tb_input_filter.v — golden-vector testbench of rtl_ref/input_filter.v.
+// tb_input_filter.v — vector testbench of rtl_ref/input_filter.v.
 //
 // DUT: input_filter #(.W_CNT(8)) (the A-pin glitch filter of the chain).
 // Reads input_filter.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

@@ -1,4 +1,4 @@
-// tb_laserax_top.v — golden-vector testbench of rtl_ref/laserax_top.v.
+// tb_laserax_top.v — vector testbench of rtl_ref/laserax_top.v.
 //
 // DUT: laserax_top (whole chain; the table write port is idle, as in the vectors).
 // Reads laserax_top.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

@@ -1,4 +1,4 @@
-// tb_output_pacer.v — golden-vector testbench of rtl_ref/output_pacer.v.
+// tb_output_pacer.v — vector testbench of rtl_ref/output_pacer.v.
 //
 // DUT: output_pacer.
 // Reads output_pacer.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

@@ -1,4 +1,4 @@
-// tb_pulse_multiplier.v — golden-vector testbench of rtl_ref/pulse_multiplier.v.
+// tb_pulse_multiplier.v — vector testbench of rtl_ref/pulse_multiplier.v.
 //
 // DUT: pulse_multiplier.
 // Reads pulse_multiplier.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

@@ -1,4 +1,4 @@
-// tb_quad_decoder.v — golden-vector testbench of rtl_ref/quad_decoder.v.
+// tb_quad_decoder.v — vector testbench of rtl_ref/quad_decoder.v.
 //
 // DUT: quad_decoder.
 // Reads quad_decoder.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

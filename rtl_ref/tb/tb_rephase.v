@@ -1,4 +1,4 @@
-// tb_rephase.v — golden-vector testbench of rtl_ref/rephase.v.
+// tb_rephase.v — vector testbench of rtl_ref/rephase.v.
 //
 // DUT: rephase.
 // Reads rephase.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies

@@ -1,0 +1,516 @@
+// stress_vectors.cpp — extra vector files for the rtl_ref/ testbenches, expected values from the
+// bit-true hls/ models (which tb/ checks against golden/ elsewhere).
+//
+// `laserax vectors` covers the scenario of docs/VECTORS.md. These files add what that scenario
+// never does, so that the RTL is compared with the C++ model there too:
+//   laserax_top_stress      period changes (the safe-state call of the period-change rule) with the
+//                           table reloaded through the write port while the chain runs, stray table
+//                           writes that the DDS reads in the same call (write-first), every period
+//                           preset up to P = 4096 (the 1024-word quarter), amplitude / dac_width
+//                           changes, invalid-configuration windows of every kind, frequent clears and
+//                           rehomes, laser-error bursts, register changes of every field, and more
+//                           output taps (step, delta, backlog, pstep, ostep, adj, a/b/c/z, rep_mark);
+//   input_filter_stress     random filter lengths 0..8 and pulse widths;
+//   quad_decoder_stress     random glitch_n / min_spacing, clears during laser error, illegal steps;
+//   pulse_multiplier_stress preset rows (N near +-2^31, so the 32-bit raw counter wraps) and large
+//                           ratio changes;
+//   output_pacer_stress     large deltas, every M including 0 and 1, clears while over threshold;
+//   rephase_stress          random homing, reversals inside the window, rehome/unhome, periods and
+//                           mark lengths;
+//   dds_sincos_stress       table writes while running, every period preset up to 4096, amplitudes.
+// The column layout of input_filter, quad_decoder, output_pacer and rephase is that of the standard
+// files (same testbench); pulse_multiplier gains `preset, preset_n` (a row with preset = 1 first
+// loads N = preset_n and R = ratio, as pulse_multiplier::preset(), then steps), dds_sincos and
+// laserax_top gain the table port `tbl_we, tbl_addr, tbl_data`.
+//
+// Usage: rtl_stress_vectors --out DIR [--seed N] [--calls N]   writes DIR/<block>_stress.hex
+#include <sys/stat.h>
+
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "hls/axis_core.h"
+#include "tools/common/dds_table.h"
+#include "tools/common/vectors.h"
+
+namespace {
+
+using lxt::vec_column;
+using lxt::vec_table;
+using W = lx::axis_widths;
+
+vec_column in(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, true}; }
+vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, false}; }
+
+int64_t i64(bool b) { return b ? 1 : 0; }
+
+struct rng_t {
+    std::mt19937_64 g;
+    explicit rng_t(uint64_t seed) : g(seed) {}
+    uint64_t u() { return g(); }
+    // uniform in [lo, hi]
+    int64_t range(int64_t lo, int64_t hi) {
+        return lo + static_cast<int64_t>(g() % static_cast<uint64_t>(hi - lo + 1));
+    }
+    bool chance(uint64_t one_in) { return g() % one_in == 0; }
+};
+
+const int kPresets[] = {256, 320, 512, 640, 1280, 4096, 8, 64, 1024};
+
+// ---- laserax_top ----------------------------------------------------------------------------
+
+vec_table top_stress(rng_t& r, long long calls) {
+    vec_table t{"laserax_top_stress", {}, {}};
+    t.cols = {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
+              in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
+              in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
+              in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
+              in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
+              out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
+              out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
+              out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
+              out("glitch_st", 1), out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
+              out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
+              out("step", 2, true), out("delta", W::W_DELTA, true), out("backlog", W::W_BACKLOG, true),
+              out("pstep", 2, true), out("ostep", 2, true), out("adj", W::W_POS, true),
+              out("a_pos", W::W_POS, true), out("b_pos", W::W_POS, true), out("c_pos", W::W_POS, true),
+              out("z_pos", W::W_POS, true), out("rep_mark", 1)};
+
+    lx::axis_core core;  // power-up: P = 256 table, period register history 256
+    lx::axis_regs g;     // register values the host has written (reset values, then changes)
+    g.glitch_n = 1;
+    g.sw_debounce = 3;
+    g.pace_m = 2;
+    g.backlog_thr = 200;
+    g.min_spacing = 2;
+
+    // host table load in progress (one word per call), then period/amplitude set in one call
+    std::vector<uint32_t> load;
+    size_t load_pos = 0;
+    int load_period = 256, load_amp = 32767;
+    int cur_period = 256;
+
+    int64_t n = 0;  // raw laser count driven on the pins
+    int dir = 1;
+    long long wait = 0, spacing = 40, seg_left = 0;
+    const int64_t sw_pos = 60;
+    int glitch_left = 0, lerr_left = 0, bad_cfg_left = 0;
+    bool cam_low = false;
+    lx::axis_regs saved = g;
+
+    for (long long k = 0; k < calls; ++k) {
+        bool rehome = false, clear = false, we = false;
+        unsigned addr = 0, data = 0;
+
+        // --- host activity ---
+        const bool loading = load_pos < load.size();
+        if (loading) {
+            we = true;
+            addr = static_cast<unsigned>(load_pos);
+            data = load[load_pos];
+            if (++load_pos == load.size()) {
+                // table loaded: period, tbl_period, amplitude, mark_len, dac_width in this call
+                g.period = static_cast<unsigned>(load_period);
+                g.tbl_period = static_cast<unsigned>(load_period);
+                g.amplitude = static_cast<unsigned>(load_amp);
+                g.mark_len = static_cast<unsigned>(r.range(load_period / 4, load_period));
+                if (load_amp > 32767) g.dac_width = 18;
+                else if (load_amp > 2047) g.dac_width = static_cast<unsigned>(r.range(16, 18));
+                else g.dac_width = static_cast<unsigned>(r.range(12, 18));
+                cur_period = load_period;
+            }
+        } else if (bad_cfg_left == 0 && r.chance(9000)) {
+            // a new period and/or amplitude: the table is written while the chain runs
+            load_period = kPresets[r.range(0, static_cast<int64_t>(sizeof kPresets / sizeof kPresets[0]) - 1)];
+            load_amp = r.chance(3) ? static_cast<int>(r.range(1, 131071)) : 32767;
+            load = lxt::dds_table(load_period, load_amp);
+            load_pos = 0;
+        } else if (r.chance(1200)) {
+            // stray write: the DDS may read this word in this very call (write-first)
+            we = true;
+            addr = static_cast<unsigned>(r.range(0, cur_period / 4 - 1));
+            data = static_cast<unsigned>(r.u() & 0x1ffff);
+        } else if (bad_cfg_left == 0 && r.chance(4000)) {
+            // repair the table: rewrite it for the current period and amplitude
+            load_period = cur_period;
+            load_amp = static_cast<int>(g.amplitude.to_uint());
+            load = lxt::dds_table(load_period, load_amp);
+            load_pos = 0;
+        }
+        if (!loading && bad_cfg_left == 0 && r.chance(4000)) {
+            saved = g;
+            bad_cfg_left = static_cast<int>(r.range(1, 40));
+            switch (r.range(0, 8)) {
+                case 0: g.dac_width = static_cast<unsigned>(r.chance(2) ? 11 : 19); break;
+                case 1: g.amplitude = (1u << (g.dac_width.to_uint() - 1)); break;
+                case 2: g.amplitude = 0; break;
+                case 3: g.pace_m = static_cast<unsigned>(r.range(0, 1)); break;
+                case 4: g.ratio = 0; break;
+                case 5: g.mark_len = g.period.to_uint() / 4 - 1; break;
+                case 6: g.mark_len = g.period.to_uint() + 1; break;
+                case 7: g.tbl_period = g.period.to_uint() + 8; break;
+                default: g.period = static_cast<unsigned>(r.chance(2) ? 4104 : 260); break;  // and a change
+            }
+        } else if (bad_cfg_left > 0 && --bad_cfg_left == 0) {
+            g = saved;  // back to the valid set (a period window also changes the period back)
+        }
+        if (bad_cfg_left == 0 && !loading) {
+            if (r.chance(3000)) g.glitch_n = static_cast<unsigned>(r.range(0, 3));
+            if (r.chance(3000)) g.sw_debounce = static_cast<unsigned>(r.range(0, 12));
+            if (r.chance(3000)) g.min_spacing = static_cast<unsigned>(r.range(0, 5));
+            if (r.chance(3000)) g.pace_m = static_cast<unsigned>(r.range(2, 4));
+            if (r.chance(3000)) g.backlog_thr = static_cast<unsigned>(r.range(5, 400));
+            if (r.chance(5000)) {
+                const uint64_t base = lx::axis_core_cfg::RATIO_DEFAULT;
+                g.ratio = base - base / 20 + r.u() % (base / 10);  // +-5 %
+            }
+            if (r.chance(6000)) g.mark_len = static_cast<unsigned>(r.range(g.period.to_uint() / 4, g.period.to_uint()));
+        }
+        if (r.chance(700)) clear = true;
+        if (r.chance(15000)) rehome = true;
+        lx::axis_regs regs = g;
+        regs.rehome = rehome;
+        regs.clear = clear;
+        regs.tbl_we = we;
+        regs.tbl_addr = addr;
+        regs.tbl_data = data;
+
+        // --- motion on the pins ---
+        if (seg_left-- <= 0) {
+            // raw counts are ~8 output counts each and the pacer emits one per pace_m calls, so
+            // most segments are slow; a few are fast (backlog and edge-spacing alarms)
+            seg_left = r.range(300, 6000);
+            dir = r.chance(2) ? 1 : -1;
+            spacing = r.range(20, 60);
+            if (r.chance(10)) {
+                spacing = r.range(1, 3);
+                seg_left = r.range(50, 400);
+            }
+            if (r.chance(6)) spacing = 1000000;  // stand still
+            if (wait > spacing) wait = spacing;
+        }
+        {
+            // stay within reach of the switch (enough to home at the current period)
+            const int64_t reach = 40 + 2 * cur_period / 8;
+            if (n > sw_pos + reach) dir = -1;
+            if (n < sw_pos - reach) dir = 1;
+        }
+        if (wait-- <= 0) {
+            n += dir;
+            wait = spacing;
+        }
+        if (r.chance(5000)) n += 2;  // illegal transition
+        bool a = false, b = false;
+        {
+            const int i = static_cast<int>(((n % 4) + 4) % 4);
+            a = i == 1 || i == 2;
+            b = i == 2 || i == 3;
+        }
+        if (glitch_left == 0 && r.chance(400)) glitch_left = static_cast<int>(r.range(1, 3));
+        if (glitch_left > 0) {
+            if (r.chance(2)) a = !a; else b = !b;
+            --glitch_left;
+        }
+        if (lerr_left == 0 && r.chance(15000)) lerr_left = static_cast<int>(r.range(1, 60));
+        const bool lerr = lerr_left > 0;
+        if (lerr_left > 0) --lerr_left;
+        if (r.chance(15000)) cam_low = !cam_low;  // the switch closes below the cam: homing backwards
+        bool sw = cam_low ? n <= sw_pos : n >= sw_pos;
+        if (n >= sw_pos - 2 && n <= sw_pos + 2 && r.chance(3)) sw = !sw;  // contact bounce
+
+        lx::axis_pins p;
+        p.a = a;
+        p.b = b;
+        p.sw = sw;
+        p.lerr = lerr;
+        const lx::axis_out o = core.step(p, regs);
+        t.rows.push_back({i64(a), i64(b), i64(sw), i64(lerr), static_cast<int64_t>(regs.period.to_uint64()),
+                          static_cast<int64_t>(regs.ratio.to_uint64()), static_cast<int64_t>(regs.glitch_n.to_uint64()),
+                          static_cast<int64_t>(regs.sw_debounce.to_uint64()),
+                          static_cast<int64_t>(regs.min_spacing.to_uint64()), static_cast<int64_t>(regs.pace_m.to_uint64()),
+                          static_cast<int64_t>(regs.backlog_thr.to_uint64()), static_cast<int64_t>(regs.mark_len.to_uint64()),
+                          static_cast<int64_t>(regs.dac_width.to_uint64()), static_cast<int64_t>(regs.amplitude.to_uint64()),
+                          static_cast<int64_t>(regs.tbl_period.to_uint64()), i64(regs.rehome), i64(regs.clear),
+                          i64(regs.tbl_we), static_cast<int64_t>(regs.tbl_addr.to_uint64()),
+                          static_cast<int64_t>(regs.tbl_data.to_uint64()),
+                          o.sin.to_int64(), o.cos.to_int64(), i64(o.ref_mark), i64(o.qa), i64(o.qb), i64(o.qz),
+                          i64(o.cfg_err), static_cast<int64_t>(o.stage.to_uint64()), i64(o.homed), i64(o.lerr_alarm),
+                          i64(o.illegal_st), static_cast<int64_t>(o.err_cnt.to_uint64()), i64(o.ovs_edge_st),
+                          i64(o.ovs_backlog_st), i64(o.glitch_st), i64(o.alarm), o.raw_count.to_int64(),
+                          o.comp_pos.to_int64(), o.paced_pos.to_int64(), o.out_pos.to_int64(),
+                          static_cast<int64_t>(o.d.to_uint64()), o.step.to_int64(), o.delta.to_int64(),
+                          o.backlog.to_int64(), o.pstep.to_int64(), o.ostep.to_int64(), o.adj.to_int64(),
+                          o.a_pos.to_int64(), o.b_pos.to_int64(), o.c_pos.to_int64(), o.z_pos.to_int64(),
+                          i64(o.rep_mark)});
+    }
+    return t;
+}
+
+// ---- blocks ---------------------------------------------------------------------------------
+
+vec_table filter_stress(rng_t& r, long long calls) {
+    vec_table t{"input_filter_stress", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)}, {}};
+    lx::input_filter<8> f;
+    bool pin = false;
+    long long run = 0;
+    unsigned n = 2;
+    for (long long k = 0; k < calls; ++k) {
+        if (run-- <= 0) {
+            pin = !pin;
+            run = r.chance(3) ? r.range(0, 3) : r.range(1, 14);
+        }
+        if (r.chance(800)) n = static_cast<unsigned>(r.chance(10) ? r.range(9, 255) : r.range(0, 8));
+        const lx::input_filter<8>::out_t o = f.step(pin, n);
+        t.rows.push_back({i64(pin), n, i64(o.f), i64(o.valid), i64(o.glitch)});
+    }
+    return t;
+}
+
+vec_table decoder_stress(rng_t& r, long long calls) {
+    vec_table t{"quad_decoder_stress",
+                {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
+                 out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
+                 out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1),
+                 out("glitch_st", 1)},
+                {}};
+    lx::quad_decoder d;
+    int64_t n = 0;
+    int dir = 1;
+    long long wait = 0, spacing = 3;
+    unsigned gn = 1, ms = 3;
+    bool lerr = false;
+    for (long long k = 0; k < calls; ++k) {
+        if (r.chance(500)) dir = -dir;
+        if (r.chance(300)) spacing = r.chance(3) ? 0 : r.range(1, 8);
+        if (wait-- <= 0) {
+            n += dir;
+            wait = spacing;
+        }
+        if (r.chance(700)) n += 2;
+        if (r.chance(900)) gn = static_cast<unsigned>(r.range(0, 4));
+        if (r.chance(900)) ms = static_cast<unsigned>(r.range(0, 9));
+        if (r.chance(400)) lerr = !lerr;
+        const int i = static_cast<int>(((n % 4) + 4) % 4);
+        bool a = i == 1 || i == 2, b = i == 2 || i == 3;
+        if (r.chance(150)) a = !a;
+        if (r.chance(150)) b = !b;
+        const bool clear = r.chance(60);
+        const lx::quad_decoder::out_t o = d.step(a, b, lerr, gn, ms, clear);
+        t.rows.push_back({i64(a), i64(b), i64(lerr), gn, ms, i64(clear), o.step.to_int64(), o.raw_count.to_int64(),
+                          i64(o.illegal), i64(o.ovs), static_cast<int64_t>(o.err_cnt.to_uint64()), i64(o.illegal_st),
+                          i64(o.ovs_st), i64(o.lerr), i64(o.lerr_alarm), i64(o.glitch_st)});
+    }
+    return t;
+}
+
+vec_table multiplier_stress(rng_t& r, long long calls) {
+    vec_table t{"pulse_multiplier_stress",
+                {in("step", 2, true), in("ratio", W::W_RATIO), in("preset", 1), in("preset_n", W::W_RAW, true),
+                 out("comp", W::W_POS, true), out("delta", W::W_DELTA, true)},
+                {}};
+    lx::pulse_multiplier m;
+    uint64_t ratio = lx::axis_core_cfg::RATIO_DEFAULT;
+    int dir = 1;
+    for (long long k = 0; k < calls; ++k) {
+        bool preset = false;
+        int64_t pn = 0;
+        if (r.chance(700)) {
+            preset = true;
+            const int64_t edge = r.chance(2) ? 2147483647LL : -2147483648LL;
+            pn = edge - (edge > 0 ? r.range(0, 40) : -r.range(0, 40));
+            dir = edge > 0 ? 1 : -1;  // run towards the wrap
+            if (r.chance(5)) pn = static_cast<int64_t>(static_cast<int32_t>(r.u()));
+        }
+        if (r.chance(400)) ratio = (r.u() & ((1ULL << 37) - 1));
+        if (r.chance(400)) ratio = lx::axis_core_cfg::RATIO_DEFAULT + (r.u() % 1000000ULL);
+        if (r.chance(200)) dir = -dir;
+        int st = r.chance(3) ? 0 : dir;
+        if (r.chance(50)) st = -st;
+        if (preset) m.preset(lx::raw_t(pn), lx::ratio_t(ratio));
+        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(st), lx::ratio_t(ratio));
+        t.rows.push_back({st, static_cast<int64_t>(ratio), i64(preset), pn, o.comp.to_int64(), o.delta.to_int64()});
+    }
+    return t;
+}
+
+vec_table pacer_stress(rng_t& r, long long calls) {
+    vec_table t{"output_pacer_stress",
+                {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), out("pstep", 2, true),
+                 out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true), out("ovs", 1), out("ovs_st", 1)},
+                {}};
+    lx::output_pacer p;
+    unsigned m = 3;
+    uint64_t thr = 20;
+    for (long long k = 0; k < calls; ++k) {
+        int64_t delta = 0;
+        if (r.chance(4)) delta = r.range(-1, 1);
+        if (r.chance(500)) delta = r.range(-60, 60);
+        if (r.chance(5000)) delta = r.range(-(1LL << 37), (1LL << 37));
+        if (r.chance(700)) m = static_cast<unsigned>(r.chance(8) ? r.range(0, 1) : r.range(2, 7));
+        if (r.chance(700)) thr = static_cast<uint64_t>(r.chance(10) ? static_cast<int64_t>(r.u() & 0xffffffffULL) : r.range(0, 60));
+        const bool clear = r.chance(40);
+        const lx::output_pacer::out_t o = p.step(lx::delta_t(delta), m, static_cast<uint32_t>(thr), clear);
+        t.rows.push_back({delta, m, static_cast<int64_t>(thr), i64(clear), o.pstep.to_int64(), o.paced.to_int64(),
+                          o.backlog.to_int64(), i64(o.ovs), i64(o.ovs_st)});
+    }
+    return t;
+}
+
+vec_table rephase_stress(rng_t& r, long long calls) {
+    vec_table t{"rephase_stress",
+                {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
+                 in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
+                 out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
+                 out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
+                 out("adj", W::W_POS, true), out("homed", 1)},
+                {}};
+    lx::rephase rp;
+    int64_t pos = 0, sw_pos = 40;
+    int dir = 1;
+    long long gap = 0;
+    unsigned period = 64, mark_len = 16;
+    bool sw_valid = false, unhome = false;
+    for (long long k = 0; k < calls; ++k) {
+        if (k > 3) sw_valid = true;
+        if (r.chance(600)) dir = -dir;
+        if (pos > sw_pos + 3 * static_cast<int64_t>(period)) dir = -1;
+        if (pos < sw_pos - 3 * static_cast<int64_t>(period)) dir = 1;
+        int ps = 0;
+        if (gap-- <= 0) {
+            ps = dir;
+            pos += dir;
+            gap = r.range(1, 4);  // real counts >= 2 calls apart, as the pacer guarantees
+        }
+        if (r.chance(4000)) {
+            period = static_cast<unsigned>(kPresets[r.range(0, 8)]);
+            if (period > 1280) period = 1280;  // keep the homing window short enough to finish
+            mark_len = static_cast<unsigned>(r.range(period / 4, period));
+            sw_pos = pos + (r.chance(2) ? 5 : -5);
+        }
+        if (r.chance(3000)) mark_len = static_cast<unsigned>(r.range(period / 4, period));
+        if (r.chance(2500)) unhome = !unhome;
+        if (unhome && r.chance(50)) unhome = false;
+        bool sw = pos >= sw_pos;
+        if (r.chance(700)) sw = !sw;
+        const bool rehome = r.chance(3000);
+        const lx::rephase::out_t o = rp.step(lx::step_t(ps), sw, sw_valid, rehome, unhome, period, mark_len);
+        t.rows.push_back({ps, i64(sw), i64(sw_valid), i64(rehome), i64(unhome), period, mark_len, o.ostep.to_int64(),
+                          o.out_pos.to_int64(), i64(o.mark), static_cast<int64_t>(o.stage.to_uint64()), o.a.to_int64(),
+                          static_cast<int64_t>(o.d.to_uint64()), o.b.to_int64(), o.c.to_int64(), o.z.to_int64(),
+                          o.adj.to_int64(), i64(o.homed)});
+    }
+    return t;
+}
+
+vec_table dds_stress(rng_t& r, long long calls) {
+    vec_table t{"dds_sincos_stress",
+                {in("ostep", 2, true), in("period", W::W_P), in("amplitude", W::W_DAC_MAX), in("tbl_we", 1),
+                 in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL), out("sin", W::W_DAC_MAX, true),
+                 out("cos", W::W_DAC_MAX, true)},
+                {}};
+    lx::dds_sincos d;  // power-up table: P = 256, amp = 32767
+    // periods only grow, so the offset r always stays below the new quarter (no reset here)
+    const int periods[] = {256, 320, 512, 640, 1280, 4096};
+    size_t pi = 0;
+    unsigned period = 256, amp = 32767;
+    std::vector<uint32_t> load;
+    size_t load_pos = 0;
+    unsigned next_amp = amp;
+    int dir = 1;
+    for (long long k = 0; k < calls; ++k) {
+        bool we = false;
+        unsigned addr = 0, data = 0;
+        if (load_pos < load.size()) {
+            we = true;
+            addr = static_cast<unsigned>(load_pos);
+            data = load[load_pos];
+            ++load_pos;
+            if (load_pos == load.size()) {
+                period = static_cast<unsigned>(periods[pi]);
+                amp = next_amp;
+            }
+        } else if (k > 2000 && pi + 1 < sizeof periods / sizeof periods[0] && r.chance(calls / 8)) {
+            ++pi;
+            next_amp = r.chance(2) ? static_cast<unsigned>(r.range(1, 131071)) : 32767u;
+            load = lxt::dds_table(periods[pi], static_cast<int>(next_amp));
+            load_pos = 0;
+        } else if (r.chance(300)) {
+            we = true;  // stray write; may hit the address read in this call
+            addr = static_cast<unsigned>(r.range(0, static_cast<int64_t>(period / 4) - 1));
+            data = static_cast<unsigned>(r.u() & 0x1ffff);
+        }
+        if (r.chance(300)) dir = -dir;
+        const int os = r.chance(3) ? 0 : dir;
+        if (we) d.write(addr, data);
+        const lx::dds_sincos::out_t o = d.step(lx::step_t(os), period, amp);
+        t.rows.push_back({os, period, amp, i64(we), addr, data, o.sin.to_int64(), o.cos.to_int64()});
+    }
+    return t;
+}
+
+bool mkdir_p(const std::string& dir) {
+    std::string acc;
+    for (size_t i = 0; i <= dir.size(); ++i) {
+        if (i == dir.size() || dir[i] == '/') {
+            if (!acc.empty() && mkdir(acc.c_str(), 0755) != 0 && errno != EEXIST) return false;
+        }
+        if (i < dir.size()) acc += dir[i];
+    }
+    return true;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    std::string dir;
+    uint64_t seed = 4;
+    long long calls = 30000;
+    for (int i = 1; i + 1 < argc; i += 2) {
+        const std::string a = argv[i];
+        if (a == "--out") dir = argv[i + 1];
+        else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 0);
+        else if (a == "--calls") calls = std::strtoll(argv[i + 1], nullptr, 0);
+        else {
+            std::fprintf(stderr, "rtl_stress_vectors: unknown option %s\n", a.c_str());
+            return 2;
+        }
+    }
+    if (dir.empty() || argc % 2 == 0 || calls < 1000 || calls > 10000000) {
+        std::fprintf(stderr, "usage: rtl_stress_vectors --out DIR [--seed N] [--calls 1000..1e7]\n");
+        return 2;
+    }
+    if (!mkdir_p(dir)) {
+        std::fprintf(stderr, "rtl_stress_vectors: cannot create %s: %s\n", dir.c_str(), std::strerror(errno));
+        return 1;
+    }
+    const std::string command = "rtl_stress_vectors --out " + dir + " --seed " + std::to_string(seed) +
+                                " --calls " + std::to_string(calls) + " (expected columns from hls/)";
+    rng_t r(seed);
+    std::vector<vec_table> tables;
+    tables.push_back(filter_stress(r, calls));
+    tables.push_back(decoder_stress(r, calls));
+    tables.push_back(multiplier_stress(r, calls));
+    tables.push_back(pacer_stress(r, calls));
+    tables.push_back(rephase_stress(r, calls));
+    tables.push_back(dds_stress(r, calls));
+    tables.push_back(top_stress(r, 3 * calls));
+    for (const vec_table& t : tables) {
+        const std::string path = dir + "/" + t.block + ".hex";
+        std::ofstream f(path);
+        f << lxt::vec_to_hex(t, command);
+        if (!f) {
+            std::fprintf(stderr, "rtl_stress_vectors: cannot write %s\n", path.c_str());
+            return 1;
+        }
+        std::printf("  %-24s %8zu calls, %2zu fields -> %s\n", t.block.c_str(), t.rows.size(), t.cols.size(),
+                    path.c_str());
+    }
+    return 0;
+}

@@ -1,0 +1,283 @@
+// tb_laserax_top_stress.v — vector testbench of rtl_ref/laserax_top.v (stress vectors).
+//
+// DUT: laserax_top, stress vectors: period changes, table writes while running, invalid configurations, taps.
+// Reads laserax_top_stress.hex written by rtl_stress_vectors (rtl_ref/tb/stress_vectors.cpp, expected
+// columns from hls/; format of docs/VECTORS.md) and, for every row, applies
+// the row's inputs before a rising clock edge and compares every output column with the DUT
+// outputs after that edge. Row k is call k after reset: the DUT is held in reset for a few
+// edges, row 0 is applied together with the release of i_rst.
+// Mismatches print `cycle N signal S: expected E got G` (the first 10); the last line is
+// `PASS ...` or `FAIL ...` (scripts/rtl_sim.sh checks it).
+//
+// Plusargs: +vectors=PATH (required)  +rows=N (default: all N_MAX rows)  +vcd=PATH (optional dump)
+// Parameters (iverilog -P): N_MAX = number of rows in the file, TBL_FILE = table RAM image.
+//
+// vector fields (must equal the `// field` lines of the .hex file; scripts/rtl_sim.sh checks):
+//   field a in 1 unsigned
+//   field b in 1 unsigned
+//   field sw in 1 unsigned
+//   field lerr in 1 unsigned
+//   field period in 13 unsigned
+//   field ratio in 37 unsigned
+//   field glitch_n in 8 unsigned
+//   field sw_debounce in 16 unsigned
+//   field min_spacing in 16 unsigned
+//   field pace_m in 16 unsigned
+//   field backlog_thr in 32 unsigned
+//   field mark_len in 13 unsigned
+//   field dac_width in 5 unsigned
+//   field amplitude in 18 unsigned
+//   field tbl_period in 13 unsigned
+//   field rehome in 1 unsigned
+//   field clear in 1 unsigned
+//   field tbl_we in 1 unsigned
+//   field tbl_addr in 10 unsigned
+//   field tbl_data in 17 unsigned
+//   field sin out 18 signed
+//   field cos out 18 signed
+//   field ref_mark out 1 unsigned
+//   field qa out 1 unsigned
+//   field qb out 1 unsigned
+//   field qz out 1 unsigned
+//   field cfg_err out 1 unsigned
+//   field stage out 2 unsigned
+//   field homed out 1 unsigned
+//   field lerr_alarm out 1 unsigned
+//   field illegal_st out 1 unsigned
+//   field err_cnt out 8 unsigned
+//   field ovs_edge_st out 1 unsigned
+//   field ovs_backlog_st out 1 unsigned
+//   field glitch_st out 1 unsigned
+//   field alarm out 1 unsigned
+//   field raw_count out 32 signed
+//   field comp_pos out 38 signed
+//   field paced_pos out 38 signed
+//   field out_pos out 38 signed
+//   field d out 12 unsigned
+//   field step out 2 signed
+//   field delta out 39 signed
+//   field backlog out 40 signed
+//   field pstep out 2 signed
+//   field ostep out 2 signed
+//   field adj out 38 signed
+//   field a_pos out 38 signed
+//   field b_pos out 38 signed
+//   field c_pos out 38 signed
+//   field z_pos out 38 signed
+//   field rep_mark out 1 unsigned
+`timescale 1ns / 1ps
+`default_nettype none
+
+module tb_laserax_top_stress;
+    parameter integer N_MAX = 40000;   // rows in the vector file
+    parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
+    localparam integer ROW_BITS = 824;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam TB_NAME = "tb_laserax_top_stress";
+
+    reg [ROW_BITS-1:0] vec [0:N_MAX-1];
+    reg [ROW_BITS-1:0] row;
+
+    // DUT ports
+    reg i_clk, i_rst;
+    reg  i_a;
+    reg  i_b;
+    reg  i_sw;
+    reg  i_lerr;
+    reg  [12:0] i_period;
+    reg  [36:0] i_ratio;
+    reg  [7:0] i_glitch_n;
+    reg  [15:0] i_sw_debounce;
+    reg  [15:0] i_min_spacing;
+    reg  [15:0] i_pace_m;
+    reg  [31:0] i_backlog_thr;
+    reg  [12:0] i_mark_len;
+    reg  [4:0] i_dac_width;
+    reg  [17:0] i_amplitude;
+    reg  [12:0] i_tbl_period;
+    reg  i_rehome;
+    reg  i_clear;
+    reg  i_tbl_we;
+    reg  [9:0] i_tbl_addr;
+    reg  [16:0] i_tbl_data;
+    wire [17:0] o_sin;
+    wire [17:0] o_cos;
+    wire o_ref_mark;
+    wire o_qa;
+    wire o_qb;
+    wire o_qz;
+    wire o_cfg_err;
+    wire [1:0] o_stage;
+    wire o_homed;
+    wire o_lerr_alarm;
+    wire o_illegal_st;
+    wire [7:0] o_err_cnt;
+    wire o_ovs_edge_st;
+    wire o_ovs_backlog_st;
+    wire o_glitch_st;
+    wire o_alarm;
+    wire [31:0] o_raw_count;
+    wire [37:0] o_comp_pos;
+    wire [37:0] o_paced_pos;
+    wire [37:0] o_out_pos;
+    wire [11:0] o_d;
+    wire [1:0] o_step;
+    wire [38:0] o_delta;
+    wire [39:0] o_backlog;
+    wire [1:0] o_pstep;
+    wire [1:0] o_ostep;
+    wire [37:0] o_adj;
+    wire [37:0] o_a_pos;
+    wire [37:0] o_b_pos;
+    wire [37:0] o_c_pos;
+    wire [37:0] o_z_pos;
+    wire o_rep_mark;
+
+    laserax_top #(.INIT_FILE(TBL_FILE)) dut (
+        .i_clk(i_clk),
+        .i_rst(i_rst),
+        .i_a(i_a),
+        .i_b(i_b),
+        .i_sw(i_sw),
+        .i_lerr(i_lerr),
+        .i_period(i_period),
+        .i_ratio(i_ratio),
+        .i_glitch_n(i_glitch_n),
+        .i_sw_debounce(i_sw_debounce),
+        .i_min_spacing(i_min_spacing),
+        .i_pace_m(i_pace_m),
+        .i_backlog_thr(i_backlog_thr),
+        .i_mark_len(i_mark_len),
+        .i_dac_width(i_dac_width),
+        .i_amplitude(i_amplitude),
+        .i_tbl_period(i_tbl_period),
+        .i_rehome(i_rehome),
+        .i_clear(i_clear),
+        .i_tbl_we(i_tbl_we),
+        .i_tbl_addr(i_tbl_addr),
+        .i_tbl_data(i_tbl_data),
+        .o_sin(o_sin),
+        .o_cos(o_cos),
+        .o_ref_mark(o_ref_mark),
+        .o_qa(o_qa),
+        .o_qb(o_qb),
+        .o_qz(o_qz),
+        .o_cfg_err(o_cfg_err),
+        .o_stage(o_stage),
+        .o_homed(o_homed),
+        .o_lerr_alarm(o_lerr_alarm),
+        .o_illegal_st(o_illegal_st),
+        .o_err_cnt(o_err_cnt),
+        .o_ovs_edge_st(o_ovs_edge_st),
+        .o_ovs_backlog_st(o_ovs_backlog_st),
+        .o_glitch_st(o_glitch_st),
+        .o_alarm(o_alarm),
+        .o_raw_count(o_raw_count),
+        .o_comp_pos(o_comp_pos),
+        .o_paced_pos(o_paced_pos),
+        .o_out_pos(o_out_pos),
+        .o_d(o_d),
+        .o_step(o_step),
+        .o_delta(o_delta),
+        .o_backlog(o_backlog),
+        .o_pstep(o_pstep),
+        .o_ostep(o_ostep),
+        .o_adj(o_adj),
+        .o_a_pos(o_a_pos),
+        .o_b_pos(o_b_pos),
+        .o_c_pos(o_c_pos),
+        .o_z_pos(o_z_pos),
+        .o_rep_mark(o_rep_mark)
+    );
+
+    `include "tb_common.vh"
+
+    task apply_inputs;
+        begin
+            i_a = row[820:820];
+            i_b = row[816:816];
+            i_sw = row[812:812];
+            i_lerr = row[808:808];
+            i_period = row[804:792];
+            i_ratio = row[788:752];
+            i_glitch_n = row[751:744];
+            i_sw_debounce = row[743:728];
+            i_min_spacing = row[727:712];
+            i_pace_m = row[711:696];
+            i_backlog_thr = row[695:664];
+            i_mark_len = row[660:648];
+            i_dac_width = row[644:640];
+            i_amplitude = row[637:620];
+            i_tbl_period = row[616:604];
+            i_rehome = row[600:600];
+            i_clear = row[596:596];
+            i_tbl_we = row[592:592];
+            i_tbl_addr = row[589:580];
+            i_tbl_data = row[576:560];
+        end
+    endtask
+
+    task idle_inputs;
+        begin
+            i_a = 1'd0;
+            i_b = 1'd0;
+            i_sw = 1'd0;
+            i_lerr = 1'd0;
+            i_period = 13'd0;
+            i_ratio = 37'd0;
+            i_glitch_n = 8'd0;
+            i_sw_debounce = 16'd0;
+            i_min_spacing = 16'd0;
+            i_pace_m = 16'd0;
+            i_backlog_thr = 32'd0;
+            i_mark_len = 13'd0;
+            i_dac_width = 5'd0;
+            i_amplitude = 18'd0;
+            i_tbl_period = 13'd0;
+            i_rehome = 1'd0;
+            i_clear = 1'd0;
+            i_tbl_we = 1'd0;
+            i_tbl_addr = 10'd0;
+            i_tbl_data = 17'd0;
+        end
+    endtask
+
+    task check_outputs;
+        begin
+            check("sin", row[557:540], o_sin, 18, 1);
+            check("cos", row[537:520], o_cos, 18, 1);
+            check("ref_mark", row[516:516], o_ref_mark, 1, 0);
+            check("qa", row[512:512], o_qa, 1, 0);
+            check("qb", row[508:508], o_qb, 1, 0);
+            check("qz", row[504:504], o_qz, 1, 0);
+            check("cfg_err", row[500:500], o_cfg_err, 1, 0);
+            check("stage", row[497:496], o_stage, 2, 0);
+            check("homed", row[492:492], o_homed, 1, 0);
+            check("lerr_alarm", row[488:488], o_lerr_alarm, 1, 0);
+            check("illegal_st", row[484:484], o_illegal_st, 1, 0);
+            check("err_cnt", row[483:476], o_err_cnt, 8, 0);
+            check("ovs_edge_st", row[472:472], o_ovs_edge_st, 1, 0);
+            check("ovs_backlog_st", row[468:468], o_ovs_backlog_st, 1, 0);
+            check("glitch_st", row[464:464], o_glitch_st, 1, 0);
+            check("alarm", row[460:460], o_alarm, 1, 0);
+            check("raw_count", row[459:428], o_raw_count, 32, 1);
+            check("comp_pos", row[425:388], o_comp_pos, 38, 1);
+            check("paced_pos", row[385:348], o_paced_pos, 38, 1);
+            check("out_pos", row[345:308], o_out_pos, 38, 1);
+            check("d", row[307:296], o_d, 12, 0);
+            check("step", row[293:292], o_step, 2, 1);
+            check("delta", row[290:252], o_delta, 39, 1);
+            check("backlog", row[251:212], o_backlog, 40, 1);
+            check("pstep", row[209:208], o_pstep, 2, 1);
+            check("ostep", row[205:204], o_ostep, 2, 1);
+            check("adj", row[201:164], o_adj, 38, 1);
+            check("a_pos", row[161:124], o_a_pos, 38, 1);
+            check("b_pos", row[121:84], o_b_pos, 38, 1);
+            check("c_pos", row[81:44], o_c_pos, 38, 1);
+            check("z_pos", row[41:4], o_z_pos, 38, 1);
+            check("rep_mark", row[0:0], o_rep_mark, 1, 0);
+        end
+    endtask
+
+endmodule
+
+`default_nettype wire
