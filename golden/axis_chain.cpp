@@ -1,6 +1,8 @@
 // golden/axis_chain.cpp — see axis_chain.h (DESIGN.md 4.7).
 #include "golden/axis_chain.h"
 
+#include <utility>
+
 namespace golden {
 
 bool config_ok(const axis_regs& r) {
@@ -19,7 +21,10 @@ bool config_ok(const axis_regs& r) {
 void axis_chain::reset() {
     const int64_t keep = last_period_;  // the period memory is not part of the chain's reset
     const bool keep_run = was_running_;
+    error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
     *this = axis_chain{};
+    emap_ = std::move(keep_map);
+    emap_.reset();
     last_period_ = keep;
     was_running_ = keep_run;
 }
@@ -46,7 +51,11 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     const quad_decoder::out dec_o =
         dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
     const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, regs.ratio);
-    const output_pacer::out pac_o = pac_.step(mul_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
+    // error map (docs/ERROR_MAP.md §8): uncorrected comp and homed status of the previous call;
+    // its delta joins the multiplier delta at the pacer input
+    const error_map::out emap_o = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
+    const output_pacer::out pac_o =
+        pac_.step(mul_q_.delta + emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
     const rephase::out rep_o = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
                                          dec_q_.lerr, regs.period, regs.mark_len);
     const dds_sincos::out dds_o = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
@@ -71,7 +80,8 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     o.ovs_edge_st = dec_o.ovs_st;
     o.ovs_backlog_st = pac_o.ovs_st;
     o.glitch_st = dec_o.glitch_st;
-    o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err;
+    o.map_cfg_err = emap_o.cfg_err;
+    o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err || o.map_cfg_err;
 
     o.raw_count = dec_o.raw_count;
     o.step = dec_o.step;
@@ -89,12 +99,15 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     o.z_pos = rep_o.z;
     o.d = rep_o.d;
     o.rep_mark = rep_o.mark;
+    o.corr = emap_o.corr;
+    o.map_delta = emap_o.delta;
 
     // advance the inter-block registers
     swf_q_ = swf_o;
     dec_q_ = dec_o;
     mul_q_ = mul_o;
     pac_q_ = pac_o;
+    emap_q_ = emap_o;
     rep_q2_ = rep_q_;
     rep_q_ = rep_o;
     return o;

@@ -6,7 +6,8 @@
 //   swf.step(sw)                      (switch input_filter, length sw_debounce)
 //   dec.step(a, b, lerr)              (glitch_n, min_spacing, clear of this call)
 //   mul.step(dec_q.step)
-//   pac.step(mul_q.delta)             (pace_m, backlog_thr, clear of this call)
+//   emap.step(mul_q.comp, rep_q.homed) (map registers of this call; docs/ERROR_MAP.md §8)
+//   pac.step(mul_q.delta + emap_q.delta) (pace_m, backlog_thr, clear of this call)
 //   rep.step(pac_q.pstep, swf_q.f, swf_q.valid, rehome of this call, unhome = dec_q.lerr)
 //   dds.step(rep_q.ostep)
 // sin/cos: the DDS outputs of this call; qa, qb (quadrature of out_pos mod 4), qz and ref_mark
@@ -17,6 +18,7 @@
 #include <cstdint>
 
 #include "golden/dds_sincos.h"
+#include "golden/error_map.h"
 #include "golden/input_filter.h"
 #include "golden/output_pacer.h"
 #include "golden/pulse_multiplier.h"
@@ -45,6 +47,7 @@ struct axis_regs {
     int64_t tbl_period = 256;
     bool rehome = false;
     bool clear = false;
+    error_map_regs emap;  // map_en, bank_sel, geometries, table write port; reset: disabled
 };
 
 struct axis_pins {
@@ -68,6 +71,8 @@ struct axis_out {
     int ostep;
     int64_t out_pos, adj, a_pos, b_pos, c_pos, z_pos, d;
     bool rep_mark;
+    bool map_cfg_err;
+    int64_t corr, map_delta;
 };
 
 // DESIGN 4.7: 8 <= P <= 4096, P % 8 == 0, ratio != 0, 2 <= pace_m, 12 <= dac_width <= 18,
@@ -86,11 +91,13 @@ private:
     output_pacer pac_;
     rephase rep_;
     dds_sincos dds_;
+    error_map emap_;  // its tables survive reset(); only the pipeline is reset
     // inter-block registers: outputs of the previous call (zero at reset)
     input_filter::out swf_q_{};
     quad_decoder::out dec_q_{};
     pulse_multiplier::out mul_q_{};
     output_pacer::out pac_q_{};
+    error_map::out emap_q_{};
     rephase::out rep_q_{};   // rephase output of call t-1
     rephase::out rep_q2_{};  // rephase output of call t-2 (qa, qb, qz, ref_mark)
     int64_t last_period_ = 0;    // period register of the previous call

@@ -1,6 +1,6 @@
 // axis_core.h — the single-axis chain: quad_decoder -> pulse_multiplier -> output_pacer ->
-// rephase -> dds_sincos, plus the switch debounce, the configuration check and the digital
-// A/B/Z outputs (DESIGN §4.7, register map §5).
+// rephase -> dds_sincos, with the error_map beside the pacer input, plus the switch debounce,
+// the configuration check and the digital A/B/Z outputs (DESIGN §4.7, register map §5).
 //
 // One call of step() is one clock. Between two blocks there is exactly one register stage: a
 // block consumes the outputs its upstream block returned at the previous call (the *_q members).
@@ -14,6 +14,7 @@
 
 #include "hls/axis_config.h"
 #include "hls/dds_sincos.h"
+#include "hls/error_map.h"
 #include "hls/input_filter.h"
 #include "hls/output_pacer.h"
 #include "hls/pulse_multiplier.h"
@@ -52,6 +53,9 @@ struct axis_regs {
     bool tbl_we = false;
     tbl_addr_t tbl_addr = 0;
     tbl_word_t tbl_data = 0;
+    // position error map (docs/ERROR_MAP.md §8): map_en, bank_sel, the two bank geometries and
+    // the table write port (writes the bank not selected in the call). Reset: map disabled.
+    error_map_regs emap;
 };
 
 struct axis_pins {
@@ -79,7 +83,17 @@ struct axis_out {
     pos_t out_pos, adj, a_pos, b_pos, c_pos, z_pos;
     rephase_cfg::ph_t d;
     bool rep_mark;
+    // error map (docs/ERROR_MAP.md §8)
+    bool map_cfg_err;               // map_en with an invalid geometry of the selected bank
+    error_map_cfg::corr_t corr;     // correction of the comp of call t-2, output counts
+    error_map_cfg::cdelta_t map_delta;  // corr(t) - corr(t-1), added to the pacer input
 };
+
+// The pacer input mul_q_.delta + emap_q_.delta fits delta_t: a multiplier delta is at most one
+// step (< 2^5) plus a re-base |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36, and
+// |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays below 2^37 < 2^(W_DELTA-1) = 2^38
+// (docs/DESIGN.md §4.7).
+static_assert(error_map_cfg::W_CDELTA + 1 < axis_widths::W_DELTA, "pacer input sum must fit delta_t");
 
 // Configuration check (DESIGN §4.7): combinational, every call.
 inline bool axis_config_ok(const axis_regs& r) {
@@ -114,12 +128,14 @@ public:
         pac_.reset();
         rep_.reset();
         dds_.reset();
+        emap_.reset();  // pipeline only, not the table RAM
         swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
         dec_q_ = quad_decoder::out_t{};
         mul_q_ = pulse_multiplier::out_t{};
         pac_q_ = output_pacer::out_t{};
         rep_q_ = rephase::out_t{};
         rep_q2_ = rephase::out_t{};
+        emap_q_ = error_map::out_t{};
     }
 
     dds_sincos& dds() { return dds_; }
@@ -145,7 +161,12 @@ public:
         const quad_decoder::out_t dec =
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
         const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, regs.ratio);
-        const output_pacer::out_t pac = pac_.step(mul_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        // error map: indexed by the uncorrected comp of the previous call, active only while the
+        // rephase of the previous call was homed; its delta joins the multiplier delta at the
+        // pacer input (2 calls of map latency, DESIGN §4.7)
+        const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
+        const delta_t pdelta = delta_t(mul_q_.delta + emap_q_.delta);
+        const output_pacer::out_t pac = pac_.step(pdelta, regs.pace_m, regs.backlog_thr, regs.clear);
         const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
                                              dec_q_.lerr, regs.period, regs.mark_len);
         const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
@@ -164,7 +185,8 @@ public:
         o.ovs_edge_st = dec.ovs_st;
         o.ovs_backlog_st = pac.ovs_st;
         o.glitch_st = dec.glitch_st;
-        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st;
+        o.map_cfg_err = emap.cfg_err;
+        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err;
         o.raw_count = dec.raw_count;
         o.step = dec.step;
         o.comp_pos = mul.comp;
@@ -181,12 +203,15 @@ public:
         o.z_pos = rep.z;
         o.d = rep.d;
         o.rep_mark = rep.mark;
+        o.corr = emap.corr;
+        o.map_delta = emap.delta;
 
         // pipeline registers between blocks
         swf_q_ = swf;
         dec_q_ = dec;
         mul_q_ = mul;
         pac_q_ = pac;
+        emap_q_ = emap;
         rep_q2_ = rep_q_;
         rep_q_ = rep;
         return o;
@@ -199,11 +224,13 @@ private:
     output_pacer pac_;
     rephase rep_;
     dds_sincos dds_;
+    error_map emap_;
     input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf_q_;
     quad_decoder::out_t dec_q_;
     pulse_multiplier::out_t mul_q_;
     output_pacer::out_t pac_q_;
     rephase::out_t rep_q_, rep_q2_;
+    error_map::out_t emap_q_;
     period_t period_q_ = 0;  // period register of the previous call
     bool run_q_ = false;     // the previous call ran with a valid configuration
 };

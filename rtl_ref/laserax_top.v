@@ -1,6 +1,6 @@
 // laserax_top.v — the single-axis chain: quad_decoder -> pulse_multiplier -> output_pacer ->
-// rephase -> dds_sincos, plus the switch debounce, the configuration check and the digital
-// A/B/Z outputs.
+// rephase -> dds_sincos, with the error_map beside the pacer input, plus the switch debounce,
+// the configuration check and the digital A/B/Z outputs.
 //
 // Reference RTL of hls/axis_core.h / hls/laserax_top.cpp (DESIGN §4.7, register map §5). One
 // rising clock edge = one call of axis_core::step(); the outputs after edge t are the axis_out of
@@ -55,6 +55,18 @@ module laserax_top #(
     input  wire               i_tbl_we,
     input  wire [9:0]         i_tbl_addr,
     input  wire [16:0]        i_tbl_data,
+    // error map (docs/ERROR_MAP.md §8); reset values: map disabled
+    input  wire               i_map_en,
+    input  wire               i_bank_sel,       // active bank; the write port writes the other
+    input  wire signed [37:0] i_map_origin0,    // bank 0: position of point 0, comp coordinates
+    input  wire [4:0]         i_map_k0,         // bank 0: spacing 2^k counts, 4..20
+    input  wire [11:0]        i_map_n0,         // bank 0: points, 2..2048
+    input  wire signed [37:0] i_map_origin1,
+    input  wire [4:0]         i_map_k1,
+    input  wire [11:0]        i_map_n1,
+    input  wire               i_map_we,
+    input  wire [10:0]        i_map_addr,
+    input  wire signed [23:0] i_map_data,       // Q15.8 output counts
     // outputs
     output wire signed [17:0] o_sin,
     output wire signed [17:0] o_cos,
@@ -89,7 +101,11 @@ module laserax_top #(
     output wire signed [37:0] o_c_pos,
     output wire signed [37:0] o_z_pos,
     output wire [11:0]        o_d,
-    output wire               o_rep_mark
+    output wire               o_rep_mark,
+    // error map
+    output wire               o_map_cfg_err,
+    output wire signed [16:0] o_corr,
+    output wire signed [17:0] o_map_delta
 );
 
     // ---- fixed values (hls: axis_widths) -------------------------------------------------------
@@ -161,23 +177,43 @@ module laserax_top #(
         .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(i_ratio),
         .o_comp(mul_comp), .o_delta(mul_delta));
 
+    // rephase outputs used by the error map (declared before use)
+    wire signed [1:0]  rep_ostep;
+    wire signed [37:0] rep_out_pos, rep_a, rep_b, rep_c, rep_z, rep_adj;
+    wire               rep_mark, rep_homed;
+    wire [1:0]         rep_stage;
+    wire [11:0]        rep_d;
+
+    // error map: uncorrected comp and rephase homed status of the previous call (the blocks'
+    // output registers); 2 calls of latency
+    wire signed [16:0] map_corr;
+    wire signed [17:0] map_delta;
+    wire               map_active, map_in_range, map_clamped, map_cfg_err;
+    error_map u_map (
+        .i_clk(i_clk), .i_rst(blk_rst), .i_p(mul_comp), .i_homed(rep_homed),
+        .i_map_en(i_map_en), .i_bank_sel(i_bank_sel),
+        .i_origin0(i_map_origin0), .i_k0(i_map_k0), .i_n0(i_map_n0),
+        .i_origin1(i_map_origin1), .i_k1(i_map_k1), .i_n1(i_map_n1),
+        .i_we(i_map_we), .i_addr(i_map_addr), .i_data(i_map_data),
+        .o_corr(map_corr), .o_delta(map_delta), .o_active(map_active), .o_in_range(map_in_range),
+        .o_clamped(map_clamped), .o_cfg_err(map_cfg_err));
+
+    // pacer input: multiplier delta + map delta of the previous call (fits 39 bits: |mul delta|
+    // <= 32, |map delta| < 2^17)
+    wire signed [38:0] pac_delta = mul_delta + {{21{map_delta[17]}}, map_delta};
+
     // pacer: consumes the multiplier delta of the previous call
     wire signed [1:0]  pac_pstep;
     wire signed [37:0] pac_paced;
     wire signed [39:0] pac_backlog;
     wire               pac_ovs, pac_ovs_st;
     output_pacer u_pac (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(mul_delta), .i_pace_m(i_pace_m),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(pac_delta), .i_pace_m(i_pace_m),
         .i_thr(i_backlog_thr), .i_clear(i_clear),
         .o_pstep(pac_pstep), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
         .o_ovs_st(pac_ovs_st));
 
     // rephase: pacer step, debounced switch and laser error of the previous call
-    wire signed [1:0]  rep_ostep;
-    wire signed [37:0] rep_out_pos, rep_a, rep_b, rep_c, rep_z, rep_adj;
-    wire               rep_mark, rep_homed;
-    wire [1:0]         rep_stage;
-    wire [11:0]        rep_d;
     rephase u_rep (
         .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_sw(swf_f), .i_sw_valid(swf_valid),
         .i_rehome(i_rehome), .i_unhome(dec_lerr), .i_period(i_period), .i_mark_len(i_mark_len),
@@ -227,7 +263,9 @@ module laserax_top #(
     assign o_ovs_edge_st    = dec_ovs_st;
     assign o_ovs_backlog_st = pac_ovs_st;
     assign o_glitch_st      = dec_glitch_st;
-    assign o_alarm          = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st;
+    assign o_alarm          = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st ||
+                              map_cfg_err;
+    assign o_map_cfg_err    = map_cfg_err;
 
     // ---- taps --------------------------------------------------------------------------------
     assign o_raw_count = dec_raw;
@@ -246,6 +284,8 @@ module laserax_top #(
     assign o_z_pos     = rep_z;
     assign o_d         = rep_d;
     assign o_rep_mark  = rep_mark;
+    assign o_corr      = map_corr;
+    assign o_map_delta = map_delta;
 
 endmodule
 

@@ -144,7 +144,7 @@ mkdir -p "$work"
     die "lutgen failed"
 sources=("$ROOT"/rtl_ref/input_filter.v "$ROOT"/rtl_ref/quad_decoder.v "$ROOT"/rtl_ref/pulse_multiplier.v
          "$ROOT"/rtl_ref/output_pacer.v "$ROOT"/rtl_ref/rephase.v "$ROOT"/rtl_ref/dds_sincos.v
-         "$ROOT"/rtl_ref/laserax_top.v)
+         "$ROOT"/rtl_ref/error_map.v "$ROOT"/rtl_ref/laserax_top.v)
 
 fails=0
 for m in "${MODULES[@]}"; do

@@ -9,7 +9,10 @@
 //                           preset up to P = 4096 (the 1024-word quarter), amplitude / dac_width
 //                           changes, invalid-configuration windows of every kind, frequent clears and
 //                           rehomes, laser-error bursts, register changes of every field, and more
-//                           output taps (step, delta, backlog, pstep, ostep, adj, a/b/c/z, rep_mark);
+//                           output taps (step, delta, backlog, pstep, ostep, adj, a/b/c/z, rep_mark),
+//                           and the error map (docs/ERROR_MAP.md §8): table words written into the
+//                           inactive bank, bank flips, enables, new and invalid geometries, extreme
+//                           table values (corr, map_delta, map_cfg_err);
 //   input_filter_stress     random filter lengths 0..8 and pulse widths;
 //   quad_decoder_stress     random glitch_n / min_spacing, clears during laser error, illegal steps;
 //   pulse_multiplier_stress preset rows (N near +-2^31, so the 32-bit raw counter wraps) and large
@@ -21,7 +24,8 @@
 // The column layout of input_filter, quad_decoder, output_pacer and rephase is that of the standard
 // files (same testbench); pulse_multiplier gains `preset, preset_n` (a row with preset = 1 first
 // loads N = preset_n and R = ratio, as pulse_multiplier::preset(), then steps), dds_sincos and
-// laserax_top gain the table port `tbl_we, tbl_addr, tbl_data`.
+// laserax_top gain the table port `tbl_we, tbl_addr, tbl_data` (laserax_top_stress also has the
+// error-map columns of laserax_top).
 //
 // Usage: rtl_stress_vectors --out DIR [--seed N] [--calls N]   writes DIR/<block>_stress.hex
 #include <sys/stat.h>
@@ -45,6 +49,7 @@ namespace {
 using lxt::vec_column;
 using lxt::vec_table;
 using W = lx::axis_widths;
+using EM = lx::error_map_cfg;
 
 vec_column in(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, true}; }
 vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, false}; }
@@ -73,6 +78,9 @@ vec_table top_stress(rng_t& r, long long calls) {
               in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
               in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
               in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
+              in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
+              in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
+              in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
               out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
               out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
               out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
@@ -81,7 +89,8 @@ vec_table top_stress(rng_t& r, long long calls) {
               out("step", 2, true), out("delta", W::W_DELTA, true), out("backlog", W::W_BACKLOG, true),
               out("pstep", 2, true), out("ostep", 2, true), out("adj", W::W_POS, true),
               out("a_pos", W::W_POS, true), out("b_pos", W::W_POS, true), out("c_pos", W::W_POS, true),
-              out("z_pos", W::W_POS, true), out("rep_mark", 1)};
+              out("z_pos", W::W_POS, true), out("rep_mark", 1), out("map_cfg_err", 1), out("corr", EM::W_C, true),
+              out("map_delta", EM::W_CDELTA, true)};
 
     lx::axis_core core;  // power-up: P = 256 table, period register history 256
     lx::axis_regs g;     // register values the host has written (reset values, then changes)
@@ -104,6 +113,23 @@ vec_table top_stress(rng_t& r, long long calls) {
     int glitch_left = 0, lerr_left = 0, bad_cfg_left = 0;
     bool cam_low = false;
     lx::axis_regs saved = g;
+    // error map registers (kept apart from g: the invalid-configuration windows leave them alone)
+    // and driven by their own generator, so the draws of the scenario above are those of the
+    // set without the map
+    std::mt19937_64 mr_seed = r.g;  // a copy: r itself is not advanced
+    rng_t mr(mr_seed() ^ 0x6572726f725f6d61ULL);
+    lx::error_map_regs mp;
+    auto new_geom = [&mr](lx::error_map_geom& gm) {
+        gm.origin = mr.range(-2500, 1500);
+        gm.spacing_log2 = static_cast<unsigned>(mr.range(4, 9));
+        gm.n_points = static_cast<unsigned>(mr.range(2, 300));
+        if (mr.chance(5)) {  // an invalid geometry: map_cfg_err while enabled
+            if (mr.chance(2)) gm.spacing_log2 = static_cast<unsigned>(mr.chance(2) ? mr.range(0, 3) : mr.range(21, 31));
+            else gm.n_points = static_cast<unsigned>(mr.chance(2) ? mr.range(0, 1) : mr.range(2049, 4095));
+        }
+    };
+    new_geom(mp.geom[0]);
+    new_geom(mp.geom[1]);
 
     for (long long k = 0; k < calls; ++k) {
         bool rehome = false, clear = false, we = false;
@@ -182,6 +208,19 @@ vec_table top_stress(rng_t& r, long long calls) {
         regs.tbl_addr = addr;
         regs.tbl_data = data;
 
+        // --- error map: table words into the inactive bank, flips, enables, new geometries ---
+        if (mr.chance(mp.map_en ? 15000 : 1500)) mp.map_en = !mp.map_en;  // mostly enabled
+        if (k == calls / 20) mp.map_en = true;
+        if (mr.chance(2500)) mp.bank_sel = !mp.bank_sel;
+        if (mr.chance(1500)) new_geom(mp.geom[mr.range(0, 1)]);
+        mp.we = mr.chance(3);
+        if (mp.we) {
+            mp.addr = static_cast<unsigned>(mr.chance(50) ? mr.range(0, 2047) : mr.range(0, 299));
+            const int64_t lim = mr.chance(30) ? (int64_t{1} << 23) - 1 : 3000;
+            mp.data = mr.chance(400) ? (mr.chance(2) ? lim : -lim - 1) : mr.range(-lim, lim);
+        }
+        regs.emap = mp;
+
         // --- motion on the pins ---
         if (seg_left-- <= 0) {
             // raw counts are ~8 output counts each and the pacer emits one per pace_m calls, so
@@ -239,7 +278,13 @@ vec_table top_stress(rng_t& r, long long calls) {
                           static_cast<int64_t>(regs.dac_width.to_uint64()), static_cast<int64_t>(regs.amplitude.to_uint64()),
                           static_cast<int64_t>(regs.tbl_period.to_uint64()), i64(regs.rehome), i64(regs.clear),
                           i64(regs.tbl_we), static_cast<int64_t>(regs.tbl_addr.to_uint64()),
-                          static_cast<int64_t>(regs.tbl_data.to_uint64()),
+                          static_cast<int64_t>(regs.tbl_data.to_uint64()), i64(regs.emap.map_en),
+                          i64(regs.emap.bank_sel), regs.emap.geom[0].origin.to_int64(),
+                          static_cast<int64_t>(regs.emap.geom[0].spacing_log2.to_uint64()),
+                          static_cast<int64_t>(regs.emap.geom[0].n_points.to_uint64()), regs.emap.geom[1].origin.to_int64(),
+                          static_cast<int64_t>(regs.emap.geom[1].spacing_log2.to_uint64()),
+                          static_cast<int64_t>(regs.emap.geom[1].n_points.to_uint64()), i64(regs.emap.we),
+                          static_cast<int64_t>(regs.emap.addr.to_uint64()), regs.emap.data.to_int64(),
                           o.sin.to_int64(), o.cos.to_int64(), i64(o.ref_mark), i64(o.qa), i64(o.qb), i64(o.qz),
                           i64(o.cfg_err), static_cast<int64_t>(o.stage.to_uint64()), i64(o.homed), i64(o.lerr_alarm),
                           i64(o.illegal_st), static_cast<int64_t>(o.err_cnt.to_uint64()), i64(o.ovs_edge_st),
@@ -248,7 +293,7 @@ vec_table top_stress(rng_t& r, long long calls) {
                           static_cast<int64_t>(o.d.to_uint64()), o.step.to_int64(), o.delta.to_int64(),
                           o.backlog.to_int64(), o.pstep.to_int64(), o.ostep.to_int64(), o.adj.to_int64(),
                           o.a_pos.to_int64(), o.b_pos.to_int64(), o.c_pos.to_int64(), o.z_pos.to_int64(),
-                          i64(o.rep_mark)});
+                          i64(o.rep_mark), i64(o.map_cfg_err), o.corr.to_int64(), o.map_delta.to_int64()});
     }
     return t;
 }

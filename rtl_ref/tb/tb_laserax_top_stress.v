@@ -33,6 +33,17 @@
 //   field tbl_we in 1 unsigned
 //   field tbl_addr in 10 unsigned
 //   field tbl_data in 17 unsigned
+//   field map_en in 1 unsigned
+//   field bank_sel in 1 unsigned
+//   field map_origin0 in 38 signed
+//   field map_k0 in 5 unsigned
+//   field map_n0 in 12 unsigned
+//   field map_origin1 in 38 signed
+//   field map_k1 in 5 unsigned
+//   field map_n1 in 12 unsigned
+//   field map_we in 1 unsigned
+//   field map_addr in 11 unsigned
+//   field map_data in 24 signed
 //   field sin out 18 signed
 //   field cos out 18 signed
 //   field ref_mark out 1 unsigned
@@ -65,13 +76,16 @@
 //   field c_pos out 38 signed
 //   field z_pos out 38 signed
 //   field rep_mark out 1 unsigned
+//   field map_cfg_err out 1 unsigned
+//   field corr out 17 signed
+//   field map_delta out 18 signed
 `timescale 1ns / 1ps
 `default_nettype none
 
 module tb_laserax_top_stress;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
-    localparam integer ROW_BITS = 824;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 1036;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_top_stress";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -99,6 +113,17 @@ module tb_laserax_top_stress;
     reg  i_tbl_we;
     reg  [9:0] i_tbl_addr;
     reg  [16:0] i_tbl_data;
+    reg  i_map_en;
+    reg  i_bank_sel;
+    reg  [37:0] i_map_origin0;
+    reg  [4:0] i_map_k0;
+    reg  [11:0] i_map_n0;
+    reg  [37:0] i_map_origin1;
+    reg  [4:0] i_map_k1;
+    reg  [11:0] i_map_n1;
+    reg  i_map_we;
+    reg  [10:0] i_map_addr;
+    reg  [23:0] i_map_data;
     wire [17:0] o_sin;
     wire [17:0] o_cos;
     wire o_ref_mark;
@@ -116,21 +141,24 @@ module tb_laserax_top_stress;
     wire o_glitch_st;
     wire o_alarm;
     wire [31:0] o_raw_count;
-    wire [37:0] o_comp_pos;
-    wire [37:0] o_paced_pos;
-    wire [37:0] o_out_pos;
-    wire [11:0] o_d;
     wire [1:0] o_step;
+    wire [37:0] o_comp_pos;
     wire [38:0] o_delta;
     wire [39:0] o_backlog;
     wire [1:0] o_pstep;
+    wire [37:0] o_paced_pos;
     wire [1:0] o_ostep;
+    wire [37:0] o_out_pos;
     wire [37:0] o_adj;
     wire [37:0] o_a_pos;
     wire [37:0] o_b_pos;
     wire [37:0] o_c_pos;
     wire [37:0] o_z_pos;
+    wire [11:0] o_d;
     wire o_rep_mark;
+    wire o_map_cfg_err;
+    wire [16:0] o_corr;
+    wire [17:0] o_map_delta;
 
     laserax_top #(.INIT_FILE(TBL_FILE)) dut (
         .i_clk(i_clk),
@@ -155,6 +183,17 @@ module tb_laserax_top_stress;
         .i_tbl_we(i_tbl_we),
         .i_tbl_addr(i_tbl_addr),
         .i_tbl_data(i_tbl_data),
+        .i_map_en(i_map_en),
+        .i_bank_sel(i_bank_sel),
+        .i_map_origin0(i_map_origin0),
+        .i_map_k0(i_map_k0),
+        .i_map_n0(i_map_n0),
+        .i_map_origin1(i_map_origin1),
+        .i_map_k1(i_map_k1),
+        .i_map_n1(i_map_n1),
+        .i_map_we(i_map_we),
+        .i_map_addr(i_map_addr),
+        .i_map_data(i_map_data),
         .o_sin(o_sin),
         .o_cos(o_cos),
         .o_ref_mark(o_ref_mark),
@@ -172,47 +211,61 @@ module tb_laserax_top_stress;
         .o_glitch_st(o_glitch_st),
         .o_alarm(o_alarm),
         .o_raw_count(o_raw_count),
-        .o_comp_pos(o_comp_pos),
-        .o_paced_pos(o_paced_pos),
-        .o_out_pos(o_out_pos),
-        .o_d(o_d),
         .o_step(o_step),
+        .o_comp_pos(o_comp_pos),
         .o_delta(o_delta),
         .o_backlog(o_backlog),
         .o_pstep(o_pstep),
+        .o_paced_pos(o_paced_pos),
         .o_ostep(o_ostep),
+        .o_out_pos(o_out_pos),
         .o_adj(o_adj),
         .o_a_pos(o_a_pos),
         .o_b_pos(o_b_pos),
         .o_c_pos(o_c_pos),
         .o_z_pos(o_z_pos),
-        .o_rep_mark(o_rep_mark)
+        .o_d(o_d),
+        .o_rep_mark(o_rep_mark),
+        .o_map_cfg_err(o_map_cfg_err),
+        .o_corr(o_corr),
+        .o_map_delta(o_map_delta)
     );
 
     `include "tb_common.vh"
 
     task apply_inputs;
         begin
-            i_a = row[820:820];
-            i_b = row[816:816];
-            i_sw = row[812:812];
-            i_lerr = row[808:808];
-            i_period = row[804:792];
-            i_ratio = row[788:752];
-            i_glitch_n = row[751:744];
-            i_sw_debounce = row[743:728];
-            i_min_spacing = row[727:712];
-            i_pace_m = row[711:696];
-            i_backlog_thr = row[695:664];
-            i_mark_len = row[660:648];
-            i_dac_width = row[644:640];
-            i_amplitude = row[637:620];
-            i_tbl_period = row[616:604];
-            i_rehome = row[600:600];
-            i_clear = row[596:596];
-            i_tbl_we = row[592:592];
-            i_tbl_addr = row[589:580];
-            i_tbl_data = row[576:560];
+            i_a = row[1032:1032];
+            i_b = row[1028:1028];
+            i_sw = row[1024:1024];
+            i_lerr = row[1020:1020];
+            i_period = row[1016:1004];
+            i_ratio = row[1000:964];
+            i_glitch_n = row[963:956];
+            i_sw_debounce = row[955:940];
+            i_min_spacing = row[939:924];
+            i_pace_m = row[923:908];
+            i_backlog_thr = row[907:876];
+            i_mark_len = row[872:860];
+            i_dac_width = row[856:852];
+            i_amplitude = row[849:832];
+            i_tbl_period = row[828:816];
+            i_rehome = row[812:812];
+            i_clear = row[808:808];
+            i_tbl_we = row[804:804];
+            i_tbl_addr = row[801:792];
+            i_tbl_data = row[788:772];
+            i_map_en = row[768:768];
+            i_bank_sel = row[764:764];
+            i_map_origin0 = row[761:724];
+            i_map_k0 = row[720:716];
+            i_map_n0 = row[715:704];
+            i_map_origin1 = row[701:664];
+            i_map_k1 = row[660:656];
+            i_map_n1 = row[655:644];
+            i_map_we = row[640:640];
+            i_map_addr = row[638:628];
+            i_map_data = row[627:604];
         end
     endtask
 
@@ -238,43 +291,57 @@ module tb_laserax_top_stress;
             i_tbl_we = 1'd0;
             i_tbl_addr = 10'd0;
             i_tbl_data = 17'd0;
+            i_map_en = 1'd0;
+            i_bank_sel = 1'd0;
+            i_map_origin0 = 38'd0;
+            i_map_k0 = 5'd0;
+            i_map_n0 = 12'd0;
+            i_map_origin1 = 38'd0;
+            i_map_k1 = 5'd0;
+            i_map_n1 = 12'd0;
+            i_map_we = 1'd0;
+            i_map_addr = 11'd0;
+            i_map_data = 24'd0;
         end
     endtask
 
     task check_outputs;
         begin
-            check("sin", row[557:540], o_sin, 18, 1);
-            check("cos", row[537:520], o_cos, 18, 1);
-            check("ref_mark", row[516:516], o_ref_mark, 1, 0);
-            check("qa", row[512:512], o_qa, 1, 0);
-            check("qb", row[508:508], o_qb, 1, 0);
-            check("qz", row[504:504], o_qz, 1, 0);
-            check("cfg_err", row[500:500], o_cfg_err, 1, 0);
-            check("stage", row[497:496], o_stage, 2, 0);
-            check("homed", row[492:492], o_homed, 1, 0);
-            check("lerr_alarm", row[488:488], o_lerr_alarm, 1, 0);
-            check("illegal_st", row[484:484], o_illegal_st, 1, 0);
-            check("err_cnt", row[483:476], o_err_cnt, 8, 0);
-            check("ovs_edge_st", row[472:472], o_ovs_edge_st, 1, 0);
-            check("ovs_backlog_st", row[468:468], o_ovs_backlog_st, 1, 0);
-            check("glitch_st", row[464:464], o_glitch_st, 1, 0);
-            check("alarm", row[460:460], o_alarm, 1, 0);
-            check("raw_count", row[459:428], o_raw_count, 32, 1);
-            check("comp_pos", row[425:388], o_comp_pos, 38, 1);
-            check("paced_pos", row[385:348], o_paced_pos, 38, 1);
-            check("out_pos", row[345:308], o_out_pos, 38, 1);
-            check("d", row[307:296], o_d, 12, 0);
-            check("step", row[293:292], o_step, 2, 1);
-            check("delta", row[290:252], o_delta, 39, 1);
-            check("backlog", row[251:212], o_backlog, 40, 1);
-            check("pstep", row[209:208], o_pstep, 2, 1);
-            check("ostep", row[205:204], o_ostep, 2, 1);
-            check("adj", row[201:164], o_adj, 38, 1);
-            check("a_pos", row[161:124], o_a_pos, 38, 1);
-            check("b_pos", row[121:84], o_b_pos, 38, 1);
-            check("c_pos", row[81:44], o_c_pos, 38, 1);
-            check("z_pos", row[41:4], o_z_pos, 38, 1);
-            check("rep_mark", row[0:0], o_rep_mark, 1, 0);
+            check("sin", row[601:584], o_sin, 18, 1);
+            check("cos", row[581:564], o_cos, 18, 1);
+            check("ref_mark", row[560:560], o_ref_mark, 1, 0);
+            check("qa", row[556:556], o_qa, 1, 0);
+            check("qb", row[552:552], o_qb, 1, 0);
+            check("qz", row[548:548], o_qz, 1, 0);
+            check("cfg_err", row[544:544], o_cfg_err, 1, 0);
+            check("stage", row[541:540], o_stage, 2, 0);
+            check("homed", row[536:536], o_homed, 1, 0);
+            check("lerr_alarm", row[532:532], o_lerr_alarm, 1, 0);
+            check("illegal_st", row[528:528], o_illegal_st, 1, 0);
+            check("err_cnt", row[527:520], o_err_cnt, 8, 0);
+            check("ovs_edge_st", row[516:516], o_ovs_edge_st, 1, 0);
+            check("ovs_backlog_st", row[512:512], o_ovs_backlog_st, 1, 0);
+            check("glitch_st", row[508:508], o_glitch_st, 1, 0);
+            check("alarm", row[504:504], o_alarm, 1, 0);
+            check("raw_count", row[503:472], o_raw_count, 32, 1);
+            check("comp_pos", row[469:432], o_comp_pos, 38, 1);
+            check("paced_pos", row[429:392], o_paced_pos, 38, 1);
+            check("out_pos", row[389:352], o_out_pos, 38, 1);
+            check("d", row[351:340], o_d, 12, 0);
+            check("step", row[337:336], o_step, 2, 1);
+            check("delta", row[334:296], o_delta, 39, 1);
+            check("backlog", row[295:256], o_backlog, 40, 1);
+            check("pstep", row[253:252], o_pstep, 2, 1);
+            check("ostep", row[249:248], o_ostep, 2, 1);
+            check("adj", row[245:208], o_adj, 38, 1);
+            check("a_pos", row[205:168], o_a_pos, 38, 1);
+            check("b_pos", row[165:128], o_b_pos, 38, 1);
+            check("c_pos", row[125:88], o_c_pos, 38, 1);
+            check("z_pos", row[85:48], o_z_pos, 38, 1);
+            check("rep_mark", row[44:44], o_rep_mark, 1, 0);
+            check("map_cfg_err", row[40:40], o_map_cfg_err, 1, 0);
+            check("corr", row[36:20], o_corr, 17, 1);
+            check("map_delta", row[17:0], o_map_delta, 18, 1);
         end
     endtask
 

@@ -28,6 +28,16 @@ lx::axis_regs to_hls(const axis_settings& s) {
     r.tbl_period = s.tbl_period;
     r.rehome = s.rehome;
     r.clear = s.clear;
+    r.emap.map_en = s.emap.map_en;
+    r.emap.bank_sel = s.emap.bank_sel;
+    for (int b = 0; b < 2; ++b) {
+        r.emap.geom[b].origin = s.emap.geom[b].origin;
+        r.emap.geom[b].spacing_log2 = s.emap.geom[b].spacing_log2;
+        r.emap.geom[b].n_points = s.emap.geom[b].n_points;
+    }
+    r.emap.we = s.emap.we;
+    r.emap.addr = s.emap.addr;
+    r.emap.data = s.emap.data;
     return r;
 }
 
@@ -92,6 +102,9 @@ std::string compare(const lx::axis_out& h, const golden::axis_out& g) {
     c("z_pos", h.z_pos.to_int64(), g.z_pos);
     c("d", h.d.to_int64(), g.d);
     c("rep_mark", h.rep_mark, g.rep_mark);
+    c("map_cfg_err", h.map_cfg_err, g.map_cfg_err);
+    c("corr", h.corr.to_int64(), g.corr);
+    c("map_delta", h.map_delta.to_int64(), g.map_delta);
     return c.text();
 }
 
@@ -184,9 +197,22 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     h_ = core_.step(p, hr_);
     g_ = gold_.step(gp, gr_);
     ++calls_;
+    if (s_.emap.we) {  // write_map(): one call only
+        s_.emap.we = false;
+        hr_.emap.we = false;
+        gr_.emap.we = false;
+    }
     std::string m = compare(h_, g_);
     if (m.empty()) m = integrity();
     return m;
+}
+
+void dual_axis::write_map(int addr, int32_t data) {
+    s_.emap.we = true;
+    s_.emap.addr = addr;
+    s_.emap.data = data;
+    hr_ = to_hls(s_);
+    gr_ = to_golden(s_);
 }
 
 std::string dual_axis::integrity() {
@@ -200,9 +226,9 @@ std::string dual_axis::integrity() {
         const int64_t want_comp = static_cast<int64_t>((static_cast<i128>(prev_raw_) * static_cast<i128>(s_.ratio)) >> 32);
         if (g_.comp_pos != want_comp)
             m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor(N*R) " + std::to_string(want_comp);
-        else if (g_.paced_pos + g_.backlog != prev_comp_)
-            m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) + " != previous comp " +
-                std::to_string(prev_comp_);
+        else if (g_.paced_pos + g_.backlog != prev_comp_ + prev_corr_)
+            m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
+                " != previous comp + corr " + std::to_string(prev_comp_ + prev_corr_);
         const bool use_sc = static_cast<double>(s_.amplitude) * 6.283185307179586 / static_cast<double>(s_.period) >= 8.0;
         const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
@@ -219,6 +245,7 @@ std::string dual_axis::integrity() {
     prev_cfg_err_ = g_.cfg_err;
     prev_comp_ = g_.cfg_err ? 0 : g_.comp_pos;
     prev_raw_ = g_.cfg_err ? 0 : g_.raw_count;
+    prev_corr_ = g_.cfg_err ? 0 : g_.corr;
     return m;
 }
 

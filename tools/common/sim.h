@@ -102,16 +102,20 @@ private:
 //   * the controller decoder (atan2 of the hls sin/cos, and the hls A/B) reconstructs exactly the
 //     golden out_pos of the call the outputs belong to (two calls back), never stepping by more
 //     than one count (sin/cos decoding is skipped when amp * 2pi / P < 8 codes per count);
-//   * golden paced + backlog == golden comp_pos of the previous call (the pacer loses nothing);
+//   * golden paced + backlog == golden comp_pos + corr of the previous call (the pacer loses
+//     nothing; corr is the error-map correction, 0 while the map is disabled);
 //   * golden comp_pos == floor(N * R / 2^32) with N the previous call's raw count (128-bit);
 // so once the pacer has drained, what a controller decodes equals the compensated position plus
-// the rephase adjustment, exactly.
+// the error-map correction plus the rephase adjustment, exactly.
 class dual_axis {
 public:
     explicit dual_axis(const axis_settings& s);
     void set(const axis_settings& s);  // new register values (table reloaded if P/amp changed)
     // Steps both models; returns "" or the mismatch text.
     std::string step(const lx::axis_pins& p);
+    // One error-map table word for the next step() of both models (the write port writes the bank
+    // not selected by bank_sel in that call); the write enable is cleared after that call.
+    void write_map(int addr, int32_t data);
     const lx::axis_out& hls() const { return h_; }
     const golden::axis_out& gold() const { return g_; }
     lx::axis_core& core() { return core_; }
@@ -132,7 +136,7 @@ private:
     int64_t out_hist_[2] = {0, 0};  // golden out_pos of calls t-1 and t-2
     int hist_n_ = 0;
     bool prev_cfg_err_ = true;
-    int64_t prev_comp_ = 0, prev_raw_ = 0;
+    int64_t prev_comp_ = 0, prev_raw_ = 0, prev_corr_ = 0;
     std::string integrity();
 };
 

@@ -254,6 +254,7 @@ vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, b
 
 bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
     using W = lx::axis_widths;
+    using EM = lx::error_map_cfg;
     std::mt19937_64 rng(seed);
     axis_settings s;
     s.glitch_n = 2;
@@ -268,11 +269,15 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                 in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
                 in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
                 in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
+                in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
+                in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
+                in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
                 out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
                 out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
                 out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1), out("glitch_st", 1),
                 out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
-                out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH)};
+                out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
+                out("map_cfg_err", 1), out("corr", EM::W_C, true), out("map_delta", EM::W_CDELTA, true)};
     vec_table flt{"input_filter", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)}, {}};
     vec_table dec{"quad_decoder",
                   {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
@@ -343,6 +348,9 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         if (t % 5000 == 4999) ns.clear = true;
         if (t == calls * 3 / 4) ns.tbl_period = 264;               // invalid configuration ...
         if (t == calls * 3 / 4 + 50) ns.tbl_period = ns.period;    // ... and back
+        // the error map stays at its reset values (disabled) here: tb_vectors replays these rows
+        // into an axis_core with default map registers; the map is exercised by the
+        // laserax_top_stress set (rtl_ref/tb/stress_vectors.cpp) and tb_chain_error_map
         ax.set(ns);
         if (wait-- <= 0) {
             n += dir;
@@ -374,10 +382,14 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const golden::axis_regs gr = to_golden(ns);
         top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.glitch_n,
                             gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
-                            gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, g.sin, g.cos, g.ref_mark,
+                            gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear,
+                            gr.emap.map_en, gr.emap.bank_sel, gr.emap.geom[0].origin, gr.emap.geom[0].spacing_log2,
+                            gr.emap.geom[0].n_points, gr.emap.geom[1].origin, gr.emap.geom[1].spacing_log2,
+                            gr.emap.geom[1].n_points, gr.emap.we, gr.emap.addr, gr.emap.data,
+                            g.sin, g.cos, g.ref_mark,
                             g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
                             g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
-                            g.d});
+                            g.d, g.map_cfg_err, g.corr, g.map_delta});
         (void)h;
 
         // block level
