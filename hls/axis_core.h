@@ -144,7 +144,7 @@ public:
         if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
         axis_out o = axis_out{};
         // A period change while running is a reconfiguration: the phase counters of the old
-        // period are meaningless for the new one, so the chain restarts (one call in the safe
+        // period are meaningless for the next one, so the chain restarts (one call in the safe
         // state). Coming out of reset or of an invalid configuration the blocks are already reset.
         const bool period_changed = run_q_ && regs.period != period_q_;
         const bool ok = axis_config_ok(regs) && !period_changed;

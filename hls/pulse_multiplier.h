@@ -57,7 +57,7 @@ public:
         const cfg::nwide_t n_sum = cfg::nwide_t(n_) + step;
         const raw_t n_next = n_sum;  // wraps at W_RAW bits
         const cfg::dratio_t dr = cfg::dratio_t(ratio) - cfg::dratio_t(r_);
-        acc_t acc = acc_ + acc_t(n_) * dr;  // the one multiplier: re-base to the new ratio
+        acc_t acc = acc_ + acc_t(n_) * dr;  // the one multiplier: re-base to the updated ratio
         if (step > 0) acc = acc + acc_t(ratio);
         if (step < 0) acc = acc - acc_t(ratio);
         if (n_sum != cfg::nwide_t(n_next)) {

@@ -1,7 +1,7 @@
 // quad_decoder.h — 4x quadrature decoder for the laser's A/B lines plus the laser error line.
 //
 // DESIGN §4.2. Each pin passes an input_filter (synchroniser + glitch filter, length glitch_n).
-// Decoding is done with XOR logic on the old and new filtered levels:
+// Decoding is done with XOR logic on the previous and current filtered levels:
 //   only A changed: +1 if A' != B' else -1      only B changed: +1 if A' == B' else -1
 //   both changed:   illegal (no count, pulse + saturating counter)
 // which is forward (+1) for the sequence (A,B) = 00 -> 10 -> 11 -> 01 (A leads B).
