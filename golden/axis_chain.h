@@ -36,6 +36,7 @@ inline uint64_t default_ratio() {
 struct axis_regs {
     int64_t period = 256;
     uint64_t ratio = default_ratio();
+    int64_t comp_offset = 0;  // Q32.32 output counts added to N * R (thermal origin, K168)
     int64_t glitch_n = 2;
     int64_t sw_debounce = 16;
     int64_t min_spacing = 0;

@@ -15,6 +15,7 @@ struct axis_widths {
     static constexpr int W_RAW = 32;     // raw laser count, signed, wraps
     static constexpr int R_FRAC = 32;    // ratio fraction bits (2^-32 ~ 0.23 ppb)
     static constexpr int R_INT = 5;      // ratio integer bits: ratios < 32
+    static constexpr int OFF_INT = 32;   // comp offset integer bits: |offset| < 2^31 output counts
     static constexpr int P_MAX = 4096;   // longest sin/cos period in output counts
     static constexpr int P_MIN = 8;      // shortest period; periods are multiples of P_STEP
     static constexpr int P_STEP = 8;
@@ -23,6 +24,7 @@ struct axis_widths {
     // derived
     static constexpr int W_RATIO = R_INT + R_FRAC;             // 37, unsigned
     static constexpr int W_ACC = W_RAW + W_RATIO + 1;          // 70, exact N*R, signed
+    static constexpr int W_OFFSET = OFF_INT + R_FRAC;          // 64, comp offset Q32.32, signed
     static constexpr int W_POS = W_RAW + R_INT + 1;            // 38, positions in output counts
     static constexpr int W_DELTA = W_POS + 1;                  // 39, comp(t) - comp(t-1)
     static constexpr int W_BACKLOG = W_POS + 2;                // 40, pacer backlog
@@ -37,6 +39,7 @@ struct axis_widths {
 using raw_t = sint<axis_widths::W_RAW>;
 using ratio_t = uint<axis_widths::W_RATIO>;
 using acc_t = sint<axis_widths::W_ACC>;
+using offset_t = sint<axis_widths::W_OFFSET>;
 using pos_t = sint<axis_widths::W_POS>;
 using delta_t = sint<axis_widths::W_DELTA>;
 using backlog_t = sint<axis_widths::W_BACKLOG>;

@@ -39,6 +39,7 @@ struct axis_core_cfg {
 struct axis_regs {
     period_t period = axis_core_cfg::PERIOD_DEFAULT;
     ratio_t ratio = axis_core_cfg::RATIO_DEFAULT;
+    offset_t comp_offset = 0;  // Q32.32 output counts added to N * R (thermal origin, K168)
     quad_decoder_cfg::glitch_t glitch_n = 2;
     axis_core_cfg::debounce_t sw_debounce = 16;
     quad_decoder_cfg::spacing_t min_spacing = 0;

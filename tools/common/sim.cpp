@@ -17,6 +17,7 @@ lx::axis_regs to_hls(const axis_settings& s) {
     lx::axis_regs r;
     r.period = s.period;
     r.ratio = s.ratio;
+    r.comp_offset = s.comp_offset;
     r.glitch_n = s.glitch_n;
     r.sw_debounce = s.sw_debounce;
     r.min_spacing = s.min_spacing;
