@@ -164,6 +164,8 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
     std::fprintf(out, "  ratio register (Q5.32)    %llu  (0x%llX) = %.10Lf output counts per raw count\n",
                  static_cast<unsigned long long>(c.ratio), static_cast<unsigned long long>(c.ratio),
                  scale_from_ratio(c.ratio, in.wavelength_nm).scale);
+    std::fprintf(out, "  comp_offset (Q32.32)      %lld  (%.6Lf output counts = -K168 * K169 * 1e-5)\n",
+                 static_cast<long long>(c.comp_offset), static_cast<long double>(c.comp_offset) / 4294967296.0L);
     std::fprintf(out, "  encoder scaling (seed 002): K168 = %lld counts (%.4f um), K169 = %.7f (units of 1e-5)\n",
                  static_cast<long long>(c.scaling.k168), static_cast<double>(c.scaling.k168) * kOutputCountNmComp / 1000.0,
                  golden::k169_value(c.scaling));

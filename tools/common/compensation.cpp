@@ -31,6 +31,27 @@ bool ratio_from_index(double wavelength_nm, double n, double expansion, uint64_t
     return ratio_from_scale(scale, ratio, err);
 }
 
+__extension__ typedef __int128 i128_t;
+
+bool comp_offset_from_scaling(const golden::encoder_scaling& s, int64_t* comp_offset, std::string* err) {
+    // |K168| <= 2^34 (1000 m), |k169_e7| <= 3e10 < 2^35: the product times 2^32 stays below 2^101.
+    const i128_t num = -static_cast<i128_t>(s.k168) * static_cast<i128_t>(s.k169_e7) * (static_cast<i128_t>(1) << 32);
+    const i128_t den = 1000000000000;  // 1e12: k169_e7 * 1e-12 = g
+    const i128_t mag = ((num < 0 ? -num : num) * 2 + den) / (den * 2);  // round half away from zero
+    const i128_t off = num < 0 ? -mag : mag;
+    const i128_t lim = static_cast<i128_t>(1) << 63;
+    if (off >= lim || off < -lim) {
+        if (err) *err = "thermal offset origin * alpha * (20 - T) does not fit the 64-bit comp_offset register (|offset| < 2^31 counts)";
+        return false;
+    }
+    *comp_offset = static_cast<int64_t>(off);
+    return true;
+}
+
+double origin_from_comp_offset(int64_t comp_offset, int64_t k169_e7) {
+    return -static_cast<double>(static_cast<long double>(comp_offset) / 4294967296.0L * 1e12L / static_cast<long double>(k169_e7));
+}
+
 ratio_readback scale_from_ratio(uint64_t ratio, double wavelength_nm) {
     ratio_readback b;
     b.scale = static_cast<long double>(ratio) / 4294967296.0L;
@@ -79,6 +100,7 @@ comp_outputs compute_compensation(const comp_inputs& in) {
     o.scale_exact = static_cast<long double>(in.wavelength_nm) / static_cast<long double>(o.n) /
                     static_cast<long double>(kOutputCountNmComp) * (1.0L + static_cast<long double>(o.expansion));
     if (!ratio_from_scale(o.scale_exact, &o.ratio, &o.error)) return o;
+    if (!comp_offset_from_scaling(o.scaling, &o.comp_offset, &o.error)) return o;
     o.air_ppm = (1.0 / o.n - 1.0) * 1e6;
     o.expansion_ppm = o.expansion * 1e6;
     o.total_ppm = static_cast<double>(((1.0L + static_cast<long double>(o.expansion)) / static_cast<long double>(o.n) - 1.0L) * 1e6L);

@@ -9,10 +9,15 @@
 //
 //     R = rha( lambda_vac / n / 78.125 nm * (1 + alpha (20 - T)) * 2^32 )     (round half away)
 //
-// The fold scales about raw count 0; the multiplier has no offset register in this release, so a
-// thermal origin elsewhere is a constant shift, origin * alpha (20 - T) counts, which the
-// controller's homing absorbs (it zeroes the axis at Z). K168/K169 express the same correction
-// about an explicit origin for a controller that applies it itself.
+// The fold scales about raw count 0. The thermal origin (K168, output counts measured from raw
+// count 0 in the air-compensated scale x = N * lambda / n / 78.125 nm) is the multiplier's offset
+// register (DESIGN 4.3, comp = floor((N * R + comp_offset) / 2^32)):
+//
+//     x + (x - origin) g = x (1 + g) - origin g      =>   comp_offset = rha(-K168 * g * 2^32)
+//
+// with g = K169 * 1e-5 = k169_e7 * 1e-12 exactly (golden/thermal.h), evaluated in __int128, so the
+// position at the origin does not move when g changes (a material-temperature update while the
+// axis stands at the origin leaves comp unchanged).
 //
 // Compensation in ppm is relative to the uncompensated vacuum scale lambda_vac / 78.125 nm:
 //     total ppm = (scale / (lambda_vac / 78.125) - 1) * 1e6 = ((1 + g) / n - 1) * 1e6,  g = alpha (20 - T)
@@ -56,6 +61,7 @@ struct comp_outputs {
     double expansion = 0.0;                  // g = alpha (20 - T), from the quantised values
     long double scale_exact = 0.0L;          // output counts per raw count, unrounded
     uint64_t ratio = 0;                      // the Q5.32 register
+    int64_t comp_offset = 0;                 // the Q32.32 offset register (thermal origin)
     double air_ppm = 0.0;                    // (1/n - 1) * 1e6
     double expansion_ppm = 0.0;              // g * 1e6
     double total_ppm = 0.0;                  // exact ((1+g)/n - 1) * 1e6
@@ -70,6 +76,12 @@ comp_outputs compute_compensation(const comp_inputs& in);
 bool ratio_from_scale(long double scale, uint64_t* ratio, std::string* err);
 // lambda_vac / n / 78.125 * (1 + g) -> register (the formula above).
 bool ratio_from_index(double wavelength_nm, double n, double expansion, uint64_t* ratio, std::string* err);
+
+// comp_offset = rha(-K168 * K169 * 1e-5 * 2^32) (exact integer arithmetic); false with a message
+// if it does not fit the register (|offset| < 2^31 output counts, W_OFFSET = 64).
+bool comp_offset_from_scaling(const golden::encoder_scaling& s, int64_t* comp_offset, std::string* err);
+// Back: the origin (output counts, real) that an offset register means for a K169 (k169_e7 != 0).
+double origin_from_comp_offset(int64_t comp_offset, int64_t k169_e7);
 
 // Register -> effective scale and ppm relative to lambda_vac / 78.125 nm.
 struct ratio_readback {
