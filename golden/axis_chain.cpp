@@ -50,7 +50,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     const input_filter::out swf_o = swf_.step(pins.sw, regs.sw_debounce);
     const quad_decoder::out dec_o =
         dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, regs.ratio);
+    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, regs.ratio, regs.comp_offset);
     // error map (docs/ERROR_MAP.md §8): uncorrected comp and homed status of the previous call;
     // its delta joins the multiplier delta at the pacer input
     const error_map::out emap_o = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);

@@ -17,13 +17,13 @@ int64_t wrap32(int64_t v) {
 
 void pulse_multiplier::reset() { *this = pulse_multiplier{}; }
 
-pulse_multiplier::out pulse_multiplier::step(int step, uint64_t ratio_q32) {
+pulse_multiplier::out pulse_multiplier::step(int step, uint64_t ratio_q32, int64_t offset_q32) {
     n_ = wrap32(n_ + step);
     r_ = ratio_q32;  // Reading: R' is the ratio input of this call, taken as given (the
                      // register is 37 bits wide; callers keep it < 2^37)
-    const long double ratio = static_cast<long double>(r_) / 4294967296.0L;  // exact (2^-32)
-    const long double prod = static_cast<long double>(n_) * ratio;  // exact while |N*R| < 2^64
-    const int64_t comp = static_cast<int64_t>(std::floor(prod));
+    // N*R and N*R + OFF are integers, exact while below 2^64; the scaling by 2^-32 is exact.
+    const long double sum = static_cast<long double>(n_) * static_cast<long double>(r_) + static_cast<long double>(offset_q32);
+    const int64_t comp = static_cast<int64_t>(std::floor(sum / 4294967296.0L));
     const int64_t delta = comp - comp_;
     comp_ = comp;
     return out{comp, delta};

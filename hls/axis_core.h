@@ -91,9 +91,9 @@ struct axis_out {
 };
 
 // The pacer input mul_q_.delta + emap_q_.delta fits delta_t: a multiplier delta is at most one
-// step (< 2^5) plus a re-base |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36, and
-// |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays below 2^37 < 2^(W_DELTA-1) = 2^38
-// (docs/DESIGN.md §4.7).
+// step (< 2^5) plus a re-base |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36 plus an offset
+// change |OFF' - OFF| / 2^32 <= 2^32, and |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays
+// below 2^36 + 2^33 < 2^(W_DELTA-1) = 2^38 (docs/DESIGN.md §4.7).
 static_assert(error_map_cfg::W_CDELTA + 1 < axis_widths::W_DELTA, "pacer input sum must fit delta_t");
 
 // Configuration check (DESIGN §4.7): combinational, every call.
@@ -161,7 +161,7 @@ public:
         const input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf = swf_.step(pins.sw, regs.sw_debounce);
         const quad_decoder::out_t dec =
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, regs.ratio);
+        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, regs.ratio, regs.comp_offset);
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta joins the multiplier delta at the
         // pacer input (2 calls of map latency, DESIGN §4.7)

@@ -7,7 +7,11 @@
 // port, one word per call, while the axis moves; then map_en and a bank flip. From there on:
 // random moves with reversals and dwells, reloads of the inactive bank followed by flips while
 // moving, new geometries (the map is indexed by comp, origin in comp coordinates), short windows
-// of an invalid geometry (map_cfg_err), map_en toggles, occasional rehome.
+// of an invalid geometry (map_cfg_err), map_en toggles, occasional rehome. Sensor updates all the
+// way through: every 5000..40000 calls new air and workpiece readings (15..30 degC, 90..110 kPa,
+// 0..90 %RH, alpha 0..25 ppm/degC at 10..30 degC, origin within +-50 mm) become a new ratio and
+// comp_offset (lxt::compute_compensation, as the host would write them), while moving or not, so
+// the combined datapath (ratio, offset, interpolated map) is compared with the golden model.
 // Checks:
 //   * every call: every output and tap of hls equals golden (lxt::dual_axis, which also checks
 //     paced + backlog == previous comp + previous corr and that the controller decodes out_pos);
@@ -20,6 +24,7 @@
 #include <vector>
 
 #include "tb/tb_util.h"
+#include "tools/common/compensation.h"
 #include "tools/common/sim.h"
 
 int main(int argc, char** argv) {
@@ -78,6 +83,9 @@ int main(int argc, char** argv) {
         load_pos = 0;
     };
 
+    long long next_sensor = 100, sensor_updates = 0;
+    auto urand = [&](double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng); };
+
     bool homed_once = false, map_started = false;
     long long flips = 0, drained_checks = 0, corr_rows = 0, cfg_err_rows = 0, mismatches = 0;
     long long bad_geom_left = 0;
@@ -122,6 +130,22 @@ int main(int argc, char** argv) {
         }
         if (map_started && uni(0, 199999) < 2) ns.emap.map_en = !ns.emap.map_en;
         if (map_started && uni(0, 299999) < 1) ns.rehome = true;
+        if (t == next_sensor) {
+            next_sensor = t + uni(5000, 40000);
+            lxt::comp_inputs ci;
+            ci.air_temp_c = urand(15.0, 30.0);
+            ci.pressure_pa = urand(90e3, 110e3);
+            ci.rh_percent = urand(0.0, 90.0);
+            ci.alpha_ppm_per_c = urand(0.0, 25.0);
+            ci.material_temp_c = urand(10.0, 30.0);
+            ci.origin_um = urand(-50000.0, 50000.0);
+            const lxt::comp_outputs co = lxt::compute_compensation(ci);
+            if (res.check(co.ok, "compute_compensation: " + co.error)) {
+                ns.ratio = co.ratio;
+                ns.comp_offset = co.comp_offset;
+                ++sensor_updates;
+            }
+        }
         ax.set(ns);
         if (write) ax.write_map(waddr, wdata);
 
@@ -191,7 +215,8 @@ int main(int argc, char** argv) {
     res.check(drained_checks >= 10, "fewer than 10 drained checks: " + std::to_string(drained_checks));
     res.check(corr_rows >= cycles / 10, "corr was non-zero in only " + std::to_string(corr_rows) + " calls");
     res.check(cfg_err_rows > 0, "no map_cfg_err window");
-    std::printf("  %lld flips, %lld drained checks, corr != 0 in %lld calls, map_cfg_err in %lld calls\n", flips,
-                drained_checks, corr_rows, cfg_err_rows);
+    res.check(sensor_updates >= cycles / 40000, "too few sensor updates: " + std::to_string(sensor_updates));
+    std::printf("  %lld flips, %lld drained checks, corr != 0 in %lld calls, map_cfg_err in %lld calls, %lld sensor updates\n",
+                flips, drained_checks, corr_rows, cfg_err_rows, sensor_updates);
     return res.finish();
 }

@@ -3,13 +3,14 @@
 //
 // Stimulus (pin level, one call per clock): a fringe index that moves with random speeds, stops
 // and reversals; short glitches on A or B (below and above the glitch filter length); illegal
-// transitions (A and B flip together); laser error bursts; random ratio updates, including large
-// ones while moving; random pacer M and backlog thresholds; switch crossings, rehome and clear
+// transitions (A and B flip together); laser error bursts; random ratio and comp_offset updates,
+// including large ones while moving; random pacer M and backlog thresholds; switch crossings, rehome and clear
 // pulses; occasional period/preset changes and invalid configurations.
 // Checks on every call:
 //   * every output and every block tap of hls equals the golden model exactly, and the
 //     position-integrity invariant holds (lxt::dual_axis: controller decode of sin/cos and A/B
-//     == golden out_pos, comp == floor(N*R) by a 128-bit reference, paced + backlog == comp);
+//     == golden out_pos, comp == floor((N*R + OFF) / 2^32) by a 128-bit reference,
+//     paced + backlog == comp);
 //   * the decoder's raw count equals the true fringe count except across flagged events: the
 //     testbench reads the flags at quiet points, re-synchronises after a flagged event and clears
 //     the flags like a host would; a count lost with no flag raised fails the test.
@@ -70,7 +71,10 @@ int main(int argc, char** argv) {
                                              uni(-20000000, 20000000));  // +-600 ppm
         } else if (r < 22) {
             ns.ratio = static_cast<uint64_t>(uni(1LL << 32, (1LL << 36) - 1));  // ratio 1..16
-        } else if (r < 26) {
+        } else if (r < 24) {
+            // thermal origin term: up to +-2^16 counts, sometimes anywhere in the register
+            ns.comp_offset = uni(0, 9) == 0 ? static_cast<int64_t>(rng()) : uni(-(1LL << 48), 1LL << 48);
+        } else if (r < 27) {
             ns.pace_m = uni(2, 6);
             ns.backlog_thr = static_cast<uint64_t>(uni(8, 5000));
         } else if (r < 28 || want_clear) {

@@ -13,6 +13,13 @@
 //    so the outputs differ by at most one count, and only where N s lies within |N| 2^-33 of an
 //    integer. A random walk through golden::pulse_multiplier confirms the model computes that
 //    floor; a ratio 2 LSB off is caught by the same check (negative control).
+// 3b. The origin through the multiplier's offset register (comp = floor((N R + OFF) / 2^32)):
+//    on an integer scale S (so x = S N is a whole count and the exact thermal forms apply), the
+//    registers from (origin, alpha, T) and from (K168, K169) are identical, and the hardware
+//    output equals the exact floor(x + (x - origin) g) except where that value lies within the
+//    quantisation bound (|N| + 1) 2^-33 of an integer, and then by one count. The golden
+//    multiplier (with the offset) is checked on the same samples; an offset 2 LSB off is caught
+//    (negative control).
 // 4. Host helper round trip: settings -> register -> effective scale / ppm -> register.
 // 5. `laserax compensate`: output for three conditions, and exit 2 with a message on bad input.
 // ctest-args: --seed 3 --samples 1000000
@@ -298,6 +305,66 @@ int main(int argc, char** argv) {
             res.check(std::fabs(err) > static_cast<long double>(n) / 8589934592.0L,
                       "negative control: a ratio 2 LSB off was not caught by the bound");
         }
+    }
+
+    // ---- 3b. origin through the offset register ------------------------------------------------
+    {
+        long n_checks = 0, near_int = 0, bad = 0, differ = 0;
+        for (long long k = 0; k < samples / 4; ++k) {
+            const int64_t scale = irange(1, 16);  // output counts per raw count, exact
+            golden::thermal_params tp;
+            const double alpha_ppm = static_cast<double>(irange(-50000, 250000)) / 1000.0;
+            const double temp = static_cast<double>(irange(-20000, 80000)) / 1000.0;
+            const int64_t origin = k % 5 == 0 ? 0 : irange(-(int64_t(1) << 34), int64_t(1) << 34);  // +-1342 m
+            if (!res.check(golden::make_thermal(alpha_ppm, temp, origin, &tp).ok, "make_thermal rejected a legal input")) continue;
+            const golden::encoder_scaling es = golden::to_encoder_scaling(tp);
+            golden::encoder_scaling es2;  // the seed-002 parameters as a user would enter them
+            es2.k168 = origin;
+            es2.k169_e7 = golden::k169_e7_from_physical(alpha_ppm, temp);
+            int64_t off = 0, off2 = 0;
+            std::string err;
+            if (!res.check(lxt::comp_offset_from_scaling(es, &off, &err) && lxt::comp_offset_from_scaling(es2, &off2, &err), err)) continue;
+            res.check(off == off2 && es.k169_e7 == es2.k169_e7, "offset register from (origin, alpha, T) != from (K168, K169)");
+            // R = rha(S (1 + g) 2^32) with g = k169_e7 / 1e12, exact in int128
+            const i128 den = 1000000000000;
+            const i128 rnum = i128(scale) * (den + es.k169_e7) * (i128(1) << 32);
+            const uint64_t r = static_cast<uint64_t>((rnum * 2 + den) / (den * 2));
+            const int64_t n = k % 7 == 0 ? (k % 2 ? INT32_MAX : INT32_MIN) : irange(INT32_MIN, INT32_MAX);
+            const int64_t x = scale * n;
+            const int64_t exact = golden::thermal_output_counts(tp, x);
+            res.check(exact == golden::encoder_scaling_output_counts(es2, x), "thermal forms differ");
+            const int64_t hw = floor_div(i128(n) * i128(r) + off, i128(1) << 32);
+            golden::pulse_multiplier pm;
+            pm.reset();
+            // one golden call from N = 0 (exact range: |N| = 1)
+            res.check(pm.step(1, r, off).comp == floor_div(i128(r) + off, i128(1) << 32), "golden multiplier with offset");
+            // distance of the exact value y = x + (x - origin) g from the nearest integer, in units of 1/den
+            const i128 ynum = i128(x) * den + (i128(x) - origin) * es.k169_e7;
+            const i128 frac = ynum - i128(floor_div(ynum, den)) * den;  // 0 .. den-1
+            const i128 dist = frac < den - frac ? frac : den - frac;
+            // bound (|N| + 1) 2^-33 counts, in units of 1/den (rounded up)
+            const i128 bnd = ((i128(n < 0 ? -n : n) + 1) * den + (i128(1) << 33) - 1) / (i128(1) << 33);
+            ++n_checks;
+            if (hw != exact) ++differ;
+            if (dist <= bnd) {
+                ++near_int;
+                if (hw - exact < -1 || hw - exact > 1) ++bad;
+            } else if (hw != exact) {
+                ++bad;
+                if (bad < 5)
+                    res.check(false, "offset form: N " + s64(n) + " S " + s64(scale) + " origin " + s64(origin) + ": hardware " +
+                                         s64(hw) + " exact " + s64(exact));
+            }
+            if (k == 0) {  // negative control: an offset 2 LSB off violates the bound somewhere near
+                const int64_t hw2 = floor_div(i128(n) * i128(r) + off + 2 * (int64_t(1) << 32), i128(1) << 32);
+                res.check(hw2 != exact, "negative control: an offset 2 counts off was not caught");
+            }
+        }
+        res.check(bad == 0, std::to_string(bad) + " hardware outputs (ratio + offset registers) differ from the exact thermal form");
+        std::printf("  origin via comp_offset: %ld samples, registers identical from (origin, alpha, T) and (K168, K169);\n"
+                    "    hardware == exact floor(x + (x - origin) g) wherever the exact value is farther than (|N|+1) 2^-33\n"
+                    "    from an integer; %ld samples were within that bound, %ld of them differ by one count\n",
+                    n_checks, near_int, differ);
     }
 
     // ---- 4. host helper round trip -------------------------------------------------------------

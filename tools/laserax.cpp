@@ -39,6 +39,7 @@ const char* kUsage =
     "  --air-index N     refractive index of air (default 1.000271)\n"
     "  --air-temp-c T, --pressure-kpa P, --rh H       air for the Ciddor equation (sets the index)\n"
     "  --alpha-ppm A, --material-temp-c TM           workpiece expansion folded into the ratio\n"
+    "  --origin-um X     thermal origin (K168) from raw count 0, written to the comp_offset register\n"
     "  --ratio R         ratio register, Q5.32 integer (default from the air index)\n"
     "  --seed S          power-up position and fringe phase (default 1)\n"
     "  --cycles N        stop after N clocks (default: when the run is complete)\n"
@@ -107,6 +108,7 @@ int cmd_run(args& a, const std::string& cmdline) {
         else if (o == "--rh") { env.rh_percent = to_double(a.next(o), o); use_env = true; }
         else if (o == "--alpha-ppm") { env.alpha_ppm_per_c = to_double(a.next(o), o); use_env = true; }
         else if (o == "--material-temp-c") { env.material_temp_c = to_double(a.next(o), o); use_env = true; }
+        else if (o == "--origin-um") { env.origin_um = to_double(a.next(o), o); use_env = true; }
         else if (o == "--ratio") p.ratio = static_cast<uint64_t>(to_ll(a.next(o), o));
         else if (o == "--seed") p.seed = static_cast<uint64_t>(to_ll(a.next(o), o));
         else if (o == "--cycles") p.max_cycles = to_ll(a.next(o), o);
@@ -140,6 +142,7 @@ int cmd_run(args& a, const std::string& cmdline) {
         }
         p.air_index = comp.n;
         if (p.ratio == 0) p.ratio = comp.ratio;
+        p.comp_offset = comp.comp_offset;
     }
     if (!(p.air_index >= 1.0 && p.air_index < 1.01)) {
         std::fprintf(stderr, "laserax: --air-index must be in [1, 1.01)\n");
@@ -162,9 +165,11 @@ int cmd_run(args& a, const std::string& cmdline) {
                 r.lambda_nm, p.air_index, static_cast<unsigned long long>(r.ratio), static_cast<double>(r.ratio) / 4294967296.0);
     if (use_env)
         std::printf("  environment: air %.2f degC, %.3f kPa, %.1f %%RH -> n = %.9f (Ciddor), air %+.4f ppm; workpiece "
-                    "alpha %.2f ppm/degC at %.2f degC -> %+.4f ppm; total %+.4f ppm\n",
+                    "alpha %.2f ppm/degC at %.2f degC -> %+.4f ppm; total %+.4f ppm; origin %g um -> comp_offset %lld "
+                    "(%+.4f counts)\n",
                     env.air_temp_c, env.pressure_pa / 1000.0, env.rh_percent, comp.n, comp.air_ppm, env.alpha_ppm_per_c,
-                    env.material_temp_c, comp.expansion_ppm, comp.total_ppm);
+                    env.material_temp_c, comp.expansion_ppm, comp.total_ppm, env.origin_um,
+                    static_cast<long long>(comp.comp_offset), static_cast<double>(comp.comp_offset) / 4294967296.0);
     std::printf("  power-up %.1f nm before the switch, %lld clocks simulated (%.3f ms at %.0f MHz)\n",
                 -p.dir * r.start_nm, r.cycles, static_cast<double>(r.cycles) / p.clock_hz * 1e3, p.clock_hz / 1e6);
     std::printf("\n  %-5s %10s %14s %12s %12s %12s %10s\n", "event", "cycle", "true_nm", "real_counts", "real_um",

@@ -30,6 +30,7 @@ homing_result run_homing(const homing_params& p, const std::function<void(const 
     s.period = s.tbl_period = p.period;
     s.mark_len = p.period / 4;
     s.ratio = r.ratio;
+    s.comp_offset = p.comp_offset;
     s.glitch_n = p.glitch_n;
     s.sw_debounce = p.sw_debounce;
     s.pace_m = p.pace_m;

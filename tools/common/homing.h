@@ -19,6 +19,7 @@ struct homing_params {
     double speed_mm_s = 5.0;      // homing speed
     double air_index = kAirIndexDefault;
     uint64_t ratio = 0;           // 0: computed from air_index
+    int64_t comp_offset = 0;      // Q32.32 offset register (thermal origin)
     uint64_t seed = 1;            // power-up position and fringe phase
     long long max_cycles = 0;     // 0: until the run is complete
     double clock_hz = kClockHz;

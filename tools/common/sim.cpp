@@ -224,9 +224,10 @@ std::string dual_axis::integrity() {
         hist_n_ = 0;
     } else {
         __extension__ typedef __int128 i128;
-        const int64_t want_comp = static_cast<int64_t>((static_cast<i128>(prev_raw_) * static_cast<i128>(s_.ratio)) >> 32);
+        const int64_t want_comp = static_cast<int64_t>(
+            (static_cast<i128>(prev_raw_) * static_cast<i128>(s_.ratio) + static_cast<i128>(s_.comp_offset)) >> 32);
         if (g_.comp_pos != want_comp)
-            m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor(N*R) " + std::to_string(want_comp);
+            m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor((N*R + OFF) / 2^32) " + std::to_string(want_comp);
         else if (g_.paced_pos + g_.backlog != prev_comp_ + prev_corr_)
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
                 " != previous comp + corr " + std::to_string(prev_comp_ + prev_corr_);
