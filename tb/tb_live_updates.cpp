@@ -5,12 +5,14 @@
 // ~8.1) at speeds up to 0.3 m/s, and homes through its switch on the way. Every 200 000 clocks
 // (a time-compressed "few hundred ms") a new air reading (random walk of T, p, RH with steps of up
 // to 0.5 degC, 300 Pa, 5 %RH, exaggerated so that updates move the position) and workpiece
-// temperature (steps up to 1 degC) is turned into a ratio register by the host helper (tools/common/compensation) and
-// written while the axis moves or stands. Checks:
+// temperature (steps up to 1 degC) is turned into the ratio and comp_offset registers by the host
+// helper (tools/common/compensation; thermal origin 7.5 mm, mid-travel) and written while the
+// axis moves or stands. Checks:
 //   * hls == golden on every call, and the integrity invariant of lxt::dual_axis (controller
-//     decode == out_pos, comp == floor(N*R) with the register in force, paced + backlog == comp);
+//     decode == out_pos, comp == floor((N*R + OFF)/2^32) with the registers in force,
+//     paced + backlog == comp);
 //   * every update reaches the output exactly: once the pacer has drained after an update, the
-//     real position seen by the controller (out_pos - adj) equals floor(N * R_new / 2^32);
+//     real position seen by the controller (out_pos - adj) equals floor((N R_new + OFF_new) / 2^32);
 //   * no step larger than the pacer allows: consecutive paced counts are >= M clocks apart and the
 //     output never moves by more than one count per clock;
 //   * at least 25 updates were applied, some while moving and some at rest (at 15 mm from the
@@ -33,11 +35,13 @@ int main(int argc, char** argv) {
     lxt::comp_inputs env;
     env.alpha_ppm_per_c = 11.5;  // steel
     env.material_temp_c = 21.0;
+    env.origin_um = 7500.0;
     lxt::comp_outputs c = lxt::compute_compensation(env);
     if (!res.check(c.ok, "initial environment rejected: " + c.error)) return res.finish();
 
     lxt::axis_settings s;
     s.ratio = c.ratio;
+    s.comp_offset = c.comp_offset;
     s.pace_m = 3;
     s.backlog_thr = 1u << 20;
     s.glitch_n = 1;
@@ -77,6 +81,7 @@ int main(int argc, char** argv) {
             if (!res.check(c.ok, "environment rejected: " + c.error)) break;
             lxt::axis_settings ns = ax.settings();
             ns.ratio = c.ratio;
+            ns.comp_offset = c.comp_offset;
             ax.set(ns);
             ++updates;
             if (moving) ++updates_moving;
@@ -96,11 +101,12 @@ int main(int argc, char** argv) {
             res.expect(t - last_pstep >= s.pace_m, [&] { return "paced counts closer than M at call " + std::to_string(t); });
             last_pstep = t;
         }
-        // after an update: once drained, the real position seen downstream equals floor(N * R_new)
+        // after an update: once drained, the real position seen downstream equals floor((N R_new + OFF_new) / 2^32)
         if (pending_check && stable >= 8 && h.backlog == 0 && h.pstep == 0 && h.ostep == 0 && h.stage != 2) {
             __extension__ typedef __int128 i128;
-            const int64_t want = static_cast<int64_t>((static_cast<i128>(h.raw_count.to_int64()) *
-                                                       static_cast<i128>(ax.settings().ratio)) >> 32);
+            const int64_t want = static_cast<int64_t>(
+                (static_cast<i128>(h.raw_count.to_int64()) * static_cast<i128>(ax.settings().ratio) +
+                 static_cast<i128>(ax.settings().comp_offset)) >> 32);
             // comp has been stable for 8 calls, so the pacer and rephase have seen all of it
             if (h.comp_pos == want) {
                 res.check(h.out_pos.to_int64() - h.adj.to_int64() == want,
@@ -110,7 +116,7 @@ int main(int argc, char** argv) {
             }
         }
     }
-    std::printf("  %lld ratio updates (%lld while moving), %lld verified after draining; largest comp change at an "
+    std::printf("  %lld ratio + offset updates (%lld while moving), %lld verified after draining; largest comp change at an "
                 "update call %lld counts; final ratio %llu (%+.3f ppm)\n",
                 updates, updates_moving, checked, max_jump, static_cast<unsigned long long>(ax.settings().ratio),
                 c.total_ppm);
