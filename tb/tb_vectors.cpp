@@ -191,6 +191,7 @@ int main(int argc, char** argv) {
         lxt::vec_table t, th;
         res.check(lxt::read_file(dir + "/" + b + ".csv", text, &err), err);
         res.check(lxt::vec_from_csv(text, t, &err), std::string(b) + ".csv: " + err);
+        t.block = b;  // (the CSV reader does not set it; the replay messages name it)
         res.check(t.rows.size() == 20000, std::string(b) + ": row count");
         res.check(lxt::read_file(dir + "/" + b + ".hex", hex, &err), err);
         res.check(lxt::vec_from_hex(hex, t, th, &err), std::string(b) + ".hex: " + err);
