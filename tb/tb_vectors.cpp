@@ -2,9 +2,12 @@
 //
 // * runs the built `laserax vectors` into a temporary folder;
 // * reads every CSV back and its hex twin, which must hold the same numbers;
-// * replays the laserax_top stimulus (pins + registers) into a fresh hls axis_core and compares
-//   every expected column on every row; replays the dds_sincos and pulse_multiplier block files
-//   into fresh hls blocks the same way (the files, not the generator, are the reference here);
+// * replays the laserax_top stimulus (pins, registers, table and error-map write ports) into a
+//   fresh hls axis_core and compares every output column on every row; replays the dds_sincos
+//   (table port included) and pulse_multiplier (preset included) block files into fresh hls blocks
+//   the same way (the files, not the generator, are the reference here). Columns are found by
+//   name: a replay fails if the file has an input column it does not apply or an output column it
+//   cannot compare, so a new column cannot go unchecked;
 // * malformed files (truncated row, bad number, wrong header, wrong hex width, bad hex digit,
 //   value too wide) are rejected with a message, not a crash.
 #include <unistd.h>
@@ -20,9 +23,155 @@
 
 namespace {
 
-int64_t v(const lxt::vec_table& t, const std::vector<int64_t>& row, const char* name) {
-    const int i = t.col(name);
-    return i < 0 ? INT64_MIN : row[static_cast<size_t>(i)];
+// Input columns of one table read by name; remembers what was read, so that a replay can insist
+// on having applied every input column of the file.
+class inputs {
+public:
+    explicit inputs(const lxt::vec_table& t) : t_(t), used_(t.cols.size(), false) {}
+    void row(const std::vector<int64_t>& r) { row_ = &r; }
+    int64_t operator()(const char* name) {
+        const int i = t_.col(name);  // inputs come first: quad_decoder has an input and an output lerr
+        if (i < 0 || !t_.cols[static_cast<size_t>(i)].is_input) {
+            missing_ = name;
+            return 0;
+        }
+        used_[static_cast<size_t>(i)] = true;
+        return (*row_)[static_cast<size_t>(i)];
+    }
+    // every input column applied, and no column asked for that the file does not have
+    void report(tbu::result& res) const {
+        res.check(missing_.empty(), t_.block + " replay: the file has no input column " + missing_);
+        for (size_t i = 0; i < t_.cols.size(); ++i)
+            res.check(!t_.cols[i].is_input || used_[i], t_.block + " replay: input column " + t_.cols[i].name +
+                                                            " is not applied by the replay");
+    }
+
+private:
+    const lxt::vec_table& t_;
+    std::vector<bool> used_;
+    std::string missing_;
+    const std::vector<int64_t>* row_ = nullptr;
+};
+
+struct named {
+    const char* name;
+    int64_t value;
+};
+
+// Compares every output column of row r with the replayed value of that name; an output column
+// without a replayed value is a failure. Returns false on the first difference of the row.
+bool check_outputs(tbu::result& res, const lxt::vec_table& t, size_t r, const std::vector<named>& got) {
+    const std::vector<int64_t>& row = t.rows[r];
+    for (size_t i = 0; i < t.cols.size(); ++i) {
+        const lxt::vec_column& c = t.cols[i];
+        if (c.is_input) continue;
+        const named* g = nullptr;
+        for (const named& n : got)
+            if (c.name == n.name) g = &n;
+        if (!res.expect(g != nullptr, [&] { return t.block + " replay: no replayed value for output column " + c.name; }))
+            return false;
+        if (!res.expect(g->value == row[i], [&] {
+                return t.block + " replay row " + std::to_string(r) + " signal " + c.name + ": expected " +
+                       std::to_string(row[i]) + " got " + std::to_string(g->value);
+            }))
+            return false;
+    }
+    return true;
+}
+
+void replay_top(tbu::result& res, const lxt::vec_table& t) {
+    lx::axis_core core;
+    lxt::load_table(core, 256, 32767);
+    inputs in(t);
+    long bad = 0;
+    for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
+        in.row(t.rows[r]);
+        lxt::axis_settings s;
+        s.period = in("period");
+        s.ratio = static_cast<uint64_t>(in("ratio"));
+        s.glitch_n = in("glitch_n");
+        s.sw_debounce = in("sw_debounce");
+        s.min_spacing = in("min_spacing");
+        s.pace_m = in("pace_m");
+        s.backlog_thr = static_cast<uint64_t>(in("backlog_thr"));
+        s.mark_len = in("mark_len");
+        s.dac_width = in("dac_width");
+        s.amplitude = in("amplitude");
+        s.tbl_period = in("tbl_period");
+        s.rehome = in("rehome") != 0;
+        s.clear = in("clear") != 0;
+        s.emap.map_en = in("map_en") != 0;
+        s.emap.bank_sel = in("bank_sel") != 0;
+        s.emap.geom[0].origin = in("map_origin0");
+        s.emap.geom[0].spacing_log2 = static_cast<int>(in("map_k0"));
+        s.emap.geom[0].n_points = static_cast<int>(in("map_n0"));
+        s.emap.geom[1].origin = in("map_origin1");
+        s.emap.geom[1].spacing_log2 = static_cast<int>(in("map_k1"));
+        s.emap.geom[1].n_points = static_cast<int>(in("map_n1"));
+        s.emap.we = in("map_we") != 0;
+        s.emap.addr = static_cast<int>(in("map_addr"));
+        s.emap.data = static_cast<int32_t>(in("map_data"));
+        lx::axis_regs regs = lxt::to_hls(s);
+        regs.tbl_we = in("tbl_we") != 0;  // the table port is not a golden register
+        regs.tbl_addr = static_cast<unsigned>(in("tbl_addr"));
+        regs.tbl_data = static_cast<unsigned>(in("tbl_data"));
+        lx::axis_pins p;
+        p.a = in("a") != 0;
+        p.b = in("b") != 0;
+        p.sw = in("sw") != 0;
+        p.lerr = in("lerr") != 0;
+        const lx::axis_out o = core.step(p, regs);
+        const std::vector<named> got = {
+            {"sin", o.sin.to_int64()}, {"cos", o.cos.to_int64()}, {"ref_mark", o.ref_mark}, {"qa", o.qa},
+            {"qb", o.qb}, {"qz", o.qz}, {"cfg_err", o.cfg_err}, {"stage", o.stage.to_int64()}, {"homed", o.homed},
+            {"lerr_alarm", o.lerr_alarm}, {"illegal_st", o.illegal_st}, {"err_cnt", o.err_cnt.to_int64()},
+            {"ovs_edge_st", o.ovs_edge_st}, {"ovs_backlog_st", o.ovs_backlog_st}, {"glitch_st", o.glitch_st},
+            {"alarm", o.alarm}, {"raw_count", o.raw_count.to_int64()}, {"comp_pos", o.comp_pos.to_int64()},
+            {"paced_pos", o.paced_pos.to_int64()}, {"out_pos", o.out_pos.to_int64()}, {"d", o.d.to_int64()},
+            {"step", o.step.to_int64()}, {"delta", o.delta.to_int64()}, {"backlog", o.backlog.to_int64()},
+            {"pstep", o.pstep.to_int64()}, {"ostep", o.ostep.to_int64()}, {"adj", o.adj.to_int64()},
+            {"a_pos", o.a_pos.to_int64()}, {"b_pos", o.b_pos.to_int64()}, {"c_pos", o.c_pos.to_int64()},
+            {"z_pos", o.z_pos.to_int64()}, {"rep_mark", o.rep_mark}, {"map_cfg_err", o.map_cfg_err},
+            {"corr", o.corr.to_int64()}, {"map_delta", o.map_delta.to_int64()}};
+        if (!check_outputs(res, t, r, got)) ++bad;
+    }
+    in.report(res);
+    const std::vector<int64_t>& last = t.rows.back();
+    const int stage = t.col("stage");
+    res.check(stage >= 0 && (last[static_cast<size_t>(stage)] == 3 || last[static_cast<size_t>(stage)] == 1),
+              "vectors end in an odd stage");
+}
+
+void replay_dds(tbu::result& res, const lxt::vec_table& t) {
+    lx::dds_sincos d;  // power-up table: P = 256, amp = 32767
+    inputs in(t);
+    long bad = 0;
+    for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
+        in.row(t.rows[r]);
+        const bool we = in("tbl_we") != 0;
+        const unsigned addr = static_cast<unsigned>(in("tbl_addr"));
+        const uint32_t data = static_cast<uint32_t>(in("tbl_data"));
+        if (we) d.write(addr, data);  // before the step of the same call, as axis_core::step()
+        const lx::dds_sincos::out_t o = d.step(lx::step_t(in("ostep")), static_cast<unsigned>(in("period")),
+                                               static_cast<unsigned>(in("amplitude")));
+        if (!check_outputs(res, t, r, {{"sin", o.sin.to_int64()}, {"cos", o.cos.to_int64()}})) ++bad;
+    }
+    in.report(res);
+}
+
+void replay_multiplier(tbu::result& res, const lxt::vec_table& t) {
+    lx::pulse_multiplier m;
+    inputs in(t);
+    long bad = 0;
+    for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
+        in.row(t.rows[r]);
+        const uint64_t ratio = static_cast<uint64_t>(in("ratio"));
+        const int64_t preset_n = in("preset_n");
+        if (in("preset") != 0) m.preset(lx::raw_t(preset_n), lx::ratio_t(ratio));
+        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(in("step")), lx::ratio_t(ratio));
+        if (!check_outputs(res, t, r, {{"comp", o.comp.to_int64()}, {"delta", o.delta.to_int64()}})) ++bad;
+    }
+    in.report(res);
 }
 
 }  // namespace
@@ -42,6 +191,7 @@ int main(int argc, char** argv) {
         lxt::vec_table t, th;
         res.check(lxt::read_file(dir + "/" + b + ".csv", text, &err), err);
         res.check(lxt::vec_from_csv(text, t, &err), std::string(b) + ".csv: " + err);
+        t.block = b;  // (the CSV reader does not set it; the replay messages name it)
         res.check(t.rows.size() == 20000, std::string(b) + ": row count");
         res.check(lxt::read_file(dir + "/" + b + ".hex", hex, &err), err);
         res.check(lxt::vec_from_hex(hex, t, th, &err), std::string(b) + ".hex: " + err);
@@ -49,69 +199,9 @@ int main(int argc, char** argv) {
         res.check(text.find("Command: ") != std::string::npos && hex.find("Command: ") != std::string::npos,
                   std::string(b) + ": no generating command in the header");
 
-        if (std::string(b) == "laserax_top") {
-            lx::axis_core core;
-            lxt::load_table(core, 256, 32767);
-            const char* outs[] = {"sin", "cos", "ref_mark", "qa", "qb", "qz", "cfg_err", "stage", "alarm", "err_cnt",
-                                  "raw_count", "comp_pos", "paced_pos", "out_pos", "d"};
-            long bad = 0;
-            for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
-                const std::vector<int64_t>& row = t.rows[r];
-                lxt::axis_settings s;
-                s.period = v(t, row, "period");
-                s.ratio = static_cast<uint64_t>(v(t, row, "ratio"));
-                s.glitch_n = v(t, row, "glitch_n");
-                s.sw_debounce = v(t, row, "sw_debounce");
-                s.min_spacing = v(t, row, "min_spacing");
-                s.pace_m = v(t, row, "pace_m");
-                s.backlog_thr = static_cast<uint64_t>(v(t, row, "backlog_thr"));
-                s.mark_len = v(t, row, "mark_len");
-                s.dac_width = v(t, row, "dac_width");
-                s.amplitude = v(t, row, "amplitude");
-                s.tbl_period = v(t, row, "tbl_period");
-                s.rehome = v(t, row, "rehome") != 0;
-                s.clear = v(t, row, "clear") != 0;
-                lx::axis_pins p;
-                p.a = v(t, row, "a") != 0;
-                p.b = v(t, row, "b") != 0;
-                p.sw = v(t, row, "sw") != 0;
-                p.lerr = v(t, row, "lerr") != 0;
-                const lx::axis_out o = core.step(p, lxt::to_hls(s));
-                const int64_t got[] = {o.sin.to_int64(), o.cos.to_int64(), o.ref_mark, o.qa, o.qb, o.qz, o.cfg_err,
-                                       o.stage.to_int64(), o.alarm, o.err_cnt.to_int64(), o.raw_count.to_int64(),
-                                       o.comp_pos.to_int64(), o.paced_pos.to_int64(), o.out_pos.to_int64(), o.d.to_int64()};
-                for (size_t k = 0; k < sizeof(outs) / sizeof(outs[0]); ++k) {
-                    if (got[k] != v(t, row, outs[k])) {
-                        ++bad;
-                        res.check(false, std::string("laserax_top replay row ") + std::to_string(r) + " signal " + outs[k] +
-                                             ": expected " + std::to_string(v(t, row, outs[k])) + " got " +
-                                             std::to_string(got[k]));
-                        break;
-                    }
-                    res.check(true, "");
-                }
-            }
-            const std::vector<int64_t>& last = t.rows.back();
-            res.check(v(t, last, "stage") == 3 || v(t, last, "stage") == 1, "vectors end in an odd stage");
-        }
-        if (std::string(b) == "dds_sincos") {
-            lx::dds_sincos d;
-            for (size_t r = 0; r < t.rows.size(); ++r) {
-                const std::vector<int64_t>& row = t.rows[r];
-                const lx::dds_sincos::out_t o = d.step(v(t, row, "ostep"), v(t, row, "period"), v(t, row, "amplitude"));
-                res.expect(o.sin == v(t, row, "sin") && o.cos == v(t, row, "cos"),
-                           [&] { return "dds_sincos replay row " + std::to_string(r); });
-            }
-        }
-        if (std::string(b) == "pulse_multiplier") {
-            lx::pulse_multiplier m;
-            for (size_t r = 0; r < t.rows.size(); ++r) {
-                const std::vector<int64_t>& row = t.rows[r];
-                const lx::pulse_multiplier::out_t o = m.step(v(t, row, "step"), static_cast<uint64_t>(v(t, row, "ratio")));
-                res.expect(o.comp == v(t, row, "comp") && o.delta == v(t, row, "delta"),
-                           [&] { return "pulse_multiplier replay row " + std::to_string(r); });
-            }
-        }
+        if (std::string(b) == "laserax_top") replay_top(res, t);
+        if (std::string(b) == "dds_sincos") replay_dds(res, t);
+        if (std::string(b) == "pulse_multiplier") replay_multiplier(res, t);
     }
 
     // malformed input
@@ -122,20 +212,41 @@ int main(int argc, char** argv) {
     const size_t hdr = text.find("step,ratio");
     const size_t row1 = text.find('\n', hdr) + 1;
     const std::string head = text.substr(0, row1);
+    const size_t ncol = layout.cols.size();
+    // a data row: first value, then ratio, then zeros, `values` values in all
+    auto row_with = [](const std::string& first, size_t values) {
+        std::string r = first + ",34789620252";
+        for (size_t k = 2; k < values; ++k) r += ",0";
+        return r + "\n";
+    };
+    std::string bad_header = text.substr(hdr, row1 - hdr);
+    bad_header.replace(bad_header.find("ratio"), 5, "ratioX");
+    err.clear();
+    res.check(lxt::vec_from_csv(head + row_with("1", ncol), t, &err) && t.rows.size() == 1,
+              "well-formed CSV row rejected (the malformed cases below would prove nothing): " + err);
     const std::string mutations[] = {
-        head + "1,34789620252,0\n",                 // missing value
-        head + "1,34789620252,0,0,9\n",             // extra value
-        head + "x,34789620252,0,0\n",               // not a number
-        head + "5,34789620252,0,0\n",               // step 5 does not fit 2 signed bits
-        text.substr(0, hdr) + "step,ratioX,comp,delta\n",  // header mismatch
-        std::string("1,2,3,4\n"),                   // no header at all
+        head + row_with("1", ncol - 1),        // missing value
+        head + row_with("1", ncol + 1),        // extra value
+        head + row_with("x", ncol),            // not a number
+        head + row_with("5", ncol),            // step 5 does not fit 2 signed bits
+        text.substr(0, hdr) + bad_header,      // header mismatch
+        std::string("1,2,3,4,5,6\n"),          // no header at all
     };
     for (const std::string& m : mutations) {
         err.clear();
         res.check(!lxt::vec_from_csv(m, t, &err) && !err.empty(), "malformed CSV accepted: " + m.substr(m.size() > 40 ? m.size() - 40 : 0));
     }
-    const std::string hex_bad[] = {"0001\n", "zz0000000000000000000000000000\n",
-                                   std::string(2 + 10 + 10 + 10, 'f') + "\n"};
+    size_t width = 0;  // hex digits per line
+    for (const lxt::vec_column& c : layout.cols) width += static_cast<size_t>((c.bits + 3) / 4);
+    err.clear();
+    res.check(lxt::vec_from_hex(std::string(width, '0') + "\n", layout, t, &err) && t.rows.size() == 1,
+              "well-formed hex line rejected: " + err);
+    const std::string hex_bad[] = {
+        "0001\n",                                        // wrong line length
+        std::string(width + 1, '0') + "\n",              // one digit too many
+        "zz" + std::string(width - 2, '0') + "\n",       // not a hex digit
+        "f" + std::string(width - 1, '0') + "\n",        // step 15 wider than 2 bits
+    };
     for (const std::string& m : hex_bad) {
         err.clear();
         res.check(!lxt::vec_from_hex(m, layout, t, &err) && !err.empty(), "malformed hex accepted: " + m);

@@ -21,11 +21,11 @@
 //   rephase_stress          random homing, reversals inside the window, rehome/unhome, periods and
 //                           mark lengths;
 //   dds_sincos_stress       table writes while running, every period preset up to 4096, amplitudes.
-// The column layout of input_filter, quad_decoder, output_pacer and rephase is that of the standard
-// files (same testbench); pulse_multiplier gains `preset, preset_n` (a row with preset = 1 first
-// loads N = preset_n and R = ratio, as pulse_multiplier::preset(), then steps), dds_sincos and
-// laserax_top gain the table port `tbl_we, tbl_addr, tbl_data` (laserax_top_stress also has the
-// error-map columns of laserax_top).
+// Every file has the column layout of the golden file of its block (lxt::vec_layout(), shared with
+// `laserax vectors`), so one testbench rtl_ref/tb/tb_<block>.v runs both sets. The columns the
+// golden sets hold at 0 are exercised here: pulse_multiplier `preset, preset_n` (a row with
+// preset = 1 first loads N = preset_n and R = ratio, as pulse_multiplier::preset(), then steps) and
+// the table port `tbl_we, tbl_addr, tbl_data` of dds_sincos and laserax_top.
 //
 // Usage: rtl_stress_vectors --out DIR [--seed N] [--calls N]   writes DIR/<block>_stress.hex
 #include <sys/stat.h>
@@ -46,13 +46,7 @@
 
 namespace {
 
-using lxt::vec_column;
 using lxt::vec_table;
-using W = lx::axis_widths;
-using EM = lx::error_map_cfg;
-
-vec_column in(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, true}; }
-vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, false}; }
 
 int64_t i64(bool b) { return b ? 1 : 0; }
 
@@ -72,25 +66,7 @@ const int kPresets[] = {256, 320, 512, 640, 1280, 4096, 8, 64, 1024};
 // ---- laserax_top ----------------------------------------------------------------------------
 
 vec_table top_stress(rng_t& r, long long calls) {
-    vec_table t{"laserax_top_stress", {}, {}};
-    t.cols = {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
-              in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
-              in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
-              in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
-              in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
-              in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
-              in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
-              in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
-              out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
-              out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
-              out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
-              out("glitch_st", 1), out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
-              out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
-              out("step", 2, true), out("delta", W::W_DELTA, true), out("backlog", W::W_BACKLOG, true),
-              out("pstep", 2, true), out("ostep", 2, true), out("adj", W::W_POS, true),
-              out("a_pos", W::W_POS, true), out("b_pos", W::W_POS, true), out("c_pos", W::W_POS, true),
-              out("z_pos", W::W_POS, true), out("rep_mark", 1), out("map_cfg_err", 1), out("corr", EM::W_C, true),
-              out("map_delta", EM::W_CDELTA, true)};
+    vec_table t{"laserax_top_stress", lxt::vec_layout("laserax_top"), {}};
 
     lx::axis_core core;  // power-up: P = 256 table, period register history 256
     lx::axis_regs g;     // register values the host has written (reset values, then changes)
@@ -301,7 +277,7 @@ vec_table top_stress(rng_t& r, long long calls) {
 // ---- blocks ---------------------------------------------------------------------------------
 
 vec_table filter_stress(rng_t& r, long long calls) {
-    vec_table t{"input_filter_stress", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)}, {}};
+    vec_table t{"input_filter_stress", lxt::vec_layout("input_filter"), {}};
     lx::input_filter<8> f;
     bool pin = false;
     long long run = 0;
@@ -319,12 +295,7 @@ vec_table filter_stress(rng_t& r, long long calls) {
 }
 
 vec_table decoder_stress(rng_t& r, long long calls) {
-    vec_table t{"quad_decoder_stress",
-                {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
-                 out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
-                 out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1),
-                 out("glitch_st", 1)},
-                {}};
+    vec_table t{"quad_decoder_stress", lxt::vec_layout("quad_decoder"), {}};
     lx::quad_decoder d;
     int64_t n = 0;
     int dir = 1;
@@ -356,10 +327,7 @@ vec_table decoder_stress(rng_t& r, long long calls) {
 }
 
 vec_table multiplier_stress(rng_t& r, long long calls) {
-    vec_table t{"pulse_multiplier_stress",
-                {in("step", 2, true), in("ratio", W::W_RATIO), in("preset", 1), in("preset_n", W::W_RAW, true),
-                 out("comp", W::W_POS, true), out("delta", W::W_DELTA, true)},
-                {}};
+    vec_table t{"pulse_multiplier_stress", lxt::vec_layout("pulse_multiplier"), {}};
     lx::pulse_multiplier m;
     uint64_t ratio = lx::axis_core_cfg::RATIO_DEFAULT;
     int dir = 1;
@@ -386,10 +354,7 @@ vec_table multiplier_stress(rng_t& r, long long calls) {
 }
 
 vec_table pacer_stress(rng_t& r, long long calls) {
-    vec_table t{"output_pacer_stress",
-                {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), out("pstep", 2, true),
-                 out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true), out("ovs", 1), out("ovs_st", 1)},
-                {}};
+    vec_table t{"output_pacer_stress", lxt::vec_layout("output_pacer"), {}};
     lx::output_pacer p;
     unsigned m = 3;
     uint64_t thr = 20;
@@ -409,13 +374,7 @@ vec_table pacer_stress(rng_t& r, long long calls) {
 }
 
 vec_table rephase_stress(rng_t& r, long long calls) {
-    vec_table t{"rephase_stress",
-                {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
-                 in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
-                 out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
-                 out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
-                 out("adj", W::W_POS, true), out("homed", 1)},
-                {}};
+    vec_table t{"rephase_stress", lxt::vec_layout("rephase"), {}};
     lx::rephase rp;
     int64_t pos = 0, sw_pos = 40;
     int dir = 1;
@@ -455,11 +414,7 @@ vec_table rephase_stress(rng_t& r, long long calls) {
 }
 
 vec_table dds_stress(rng_t& r, long long calls) {
-    vec_table t{"dds_sincos_stress",
-                {in("ostep", 2, true), in("period", W::W_P), in("amplitude", W::W_DAC_MAX), in("tbl_we", 1),
-                 in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL), out("sin", W::W_DAC_MAX, true),
-                 out("cos", W::W_DAC_MAX, true)},
-                {}};
+    vec_table t{"dds_sincos_stress", lxt::vec_layout("dds_sincos"), {}};
     lx::dds_sincos d;  // power-up table: P = 256, amp = 32767
     // periods only grow, so the offset r always stays below the new quarter (no reset here)
     const int periods[] = {256, 320, 512, 640, 1280, 4096};
@@ -547,6 +502,11 @@ int main(int argc, char** argv) {
     tables.push_back(dds_stress(r, calls));
     tables.push_back(top_stress(r, 3 * calls));
     for (const vec_table& t : tables) {
+        std::string err;
+        if (!lxt::vec_check(t, &err)) {
+            std::fprintf(stderr, "rtl_stress_vectors: %s\n", err.c_str());
+            return 1;
+        }
         const std::string path = dir + "/" + t.block + ".hex";
         std::ofstream f(path);
         f << lxt::vec_to_hex(t, command);

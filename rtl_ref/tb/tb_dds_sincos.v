@@ -1,10 +1,17 @@
+// GENERATED FILE - do not edit. Command: /usr/bin/python3 scripts/gen_rtl_tb.py --out rtl_ref/tb
 // tb_dds_sincos.v — vector testbench of rtl_ref/dds_sincos.v.
+// Spec: block dds_sincos of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
-// DUT: dds_sincos (table RAM at its power-up contents, P = 256, amp = 32767; write port idle).
-// Reads dds_sincos.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies
-// the row's inputs before a rising clock edge and compares every output column with the DUT
-// outputs after that edge. Row k is call k after reset: the DUT is held in reset for a few
-// edges, row 0 is applied together with the release of i_rst.
+// DUT: dds_sincos, table RAM at its power-up contents TBL_FILE (P = 256, amp = 32767); the table
+// write port comes from the vectors (idle in the golden set; table loads, stray writes read in the
+// same call and periods up to 4096 in the stress set).
+// Reads one vector file in the format of docs/VECTORS.md: dds_sincos.hex (golden vectors, `laserax
+// vectors`; CTest rtl_dds_sincos) or dds_sincos_stress.hex (rtl_stress_vectors,
+// rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest rtl_dds_sincos_stress); both
+// have the field list below. For every row it applies the row's inputs before a rising clock edge
+// and compares every output column with the DUT outputs after that edge. Row k is call k after
+// reset: the DUT is held in reset for a few edges, row 0 is applied together with the release of
+// i_rst.
 // Mismatches print `cycle N signal S: expected E got G` (the first 10); the last line is
 // `PASS ...` or `FAIL ...` (scripts/rtl_sim.sh checks it).
 //
@@ -15,6 +22,9 @@
 //   field ostep in 2 signed
 //   field period in 13 unsigned
 //   field amplitude in 18 unsigned
+//   field tbl_we in 1 unsigned
+//   field tbl_addr in 10 unsigned
+//   field tbl_data in 17 unsigned
 //   field sin out 18 signed
 //   field cos out 18 signed
 `timescale 1ns / 1ps
@@ -23,7 +33,7 @@
 module tb_dds_sincos;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
-    localparam integer ROW_BITS = 80;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 116;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_dds_sincos";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -34,9 +44,9 @@ module tb_dds_sincos;
     reg  [1:0] i_ostep;
     reg  [12:0] i_period;
     reg  [17:0] i_amplitude;
-    reg  i_tbl_we;   // idle
-    reg  [9:0] i_tbl_addr;   // idle
-    reg  [16:0] i_tbl_data;   // idle
+    reg  i_tbl_we;
+    reg  [9:0] i_tbl_addr;
+    reg  [16:0] i_tbl_data;
     wire [17:0] o_sin;
     wire [17:0] o_cos;
 
@@ -57,9 +67,12 @@ module tb_dds_sincos;
 
     task apply_inputs;
         begin
-            i_ostep = row[77:76];
-            i_period = row[72:60];
-            i_amplitude = row[57:40];
+            i_ostep = row[113:112];
+            i_period = row[108:96];
+            i_amplitude = row[93:76];
+            i_tbl_we = row[72:72];
+            i_tbl_addr = row[69:60];
+            i_tbl_data = row[56:40];
         end
     endtask
 

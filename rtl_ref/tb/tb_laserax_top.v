@@ -1,10 +1,17 @@
+// GENERATED FILE - do not edit. Command: /usr/bin/python3 scripts/gen_rtl_tb.py --out rtl_ref/tb
 // tb_laserax_top.v — vector testbench of rtl_ref/laserax_top.v.
+// Spec: block laserax_top of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
-// DUT: laserax_top (whole chain; the table write port is idle, as in the vectors).
-// Reads laserax_top.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies
-// the row's inputs before a rising clock edge and compares every output column with the DUT
-// outputs after that edge. Row k is call k after reset: the DUT is held in reset for a few
-// edges, row 0 is applied together with the release of i_rst.
+// DUT: laserax_top (whole chain), table RAM at its power-up contents TBL_FILE; every input is a
+// column (the table write port is idle in the golden set; period changes with table reloads,
+// invalid configurations and the error map run in the stress set).
+// Reads one vector file in the format of docs/VECTORS.md: laserax_top.hex (golden vectors, `laserax
+// vectors`; CTest rtl_laserax_top) or laserax_top_stress.hex (rtl_stress_vectors,
+// rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest rtl_laserax_top_stress); both
+// have the field list below. For every row it applies the row's inputs before a rising clock edge
+// and compares every output column with the DUT outputs after that edge. Row k is call k after
+// reset: the DUT is held in reset for a few edges, row 0 is applied together with the release of
+// i_rst.
 // Mismatches print `cycle N signal S: expected E got G` (the first 10); the last line is
 // `PASS ...` or `FAIL ...` (scripts/rtl_sim.sh checks it).
 //
@@ -29,6 +36,9 @@
 //   field tbl_period in 13 unsigned
 //   field rehome in 1 unsigned
 //   field clear in 1 unsigned
+//   field tbl_we in 1 unsigned
+//   field tbl_addr in 10 unsigned
+//   field tbl_data in 17 unsigned
 //   field map_en in 1 unsigned
 //   field bank_sel in 1 unsigned
 //   field map_origin0 in 38 signed
@@ -61,6 +71,17 @@
 //   field paced_pos out 38 signed
 //   field out_pos out 38 signed
 //   field d out 12 unsigned
+//   field step out 2 signed
+//   field delta out 39 signed
+//   field backlog out 40 signed
+//   field pstep out 2 signed
+//   field ostep out 2 signed
+//   field adj out 38 signed
+//   field a_pos out 38 signed
+//   field b_pos out 38 signed
+//   field c_pos out 38 signed
+//   field z_pos out 38 signed
+//   field rep_mark out 1 unsigned
 //   field map_cfg_err out 1 unsigned
 //   field corr out 17 signed
 //   field map_delta out 18 signed
@@ -70,7 +91,7 @@
 module tb_laserax_top;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
-    localparam integer ROW_BITS = 704;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 1036;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_top";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -95,9 +116,9 @@ module tb_laserax_top;
     reg  [12:0] i_tbl_period;
     reg  i_rehome;
     reg  i_clear;
-    reg  i_tbl_we;   // idle
-    reg  [9:0] i_tbl_addr;   // idle
-    reg  [16:0] i_tbl_data;   // idle
+    reg  i_tbl_we;
+    reg  [9:0] i_tbl_addr;
+    reg  [16:0] i_tbl_data;
     reg  i_map_en;
     reg  i_bank_sel;
     reg  [37:0] i_map_origin0;
@@ -126,21 +147,21 @@ module tb_laserax_top;
     wire o_glitch_st;
     wire o_alarm;
     wire [31:0] o_raw_count;
-    wire [1:0] o_step;   // not in the vectors
     wire [37:0] o_comp_pos;
-    wire [38:0] o_delta;   // not in the vectors
-    wire [39:0] o_backlog;   // not in the vectors
-    wire [1:0] o_pstep;   // not in the vectors
     wire [37:0] o_paced_pos;
-    wire [1:0] o_ostep;   // not in the vectors
     wire [37:0] o_out_pos;
-    wire [37:0] o_adj;   // not in the vectors
-    wire [37:0] o_a_pos;   // not in the vectors
-    wire [37:0] o_b_pos;   // not in the vectors
-    wire [37:0] o_c_pos;   // not in the vectors
-    wire [37:0] o_z_pos;   // not in the vectors
     wire [11:0] o_d;
-    wire o_rep_mark;   // not in the vectors
+    wire [1:0] o_step;
+    wire [38:0] o_delta;
+    wire [39:0] o_backlog;
+    wire [1:0] o_pstep;
+    wire [1:0] o_ostep;
+    wire [37:0] o_adj;
+    wire [37:0] o_a_pos;
+    wire [37:0] o_b_pos;
+    wire [37:0] o_c_pos;
+    wire [37:0] o_z_pos;
+    wire o_rep_mark;
     wire o_map_cfg_err;
     wire [16:0] o_corr;
     wire [17:0] o_map_delta;
@@ -196,20 +217,20 @@ module tb_laserax_top;
         .o_glitch_st(o_glitch_st),
         .o_alarm(o_alarm),
         .o_raw_count(o_raw_count),
-        .o_step(o_step),
         .o_comp_pos(o_comp_pos),
+        .o_paced_pos(o_paced_pos),
+        .o_out_pos(o_out_pos),
+        .o_d(o_d),
+        .o_step(o_step),
         .o_delta(o_delta),
         .o_backlog(o_backlog),
         .o_pstep(o_pstep),
-        .o_paced_pos(o_paced_pos),
         .o_ostep(o_ostep),
-        .o_out_pos(o_out_pos),
         .o_adj(o_adj),
         .o_a_pos(o_a_pos),
         .o_b_pos(o_b_pos),
         .o_c_pos(o_c_pos),
         .o_z_pos(o_z_pos),
-        .o_d(o_d),
         .o_rep_mark(o_rep_mark),
         .o_map_cfg_err(o_map_cfg_err),
         .o_corr(o_corr),
@@ -220,34 +241,37 @@ module tb_laserax_top;
 
     task apply_inputs;
         begin
-            i_a = row[700:700];
-            i_b = row[696:696];
-            i_sw = row[692:692];
-            i_lerr = row[688:688];
-            i_period = row[684:672];
-            i_ratio = row[668:632];
-            i_glitch_n = row[631:624];
-            i_sw_debounce = row[623:608];
-            i_min_spacing = row[607:592];
-            i_pace_m = row[591:576];
-            i_backlog_thr = row[575:544];
-            i_mark_len = row[540:528];
-            i_dac_width = row[524:520];
-            i_amplitude = row[517:500];
-            i_tbl_period = row[496:484];
-            i_rehome = row[480:480];
-            i_clear = row[476:476];
-            i_map_en = row[472:472];
-            i_bank_sel = row[468:468];
-            i_map_origin0 = row[465:428];
-            i_map_k0 = row[424:420];
-            i_map_n0 = row[419:408];
-            i_map_origin1 = row[405:368];
-            i_map_k1 = row[364:360];
-            i_map_n1 = row[359:348];
-            i_map_we = row[344:344];
-            i_map_addr = row[342:332];
-            i_map_data = row[331:308];
+            i_a = row[1032:1032];
+            i_b = row[1028:1028];
+            i_sw = row[1024:1024];
+            i_lerr = row[1020:1020];
+            i_period = row[1016:1004];
+            i_ratio = row[1000:964];
+            i_glitch_n = row[963:956];
+            i_sw_debounce = row[955:940];
+            i_min_spacing = row[939:924];
+            i_pace_m = row[923:908];
+            i_backlog_thr = row[907:876];
+            i_mark_len = row[872:860];
+            i_dac_width = row[856:852];
+            i_amplitude = row[849:832];
+            i_tbl_period = row[828:816];
+            i_rehome = row[812:812];
+            i_clear = row[808:808];
+            i_tbl_we = row[804:804];
+            i_tbl_addr = row[801:792];
+            i_tbl_data = row[788:772];
+            i_map_en = row[768:768];
+            i_bank_sel = row[764:764];
+            i_map_origin0 = row[761:724];
+            i_map_k0 = row[720:716];
+            i_map_n0 = row[715:704];
+            i_map_origin1 = row[701:664];
+            i_map_k1 = row[660:656];
+            i_map_n1 = row[655:644];
+            i_map_we = row[640:640];
+            i_map_addr = row[638:628];
+            i_map_data = row[627:604];
         end
     endtask
 
@@ -289,27 +313,38 @@ module tb_laserax_top;
 
     task check_outputs;
         begin
-            check("sin", row[305:288], o_sin, 18, 1);
-            check("cos", row[285:268], o_cos, 18, 1);
-            check("ref_mark", row[264:264], o_ref_mark, 1, 0);
-            check("qa", row[260:260], o_qa, 1, 0);
-            check("qb", row[256:256], o_qb, 1, 0);
-            check("qz", row[252:252], o_qz, 1, 0);
-            check("cfg_err", row[248:248], o_cfg_err, 1, 0);
-            check("stage", row[245:244], o_stage, 2, 0);
-            check("homed", row[240:240], o_homed, 1, 0);
-            check("lerr_alarm", row[236:236], o_lerr_alarm, 1, 0);
-            check("illegal_st", row[232:232], o_illegal_st, 1, 0);
-            check("err_cnt", row[231:224], o_err_cnt, 8, 0);
-            check("ovs_edge_st", row[220:220], o_ovs_edge_st, 1, 0);
-            check("ovs_backlog_st", row[216:216], o_ovs_backlog_st, 1, 0);
-            check("glitch_st", row[212:212], o_glitch_st, 1, 0);
-            check("alarm", row[208:208], o_alarm, 1, 0);
-            check("raw_count", row[207:176], o_raw_count, 32, 1);
-            check("comp_pos", row[173:136], o_comp_pos, 38, 1);
-            check("paced_pos", row[133:96], o_paced_pos, 38, 1);
-            check("out_pos", row[93:56], o_out_pos, 38, 1);
-            check("d", row[55:44], o_d, 12, 0);
+            check("sin", row[601:584], o_sin, 18, 1);
+            check("cos", row[581:564], o_cos, 18, 1);
+            check("ref_mark", row[560:560], o_ref_mark, 1, 0);
+            check("qa", row[556:556], o_qa, 1, 0);
+            check("qb", row[552:552], o_qb, 1, 0);
+            check("qz", row[548:548], o_qz, 1, 0);
+            check("cfg_err", row[544:544], o_cfg_err, 1, 0);
+            check("stage", row[541:540], o_stage, 2, 0);
+            check("homed", row[536:536], o_homed, 1, 0);
+            check("lerr_alarm", row[532:532], o_lerr_alarm, 1, 0);
+            check("illegal_st", row[528:528], o_illegal_st, 1, 0);
+            check("err_cnt", row[527:520], o_err_cnt, 8, 0);
+            check("ovs_edge_st", row[516:516], o_ovs_edge_st, 1, 0);
+            check("ovs_backlog_st", row[512:512], o_ovs_backlog_st, 1, 0);
+            check("glitch_st", row[508:508], o_glitch_st, 1, 0);
+            check("alarm", row[504:504], o_alarm, 1, 0);
+            check("raw_count", row[503:472], o_raw_count, 32, 1);
+            check("comp_pos", row[469:432], o_comp_pos, 38, 1);
+            check("paced_pos", row[429:392], o_paced_pos, 38, 1);
+            check("out_pos", row[389:352], o_out_pos, 38, 1);
+            check("d", row[351:340], o_d, 12, 0);
+            check("step", row[337:336], o_step, 2, 1);
+            check("delta", row[334:296], o_delta, 39, 1);
+            check("backlog", row[295:256], o_backlog, 40, 1);
+            check("pstep", row[253:252], o_pstep, 2, 1);
+            check("ostep", row[249:248], o_ostep, 2, 1);
+            check("adj", row[245:208], o_adj, 38, 1);
+            check("a_pos", row[205:168], o_a_pos, 38, 1);
+            check("b_pos", row[165:128], o_b_pos, 38, 1);
+            check("c_pos", row[125:88], o_c_pos, 38, 1);
+            check("z_pos", row[85:48], o_z_pos, 38, 1);
+            check("rep_mark", row[44:44], o_rep_mark, 1, 0);
             check("map_cfg_err", row[40:40], o_map_cfg_err, 1, 0);
             check("corr", row[36:20], o_corr, 17, 1);
             check("map_delta", row[17:0], o_map_delta, 18, 1);

@@ -1,10 +1,17 @@
+// GENERATED FILE - do not edit. Command: /usr/bin/python3 scripts/gen_rtl_tb.py --out rtl_ref/tb
 // tb_pulse_multiplier.v — vector testbench of rtl_ref/pulse_multiplier.v.
+// Spec: block pulse_multiplier of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
-// DUT: pulse_multiplier.
-// Reads pulse_multiplier.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies
-// the row's inputs before a rising clock edge and compares every output column with the DUT
-// outputs after that edge. Row k is call k after reset: the DUT is held in reset for a few
-// edges, row 0 is applied together with the release of i_rst.
+// DUT: pulse_multiplier. A row with preset = 1 first loads the DUT registers as
+// pulse_multiplier::preset(preset_n, ratio) does (the preset is a C++ testbench aid, not an RTL
+// port; always 0 in the golden set), then steps.
+// Reads one vector file in the format of docs/VECTORS.md: pulse_multiplier.hex (golden vectors,
+// `laserax vectors`; CTest rtl_pulse_multiplier) or pulse_multiplier_stress.hex
+// (rtl_stress_vectors, rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest
+// rtl_pulse_multiplier_stress); both have the field list below. For every row it applies the row's
+// inputs before a rising clock edge and compares every output column with the DUT outputs after
+// that edge. Row k is call k after reset: the DUT is held in reset for a few edges, row 0 is
+// applied together with the release of i_rst.
 // Mismatches print `cycle N signal S: expected E got G` (the first 10); the last line is
 // `PASS ...` or `FAIL ...` (scripts/rtl_sim.sh checks it).
 //
@@ -14,6 +21,8 @@
 // vector fields (must equal the `// field` lines of the .hex file; scripts/rtl_sim.sh checks):
 //   field step in 2 signed
 //   field ratio in 37 unsigned
+//   field preset in 1 unsigned
+//   field preset_n in 32 signed
 //   field comp out 38 signed
 //   field delta out 39 signed
 `timescale 1ns / 1ps
@@ -21,7 +30,7 @@
 
 module tb_pulse_multiplier;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 124;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 160;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_pulse_multiplier";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -45,10 +54,20 @@ module tb_pulse_multiplier;
 
     `include "tb_common.vh"
 
+    // pulse_multiplier::preset(N, R): N and R loaded, acc = N * R, comp = acc >> 32
+    reg signed [69:0] preset_acc;
+
     task apply_inputs;
         begin
-            i_step = row[121:120];
-            i_ratio = row[116:80];
+            i_step = row[157:156];
+            i_ratio = row[152:116];
+            if (row[112:112]) begin
+                preset_acc = $signed(row[111:80]) * $signed({1'b0, row[152:116]});
+                dut.n_q    = row[111:80];
+                dut.r_q    = row[152:116];
+                dut.acc_q  = preset_acc;
+                dut.comp_q = preset_acc[69:32];
+            end
         end
     endtask
 

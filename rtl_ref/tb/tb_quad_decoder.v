@@ -1,10 +1,15 @@
+// GENERATED FILE - do not edit. Command: /usr/bin/python3 scripts/gen_rtl_tb.py --out rtl_ref/tb
 // tb_quad_decoder.v — vector testbench of rtl_ref/quad_decoder.v.
+// Spec: block quad_decoder of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
 // DUT: quad_decoder.
-// Reads quad_decoder.hex written by `laserax vectors` (docs/VECTORS.md) and, for every row, applies
-// the row's inputs before a rising clock edge and compares every output column with the DUT
-// outputs after that edge. Row k is call k after reset: the DUT is held in reset for a few
-// edges, row 0 is applied together with the release of i_rst.
+// Reads one vector file in the format of docs/VECTORS.md: quad_decoder.hex (golden vectors,
+// `laserax vectors`; CTest rtl_quad_decoder) or quad_decoder_stress.hex (rtl_stress_vectors,
+// rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest rtl_quad_decoder_stress); both
+// have the field list below. For every row it applies the row's inputs before a rising clock edge
+// and compares every output column with the DUT outputs after that edge. Row k is call k after
+// reset: the DUT is held in reset for a few edges, row 0 is applied together with the release of
+// i_rst.
 // Mismatches print `cycle N signal S: expected E got G` (the first 10); the last line is
 // `PASS ...` or `FAIL ...` (scripts/rtl_sim.sh checks it).
 //

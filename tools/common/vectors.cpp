@@ -252,9 +252,75 @@ vec_column out(const char* n, int bits, bool s = false) { return vec_column{n, b
 
 }  // namespace
 
-bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
+std::vector<vec_column> vec_layout(const std::string& block) {
     using W = lx::axis_widths;
     using EM = lx::error_map_cfg;
+    if (block == "input_filter") return {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)};
+    if (block == "quad_decoder")
+        return {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
+                out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
+                out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1),
+                out("glitch_st", 1)};
+    // preset = 1: the row first loads N = preset_n and R = ratio (pulse_multiplier::preset()), then steps
+    if (block == "pulse_multiplier")
+        return {in("step", 2, true), in("ratio", W::W_RATIO), in("preset", 1), in("preset_n", W::W_RAW, true),
+                out("comp", W::W_POS, true), out("delta", W::W_DELTA, true)};
+    if (block == "output_pacer")
+        return {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), out("pstep", 2, true),
+                out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true), out("ovs", 1), out("ovs_st", 1)};
+    if (block == "rephase")
+        return {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
+                in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
+                out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
+                out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
+                out("adj", W::W_POS, true), out("homed", 1)};
+    // tbl_we/tbl_addr/tbl_data: the table write port (written before the step of the same call)
+    if (block == "dds_sincos")
+        return {in("ostep", 2, true), in("period", W::W_P), in("amplitude", W::W_DAC_MAX), in("tbl_we", 1),
+                in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL), out("sin", W::W_DAC_MAX, true),
+                out("cos", W::W_DAC_MAX, true)};
+    if (block == "laserax_top")
+        return {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
+                in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
+                in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
+                in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
+                in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
+                in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
+                in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
+                in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
+                out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
+                out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
+                out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
+                out("glitch_st", 1), out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
+                out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
+                out("step", 2, true), out("delta", W::W_DELTA, true), out("backlog", W::W_BACKLOG, true),
+                out("pstep", 2, true), out("ostep", 2, true), out("adj", W::W_POS, true),
+                out("a_pos", W::W_POS, true), out("b_pos", W::W_POS, true), out("c_pos", W::W_POS, true),
+                out("z_pos", W::W_POS, true), out("rep_mark", 1), out("map_cfg_err", 1), out("corr", EM::W_C, true),
+                out("map_delta", EM::W_CDELTA, true)};
+    return {};
+}
+
+bool vec_check(const vec_table& t, std::string* err) {
+    for (size_t r = 0; r < t.rows.size(); ++r) {
+        const std::vector<int64_t>& row = t.rows[r];
+        if (row.size() != t.cols.size()) {
+            if (err) *err = t.block + ": row " + std::to_string(r) + " has " + std::to_string(row.size()) +
+                            " values for " + std::to_string(t.cols.size()) + " columns";
+            return false;
+        }
+        for (size_t i = 0; i < row.size(); ++i) {
+            if (!fits(row[i], t.cols[i])) {
+                if (err) *err = t.block + ": row " + std::to_string(r) + " column " + t.cols[i].name + ": value " +
+                                std::to_string(row[i]) + " does not fit";
+                return false;
+            }
+        }
+    }
+    return true;
+}
+
+bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
     std::mt19937_64 rng(seed);
     axis_settings s;
     s.glitch_n = 2;
@@ -264,46 +330,15 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     s.min_spacing = 3;
     dual_axis ax(s);
 
-    vec_table top{"laserax_top", {}, {}};
-    top.cols = {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
-                in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
-                in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
-                in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
-                in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
-                in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
-                in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
-                out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
-                out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
-                out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1), out("glitch_st", 1),
-                out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
-                out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
-                out("map_cfg_err", 1), out("corr", EM::W_C, true), out("map_delta", EM::W_CDELTA, true)};
-    vec_table flt{"input_filter", {in("pin", 1), in("n", 8), out("f", 1), out("valid", 1), out("glitch", 1)}, {}};
-    vec_table dec{"quad_decoder",
-                  {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
-                   out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
-                   out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1), out("glitch_st", 1)},
-                  {}};
-    vec_table mul{"pulse_multiplier",
-                  {in("step", 2, true), in("ratio", W::W_RATIO), out("comp", W::W_POS, true),
-                   out("delta", W::W_DELTA, true)},
-                  {}};
-    vec_table pac{"output_pacer",
-                  {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1),
-                   out("pstep", 2, true), out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true),
-                   out("ovs", 1), out("ovs_st", 1)},
-                  {}};
-    vec_table rep{"rephase",
-                  {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
-                   in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
-                   out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
-                   out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
-                   out("adj", W::W_POS, true), out("homed", 1)},
-                  {}};
-    vec_table dds{"dds_sincos",
-                  {in("ostep", 2, true), in("period", W::W_P), in("amplitude", W::W_DAC_MAX),
-                   out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true)},
-                  {}};
+    // column layouts shared with rtl_stress_vectors (vec_layout); the DDS table port and the
+    // multiplier preset are not exercised here (golden/ has neither): they stay 0
+    vec_table top{"laserax_top", vec_layout("laserax_top"), {}};
+    vec_table flt{"input_filter", vec_layout("input_filter"), {}};
+    vec_table dec{"quad_decoder", vec_layout("quad_decoder"), {}};
+    vec_table mul{"pulse_multiplier", vec_layout("pulse_multiplier"), {}};
+    vec_table pac{"output_pacer", vec_layout("output_pacer"), {}};
+    vec_table rep{"rephase", vec_layout("rephase"), {}};
+    vec_table dds{"dds_sincos", vec_layout("dds_sincos"), {}};
 
     // standalone blocks, golden and hls, fed with the chain's inter-block signals
     golden::input_filter g_flt, g_swf;
@@ -382,14 +417,15 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const golden::axis_regs gr = to_golden(ns);
         top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.glitch_n,
                             gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
-                            gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear,
+                            gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, 0, 0, 0,
                             gr.emap.map_en, gr.emap.bank_sel, gr.emap.geom[0].origin, gr.emap.geom[0].spacing_log2,
                             gr.emap.geom[0].n_points, gr.emap.geom[1].origin, gr.emap.geom[1].spacing_log2,
                             gr.emap.geom[1].n_points, gr.emap.we, gr.emap.addr, gr.emap.data,
                             g.sin, g.cos, g.ref_mark,
                             g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
                             g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
-                            g.d, g.map_cfg_err, g.corr, g.map_delta});
+                            g.d, g.step, g.delta, g.backlog, g.pstep, g.ostep, g.adj, g.a_pos, g.b_pos, g.c_pos,
+                            g.z_pos, g.rep_mark, g.map_cfg_err, g.corr, g.map_delta});
         (void)h;
 
         // block level
@@ -429,12 +465,12 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid, fo.glitch});
         dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
                             dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm, dq.glitch_st});
-        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), mo.comp, mo.delta});
+        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), 0, 0, mo.comp, mo.delta});
         pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
                             po.backlog, po.ovs, po.ovs_st});
         rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
                             ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
-        dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, so.sin, so.cos});
+        dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, 0, 0, 0, so.sin, so.cos});
         prev_step = dq.step;
         prev_delta = mo.delta;
         prev_pstep = po.pstep;
@@ -475,6 +511,12 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
     if (!build_vectors(seed, calls, tables, &err) || !build_motion_vectors(seed, calls, tables, &err)) {
         std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
         return 1;
+    }
+    for (const vec_table& t : tables) {
+        if (!vec_check(t, &err)) {
+            std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
+            return 1;
+        }
     }
     for (const vec_table& t : tables) {
         for (int kind = 0; kind < 2; ++kind) {
