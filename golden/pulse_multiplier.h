@@ -25,7 +25,7 @@ public:
         int64_t delta;  // comp' - comp
     };
     void reset();
-    out step(int step, uint64_t ratio_q32, int64_t offset_q32 = 0);  // TODO(merge): no default
+    out step(int step, uint64_t ratio_q32, int64_t offset_q32);
 
 private:
     int64_t n_ = 0;     // N, kept in [-2^31, 2^31) (32-bit signed wrap)

@@ -65,7 +65,7 @@ public:
         comp_ = acc_t(acc_ + acc_t(offset)) >> cfg::R_FRAC;
     }
 
-    out_t step(step_t step, ratio_t ratio, offset_t offset = 0) {  // TODO(merge): no default
+    out_t step(step_t step, ratio_t ratio, offset_t offset) {
         const cfg::nwide_t n_sum = cfg::nwide_t(n_) + step;
         const raw_t n_next = n_sum;  // wraps at W_RAW bits
         const cfg::dratio_t dr = cfg::dratio_t(ratio) - cfg::dratio_t(r_);

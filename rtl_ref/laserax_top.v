@@ -41,6 +41,7 @@ module laserax_top #(
     // s_axilite registers (DESIGN §5)
     input  wire [12:0]        i_period,         // 256 at reset; 8..4096, multiple of 8
     input  wire [36:0]        i_ratio,          // Q5.32, 1..2^37-1
+    input  wire signed [63:0] i_comp_offset,    // Q32.32 output counts added to N*R (any)
     input  wire [7:0]         i_glitch_n,
     input  wire [15:0]        i_sw_debounce,
     input  wire [15:0]        i_min_spacing,
@@ -174,7 +175,7 @@ module laserax_top #(
     wire signed [37:0] mul_comp;
     wire signed [38:0] mul_delta;
     pulse_multiplier u_mul (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(i_ratio),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(i_ratio), .i_comp_offset(i_comp_offset),
         .o_comp(mul_comp), .o_delta(mul_delta));
 
     // rephase outputs used by the error map (declared before use)

@@ -4,11 +4,13 @@
 // pulse_multiplier::step(); o_comp / o_delta are registers holding the out_t of that call.
 // Synchronous active-high reset = pulse_multiplier::reset() (all zero).
 //
-// After every call comp = floor(N * R / 2^32) for the register values N, R after the call. The
-// accumulator holds N*R exactly and is updated with one multiply and one add per call:
+// After every call comp = floor((N * R + OFF) / 2^32) for the register values N, R after the call
+// and the comp_offset input OFF (Q32.32 output counts, signed). The accumulator holds N*R exactly
+// and is updated with one multiply and one add per call:
 //     acc' = acc + N * (R' - R) + step * R'  [- sign(step) * (R' << 32) when N wraps]  (= N' * R')
-// Widths: N 32 signed, R 37 unsigned (Q5.32), R'-R 38 signed, acc 70 signed, comp 38 signed,
-// delta 39 signed. Latency: 1 call.
+// and the offset is added after it (comp' = (acc' + OFF) >> 32; one adder, no state).
+// Widths: N 32 signed, R 37 unsigned (Q5.32), R'-R 38 signed, acc 70 signed, OFF 64 signed,
+// comp 38 signed, delta 39 signed. Latency: 1 call.
 // (The preset port of the C++ model is a testbench aid and is not part of this RTL.)
 `timescale 1ns / 1ps
 `default_nettype none
@@ -18,7 +20,8 @@ module pulse_multiplier (
     input  wire               i_rst,    // synchronous, active high: pulse_multiplier::reset()
     input  wire signed [1:0]  i_step,   // raw count step from the decoder: -1, 0, +1
     input  wire [36:0]        i_ratio,  // ratio register R' (Q5.32, unsigned)
-    output wire signed [37:0] o_comp,   // floor(N' * R' / 2^32)
+    input  wire signed [63:0] i_comp_offset,  // offset register OFF (Q32.32 output counts)
+    output wire signed [37:0] o_comp,   // floor((N' * R' + OFF) / 2^32)
     output wire signed [38:0] o_delta   // comp' - comp
 );
 
@@ -27,7 +30,8 @@ module pulse_multiplier (
     localparam integer R_FRAC   = 32;                    // ratio fraction bits
     localparam integer W_RATIO  = 37;                    // R_INT + R_FRAC, unsigned
     localparam integer W_DRATIO = W_RATIO + 1;           // R' - R, signed
-    localparam integer W_ACC    = W_RAW + W_RATIO + 1;   // 70, exact N*R, signed
+    localparam integer W_ACC    = W_RAW + W_RATIO + 1;   // 70, exact N*R, signed (and N*R + OFF)
+    localparam integer W_OFFSET = 64;                    // comp offset, Q32.32, signed
     localparam integer W_POS    = W_ACC - R_FRAC;        // 38
     localparam integer W_DELTA  = W_POS + 1;             // 39
 
@@ -61,7 +65,9 @@ module pulse_multiplier (
         if (n_wrap) acc_d = step_pos ? acc_d - wrap_term : acc_d + wrap_term;
     end
 
-    wire signed [W_POS-1:0]   comp_d  = acc_d[W_ACC-1:R_FRAC];   // floor: arithmetic shift
+    // N*R + OFF: |N*R| < 2^68, |OFF| <= 2^63, fits W_ACC
+    wire signed [W_ACC-1:0]   sum_d   = acc_d + {{(W_ACC-W_OFFSET){i_comp_offset[W_OFFSET-1]}}, i_comp_offset};
+    wire signed [W_POS-1:0]   comp_d  = sum_d[W_ACC-1:R_FRAC];   // floor: arithmetic shift
     wire signed [W_DELTA-1:0] delta_d = {comp_d[W_POS-1], comp_d} - {comp_q[W_POS-1], comp_q};
 
     always @(posedge i_clk) begin

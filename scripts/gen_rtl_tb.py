@@ -120,11 +120,12 @@ BLOCKS = [
         block="pulse_multiplier",
         module="pulse_multiplier",
         dut="pulse_multiplier. A row with preset = 1 first loads the DUT registers as "
-            "pulse_multiplier::preset(preset_n, ratio) does (the preset is a C++ testbench aid, "
+            "pulse_multiplier::preset(preset_n, ratio, comp_offset) does (the preset is a C++ testbench aid, "
             "not an RTL port; always 0 in the golden set), then steps.",
         fields=[
             IN("step", 2, S),
             IN("ratio", 37),
+            IN("comp_offset", 64, S),
             IN("preset", 1, port=None),
             IN("preset_n", 32, S, port=None),
             OUT("comp", 38, S),
@@ -132,8 +133,8 @@ BLOCKS = [
         ],
         extra=dict(
             decls="""\
-    // pulse_multiplier::preset(N, R): N and R loaded, acc = N * R, comp = acc >> 32
-    reg signed [69:0] preset_acc;
+    // pulse_multiplier::preset(N, R, OFF): N and R loaded, acc = N * R, comp = (acc + OFF) >> 32
+    reg signed [69:0] preset_acc, preset_sum;
 """,
             apply="""\
             if (@preset@) begin
@@ -141,7 +142,8 @@ BLOCKS = [
                 dut.n_q    = @preset_n@;
                 dut.r_q    = @ratio@;
                 dut.acc_q  = preset_acc;
-                dut.comp_q = preset_acc[69:32];
+                preset_sum = preset_acc + {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
+                dut.comp_q = preset_sum[69:32];
             end
 """),
     ),
@@ -219,6 +221,7 @@ BLOCKS = [
             IN("lerr", 1),
             IN("period", 13),
             IN("ratio", 37),
+            IN("comp_offset", 64, S),
             IN("glitch_n", 8),
             IN("sw_debounce", 16),
             IN("min_spacing", 16),

@@ -283,7 +283,7 @@ int main(int argc, char** argv) {
                     int st = (rng() % 5 == 0) ? -dir : dir;
                     if (rng() % 7 == 0) st = 0;
                     n += st;
-                    const golden::pulse_multiplier::out o = pm.step(st, co.ratio);
+                    const golden::pulse_multiplier::out o = pm.step(st, co.ratio, 0);  // offset: section 3b
                     ok = o.comp == mult_out(n, co.ratio);
                 }
                 res.check(ok, "golden pulse_multiplier differs from floor(N R / 2^32)");

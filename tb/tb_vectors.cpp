@@ -89,6 +89,7 @@ void replay_top(tbu::result& res, const lxt::vec_table& t) {
         lxt::axis_settings s;
         s.period = in("period");
         s.ratio = static_cast<uint64_t>(in("ratio"));
+        s.comp_offset = in("comp_offset");
         s.glitch_n = in("glitch_n");
         s.sw_debounce = in("sw_debounce");
         s.min_spacing = in("min_spacing");
@@ -167,8 +168,9 @@ void replay_multiplier(tbu::result& res, const lxt::vec_table& t) {
         in.row(t.rows[r]);
         const uint64_t ratio = static_cast<uint64_t>(in("ratio"));
         const int64_t preset_n = in("preset_n");
-        if (in("preset") != 0) m.preset(lx::raw_t(preset_n), lx::ratio_t(ratio));
-        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(in("step")), lx::ratio_t(ratio));
+        const lx::offset_t off = in("comp_offset");
+        if (in("preset") != 0) m.preset(lx::raw_t(preset_n), lx::ratio_t(ratio), off);
+        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(in("step")), lx::ratio_t(ratio), off);
         if (!check_outputs(res, t, r, {{"comp", o.comp.to_int64()}, {"delta", o.delta.to_int64()}})) ++bad;
     }
     in.report(res);

@@ -62,7 +62,7 @@ int main(int argc, char** argv) {
     report("hls pulse_multiplier", n, [&](long long k) {
         lx::pulse_multiplier m;
         long long acc = 0;
-        for (long long t = 0; t < k; ++t) acc += m.step((t % 37) == 0 ? 1 : 0, 34789620252ULL).delta.to_int64();
+        for (long long t = 0; t < k; ++t) acc += m.step((t % 37) == 0 ? 1 : 0, 34789620252ULL, 0).delta.to_int64();
         sink = acc;
     });
     report("hls output_pacer", n, [&](long long k) {

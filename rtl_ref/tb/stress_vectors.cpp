@@ -173,6 +173,11 @@ vec_table top_stress(rng_t& r, long long calls) {
                 const uint64_t base = lx::axis_core_cfg::RATIO_DEFAULT;
                 g.ratio = base - base / 20 + r.u() % (base / 10);  // +-5 %
             }
+            if (r.chance(5000)) {  // thermal origin term, sometimes the register extremes
+                const uint64_t ko = r.u() % 8;
+                g.comp_offset = ko == 0 ? INT64_MIN : ko == 1 ? INT64_MAX
+                                                            : static_cast<int64_t>(r.u() % (1ULL << 50)) - (int64_t(1) << 49);
+            }
             if (r.chance(6000)) g.mark_len = static_cast<unsigned>(r.range(g.period.to_uint() / 4, g.period.to_uint()));
         }
         if (r.chance(700)) clear = true;
@@ -247,7 +252,8 @@ vec_table top_stress(rng_t& r, long long calls) {
         p.lerr = lerr;
         const lx::axis_out o = core.step(p, regs);
         t.rows.push_back({i64(a), i64(b), i64(sw), i64(lerr), static_cast<int64_t>(regs.period.to_uint64()),
-                          static_cast<int64_t>(regs.ratio.to_uint64()), static_cast<int64_t>(regs.glitch_n.to_uint64()),
+                          static_cast<int64_t>(regs.ratio.to_uint64()), regs.comp_offset.to_int64(),
+                          static_cast<int64_t>(regs.glitch_n.to_uint64()),
                           static_cast<int64_t>(regs.sw_debounce.to_uint64()),
                           static_cast<int64_t>(regs.min_spacing.to_uint64()), static_cast<int64_t>(regs.pace_m.to_uint64()),
                           static_cast<int64_t>(regs.backlog_thr.to_uint64()), static_cast<int64_t>(regs.mark_len.to_uint64()),
@@ -330,6 +336,7 @@ vec_table multiplier_stress(rng_t& r, long long calls) {
     vec_table t{"pulse_multiplier_stress", lxt::vec_layout("pulse_multiplier"), {}};
     lx::pulse_multiplier m;
     uint64_t ratio = lx::axis_core_cfg::RATIO_DEFAULT;
+    int64_t off = 0;
     int dir = 1;
     for (long long k = 0; k < calls; ++k) {
         bool preset = false;
@@ -343,12 +350,17 @@ vec_table multiplier_stress(rng_t& r, long long calls) {
         }
         if (r.chance(400)) ratio = (r.u() & ((1ULL << 37) - 1));
         if (r.chance(400)) ratio = lx::axis_core_cfg::RATIO_DEFAULT + (r.u() % 1000000ULL);
+        if (r.chance(300)) {
+            const uint64_t ko = r.u() % 6;
+            off = ko == 0 ? INT64_MIN : ko == 1 ? INT64_MAX : ko == 2 ? static_cast<int64_t>(r.u())
+                                                                  : static_cast<int64_t>(r.u() % (1ULL << 56)) - (int64_t(1) << 55);
+        }
         if (r.chance(200)) dir = -dir;
         int st = r.chance(3) ? 0 : dir;
         if (r.chance(50)) st = -st;
-        if (preset) m.preset(lx::raw_t(pn), lx::ratio_t(ratio));
-        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(st), lx::ratio_t(ratio));
-        t.rows.push_back({st, static_cast<int64_t>(ratio), i64(preset), pn, o.comp.to_int64(), o.delta.to_int64()});
+        if (preset) m.preset(lx::raw_t(pn), lx::ratio_t(ratio), lx::offset_t(off));
+        const lx::pulse_multiplier::out_t o = m.step(lx::step_t(st), lx::ratio_t(ratio), lx::offset_t(off));
+        t.rows.push_back({st, static_cast<int64_t>(ratio), off, i64(preset), pn, o.comp.to_int64(), o.delta.to_int64()});
     }
     return t;
 }

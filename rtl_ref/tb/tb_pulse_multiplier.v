@@ -3,8 +3,8 @@
 // Spec: block pulse_multiplier of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
 // DUT: pulse_multiplier. A row with preset = 1 first loads the DUT registers as
-// pulse_multiplier::preset(preset_n, ratio) does (the preset is a C++ testbench aid, not an RTL
-// port; always 0 in the golden set), then steps.
+// pulse_multiplier::preset(preset_n, ratio, comp_offset) does (the preset is a C++ testbench aid,
+// not an RTL port; always 0 in the golden set), then steps.
 // Reads one vector file in the format of docs/VECTORS.md: pulse_multiplier.hex (golden vectors,
 // `laserax vectors`; CTest rtl_pulse_multiplier) or pulse_multiplier_stress.hex
 // (rtl_stress_vectors, rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest
@@ -21,6 +21,7 @@
 // vector fields (must equal the `// field` lines of the .hex file; scripts/rtl_sim.sh checks):
 //   field step in 2 signed
 //   field ratio in 37 unsigned
+//   field comp_offset in 64 signed
 //   field preset in 1 unsigned
 //   field preset_n in 32 signed
 //   field comp out 38 signed
@@ -30,7 +31,7 @@
 
 module tb_pulse_multiplier;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 160;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 224;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_pulse_multiplier";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -40,6 +41,7 @@ module tb_pulse_multiplier;
     reg i_clk, i_rst;
     reg  [1:0] i_step;
     reg  [36:0] i_ratio;
+    reg  [63:0] i_comp_offset;
     wire [37:0] o_comp;
     wire [38:0] o_delta;
 
@@ -48,25 +50,28 @@ module tb_pulse_multiplier;
         .i_rst(i_rst),
         .i_step(i_step),
         .i_ratio(i_ratio),
+        .i_comp_offset(i_comp_offset),
         .o_comp(o_comp),
         .o_delta(o_delta)
     );
 
     `include "tb_common.vh"
 
-    // pulse_multiplier::preset(N, R): N and R loaded, acc = N * R, comp = acc >> 32
-    reg signed [69:0] preset_acc;
+    // pulse_multiplier::preset(N, R, OFF): N and R loaded, acc = N * R, comp = (acc + OFF) >> 32
+    reg signed [69:0] preset_acc, preset_sum;
 
     task apply_inputs;
         begin
-            i_step = row[157:156];
-            i_ratio = row[152:116];
+            i_step = row[221:220];
+            i_ratio = row[216:180];
+            i_comp_offset = row[179:116];
             if (row[112:112]) begin
-                preset_acc = $signed(row[111:80]) * $signed({1'b0, row[152:116]});
+                preset_acc = $signed(row[111:80]) * $signed({1'b0, row[216:180]});
                 dut.n_q    = row[111:80];
-                dut.r_q    = row[152:116];
+                dut.r_q    = row[216:180];
                 dut.acc_q  = preset_acc;
-                dut.comp_q = preset_acc[69:32];
+                preset_sum = preset_acc + {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
+                dut.comp_q = preset_sum[69:32];
             end
         end
     endtask
@@ -75,6 +80,7 @@ module tb_pulse_multiplier;
         begin
             i_step = 2'd0;
             i_ratio = 37'd0;
+            i_comp_offset = 64'd0;
         end
     endtask
 

@@ -261,9 +261,10 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
                 out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1),
                 out("glitch_st", 1)};
-    // preset = 1: the row first loads N = preset_n and R = ratio (pulse_multiplier::preset()), then steps
+    // preset = 1: the row first loads N = preset_n and R = ratio (pulse_multiplier::preset(), with the
+    // row's comp_offset), then steps
     if (block == "pulse_multiplier")
-        return {in("step", 2, true), in("ratio", W::W_RATIO), in("preset", 1), in("preset_n", W::W_RAW, true),
+        return {in("step", 2, true), in("ratio", W::W_RATIO), in("comp_offset", W::W_OFFSET, true), in("preset", 1), in("preset_n", W::W_RAW, true),
                 out("comp", W::W_POS, true), out("delta", W::W_DELTA, true)};
     if (block == "output_pacer")
         return {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), out("pstep", 2, true),
@@ -281,7 +282,7 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 out("cos", W::W_DAC_MAX, true)};
     if (block == "laserax_top")
         return {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
-                in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
+                in("comp_offset", W::W_OFFSET, true), in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
                 in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
                 in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
                 in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
@@ -373,19 +374,38 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     int dir = 1;
     long long wait = 0, spacing = 5;
     int glitch_left = 0, lerr_left = 0;
+    const int kMapPoints = 64;
+    int map_words = 0;
     for (long long t = 0; t < calls; ++t) {
         axis_settings ns = ax.settings();
         ns.rehome = false;
         ns.clear = false;
         const long long phase = t * 8 / calls;  // eight acts: homing, reversals, faults, re-homing
         if (t == calls / 2) ns.ratio = s.ratio + 4000000;          // ratio update while moving
+        if (t == calls / 3) ns.comp_offset = -(int64_t(37) << 32) - 123456789;  // offset update while moving
+        if (t == calls * 7 / 8) ns.comp_offset = int64_t(5) << 31;              // ... and another
         if (t == calls * 5 / 8) ns.rehome = true;
         if (t % 5000 == 4999) ns.clear = true;
         if (t == calls * 3 / 4) ns.tbl_period = 264;               // invalid configuration ...
         if (t == calls * 3 / 4 + 50) ns.tbl_period = ns.period;    // ... and back
-        // the error map stays at its reset values (disabled) here: tb_vectors replays these rows
-        // into an axis_core with default map registers; the map is exercised by the
-        // laserax_top_stress set (rtl_ref/tb/stress_vectors.cpp) and tb_chain_error_map
+        // error map: once homed, a 64-point table (spacing 2^8 counts from comp 0) is written into
+        // bank 1 through the map port, one word per call, while the axis moves; then bank 1 is
+        // selected and enabled; it is disabled again for the last eighth. (More map cases: the
+        // laserax_top stress set and tb_chain_error_map.)
+        if (ax.gold().homed && map_words < kMapPoints) {
+            ns.emap.we = true;
+            ns.emap.addr = map_words;
+            ns.emap.data = ((map_words * 7919) % 2001) - 1000;  // +-3.9 counts, Q15.8
+            if (++map_words == kMapPoints) {
+                ns.emap.geom[1].origin = 0;
+                ns.emap.geom[1].spacing_log2 = 8;
+                ns.emap.geom[1].n_points = kMapPoints;
+            }
+        } else if (map_words == kMapPoints && !ns.emap.map_en && t < calls * 7 / 8) {
+            ns.emap.bank_sel = true;
+            ns.emap.map_en = true;
+        }
+        if (t == calls * 7 / 8) ns.emap.map_en = false;
         ax.set(ns);
         if (wait-- <= 0) {
             n += dir;
@@ -415,7 +435,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const lx::axis_out& h = ax.hls();
         const golden::axis_out& g = ax.gold();
         const golden::axis_regs gr = to_golden(ns);
-        top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.glitch_n,
+        top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.comp_offset, gr.glitch_n,
                             gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
                             gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, 0, 0, 0,
                             gr.emap.map_en, gr.emap.bank_sel, gr.emap.geom[0].origin, gr.emap.geom[0].spacing_log2,
@@ -433,8 +453,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const lx::input_filter<8>::out_t hfo = h_flt.step(p.a, gr.glitch_n);
         const golden::quad_decoder::out dq = g_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
         const lx::quad_decoder::out_t hdq = h_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
-        const golden::pulse_multiplier::out mo = g_mul.step(prev_step, gr.ratio);
-        const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, gr.ratio);
+        const golden::pulse_multiplier::out mo = g_mul.step(prev_step, gr.ratio, gr.comp_offset);
+        const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, gr.ratio, gr.comp_offset);
         const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
         const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
         const golden::rephase::out ro =
@@ -465,7 +485,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid, fo.glitch});
         dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
                             dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm, dq.glitch_st});
-        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), 0, 0, mo.comp, mo.delta});
+        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), gr.comp_offset, 0, 0, mo.comp, mo.delta});
         pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
                             po.backlog, po.ovs, po.ovs_st});
         rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
