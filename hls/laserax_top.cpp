@@ -48,33 +48,33 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
 #pragma HLS INTERFACE mode=ap_none port=sw
 #pragma HLS INTERFACE mode=ap_none port=lerr
 #pragma HLS INTERFACE mode=s_axilite port=period offset=0x10 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=tbl_period offset=0x14 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=ratio offset=0x18 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=comp_offset offset=0x20 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=glitch_n offset=0x28 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=sw_debounce offset=0x2C bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=min_spacing offset=0x30 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=pace_m offset=0x34 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=backlog_thr offset=0x38 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=mark_len offset=0x3C bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=dac_width offset=0x40 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=amplitude offset=0x44 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=rehome offset=0x48 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=clear offset=0x4C bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=tbl_we offset=0x50 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=tbl_addr offset=0x54 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=tbl_data offset=0x58 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_en offset=0x5C bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=bank_sel offset=0x60 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_origin0 offset=0x68 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_k0 offset=0x70 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_n0 offset=0x74 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_origin1 offset=0x78 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_k1 offset=0x80 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_n1 offset=0x84 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_we offset=0x88 bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_addr offset=0x8C bundle=ctrl
-#pragma HLS INTERFACE mode=s_axilite port=map_data offset=0x90 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_period offset=0x18 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=ratio offset=0x20 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=comp_offset offset=0x30 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=glitch_n offset=0x40 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=sw_debounce offset=0x48 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=min_spacing offset=0x50 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=pace_m offset=0x58 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=backlog_thr offset=0x60 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=mark_len offset=0x68 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=dac_width offset=0x70 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=amplitude offset=0x78 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=rehome offset=0x80 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=clear offset=0x88 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_we offset=0x90 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_addr offset=0x98 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_data offset=0xA0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_en offset=0xA8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=bank_sel offset=0xB0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_origin0 offset=0xC0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_k0 offset=0xD0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_n0 offset=0xD8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_origin1 offset=0xE0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_k1 offset=0xF0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_n1 offset=0xF8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_we offset=0x100 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_addr offset=0x108 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_data offset=0x110 bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp

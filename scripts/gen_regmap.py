@@ -67,6 +67,14 @@ class Reg:
         return (self.width + 31) // 32
 
     @property
+    def span(self):  # bytes of address space: the data words plus the reserved control word
+        return 4 * (self.words + 1)
+
+    @property
+    def reserved(self):  # offset of the reserved control word
+        return self.offset + 4 * self.words
+
+    @property
     def upper(self):
         return self.name.upper()
 
@@ -230,10 +238,10 @@ def check_table(path, regs):
                 members[m] = r.name
     by_off = sorted(regs, key=lambda r: (r.offset, r.line))
     for a, b in zip(by_off, by_off[1:]):
-        if b.offset < a.offset + 4 * a.words:
+        if b.offset < a.offset + a.span:
             late = a if a.line > b.line else b
-            raise CsvError(path, late.line, "%s (0x%X..0x%X) overlaps %s (0x%X..0x%X)" %
-                           (b.name, b.offset, b.offset + 4 * b.words - 1, a.name, a.offset, a.offset + 4 * a.words - 1))
+            raise CsvError(path, late.line, "%s (0x%X..0x%X) overlaps %s (0x%X..0x%X, incl. its reserved control word)" %
+                           (b.name, b.offset, b.offset + b.span - 1, a.name, a.offset, a.offset + a.span - 1))
 
 
 # ------------------------------------------------------------------------------------------------
@@ -324,7 +332,7 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
 
 
 def gen_regmap_h(regs):
-    end = max(r.offset + 4 * r.words for r in regs)
+    end = max(r.offset + r.span for r in regs)
     consts = []
     for r in regs:
         u = r.upper
@@ -357,7 +365,7 @@ namespace lx {
 namespace regmap {
 
 constexpr unsigned FIRST_OFFSET = 0x%02X;  // first register
-constexpr unsigned END_OFFSET = 0x%02X;    // one past the last word
+constexpr unsigned END_OFFSET = 0x%02X;    // one past the last word (the last reserved word)
 constexpr int N_REGS = %d;
 
 %s
@@ -449,7 +457,7 @@ struct reg_info {
 
 constexpr int kNumRegs = %d;
 constexpr uint32_t kFirstOffset = 0x%02X;
-constexpr uint32_t kEndOffset = 0x%02X;  // one past the last word
+constexpr uint32_t kEndOffset = 0x%02X;  // one past the last word (the last reserved word)
 
 // Register indices (offset order).
 namespace idx {
@@ -504,7 +512,7 @@ lx::axis_regs to_hls(const golden::axis_regs& s);
 }  // namespace lxt
 
 #endif  // LASERAX_TOOLS_REGMAP_TABLE_H
-""" % (GENERATED_NOTE, len(regs), FIRST_OFFSET, max(r.offset + 4 * r.words for r in regs), idx, "\n".join(rows))
+""" % (GENERATED_NOTE, len(regs), FIRST_OFFSET, max(r.offset + r.span for r in regs), idx, "\n".join(rows))
 
 
 def gen_table_cpp(regs):
@@ -618,7 +626,7 @@ inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_
 
 
 def gen_c_h(regs):
-    end = max(r.offset + 4 * r.words for r in regs)
+    end = max(r.offset + r.span for r in regs)
     defs = []
     xs = []
     for r in regs:
@@ -640,7 +648,8 @@ def gen_c_h(regs):
  * %s
  *
  * Byte offsets on the AXI-lite slave (bundle ctrl). A register wider than 32 bits takes WORDS
- * consecutive 32-bit words, low word first. Pulse registers: write 1, then 0. RESET is the value
+ * consecutive 32-bit words, low word first; the word after them is reserved (Vitis HLS control
+ * word). Pulse registers: write 1, then 0. RESET is the value
  * (sign-extended for SIGNED registers); MIN/MAX/STEP are given where the range is restricted.
  */
 #ifndef LASERAX_REGS_C_H
@@ -686,7 +695,7 @@ def legal_text(r):
 def gen_md(regs):
     rows = []
     for r in regs:
-        off = "0x%02X" % r.offset if r.words == 1 else "0x%02X..0x%02X" % (r.offset, r.offset + 4 * r.words - 1)
+        off = "0x%02X" % r.offset if r.words == 1 else "0x%02X..0x%02X" % (r.offset, r.reserved - 1)
         w = "%d%s" % (r.width, " signed" if r.signed else "")
         hexv = "0x%X" % r.bits(r.reset)
         rows.append("| %s | `%s` | %s | %s | %d (%s) | %s | %s | %s |" %
@@ -697,10 +706,10 @@ def gen_md(regs):
         words.append("  * `%s`: %s" % (r.name, ", ".join("0x%02X = bits %d..%d" % (o, lo, hi) for o, lo, hi in word_ranges(r))))
     pulses = ", ".join("`%s`" % r.name for r in regs if r.access == "pulse")
     ports = ", ".join("`%s`" % r.name for r in regs if r.access == "port")
-    end = max(r.offset + 4 * r.words for r in regs)
+    end = max(r.offset + r.span for r in regs)
     used = set()
     for r in regs:
-        for w in range(r.words):
+        for w in range(r.words + 1):
             used.add(r.offset + 4 * w)
     gaps = ["0x%02X" % o for o in range(FIRST_OFFSET, end, 4) if o not in used]
     return """<!-- %s -->
@@ -718,7 +727,10 @@ Conventions:
 
 * Byte offsets on the AXI4-lite slave `s_axi_ctrl` (bundle `ctrl`); the first register is at 0x%02X
   (Vitis HLS reserves 0x00..0x0F of an s_axilite slave for its block-control registers, unused
-  here: the top has `ap_ctrl_none`). Unused words are reserved (%s): write 0.
+  here: the top has `ap_ctrl_none`). The word after each register's data words is reserved: Vitis
+  HLS keeps one control word per s_axilite scalar, even with `ap_none` (UG1399, "S_AXILITE Offset
+  Option"), so a register of W bits occupies ceil(W/32) + 1 words. Other unused words: %s.
+  Write 0 to reserved words.
 * A register wider than 32 bits takes consecutive 32-bit words, **low word first**; write the low
   word, then the high word. The core reads the registers every clock and has no shadow registers:
   between the two writes it sees a mixed value for a few clocks. For `ratio` that is harmless for
@@ -812,6 +824,7 @@ def selftest():
     cases = [  # (name, lines, line number expected in the message, word expected)
         ("overlap", edit(second, "offset", "0x%X" % int(field(first, "offset"), 16)), second + 1, "overlaps"),
         ("misaligned", edit(second, "offset", "0x%X" % (second_off + 2)), second + 1, "aligned"),
+        ("on_reserved_word", edit(second, "offset", "0x%X" % (int(field(first, "offset"), 16) + 4)), second + 1, "reserved"),
         ("below_first", edit(first, "offset", "0x0C"), first + 1, "below"),
         ("reset_out_of_width", edit(first, "reset", "999999"), first + 1, "does not fit"),
         ("reset_illegal", edit(ranged, "reset", str(int(field(ranged, "min")) - 1)), ranged + 1, "not legal"),
