@@ -35,7 +35,8 @@ struct axis_core_cfg {
     using dacw_t = uint<axis_widths::W_DACW>;
 };
 
-// s_axilite register block (DESIGN §5). Reset values are the defaults below.
+// s_axilite register block (docs/REGISTERS.md, from regmap/laserax_regs.csv). Reset values are
+// the defaults below; they must equal the CSV's reset column (checked by tb_regmap).
 struct axis_regs {
     period_t period = axis_core_cfg::PERIOD_DEFAULT;
     ratio_t ratio = axis_core_cfg::RATIO_DEFAULT;

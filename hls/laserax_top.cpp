@@ -1,18 +1,80 @@
 // laserax_top.cpp — Vitis HLS top function of the single-axis interface.
 //
+// GENERATED FILE - do not edit. Source: regmap/laserax_regs.csv. Command: /usr/bin/python3 scripts/gen_regmap.py
+//
 // One call = one clock (free-running pipeline, II = 1, no block-level handshake). Pins are plain
-// wires (ap_none); the register block is an s_axilite slave; the outputs are wires. The state of
-// the axis lives in one static axis_core, so the function is the whole IP. Build for Vitis with
-// -DLASERAX_USE_AP_TYPES (see scripts/run_hls.tcl); the default build uses lx_types' own classes.
+// wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
+// slave at its fixed offset (a register wider than 32 bits takes consecutive words, low word
+// first); the outputs are wires. The state of the axis lives in one static axis_core, so the
+// function is the whole IP. Build for Vitis with -DLASERAX_USE_AP_TYPES (see scripts/run_hls.tcl);
+// the default build uses lx_types' own classes.
 #include "hls/laserax_top.h"
 
-void laserax_top(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& regs, lx::axis_out& out) {
+#include "hls/laserax_regmap.h"
+
+void laserax_top(bool a, bool b, bool sw, bool lerr,
+                 lx::uint<13> period,
+                 lx::uint<13> tbl_period,
+                 lx::uint<37> ratio,
+                 lx::sint<64> comp_offset,
+                 lx::uint<8> glitch_n,
+                 lx::uint<16> sw_debounce,
+                 lx::uint<16> min_spacing,
+                 lx::uint<16> pace_m,
+                 lx::uint<32> backlog_thr,
+                 lx::uint<13> mark_len,
+                 lx::uint<5> dac_width,
+                 lx::uint<18> amplitude,
+                 bool rehome,
+                 bool clear,
+                 bool tbl_we,
+                 lx::uint<10> tbl_addr,
+                 lx::uint<17> tbl_data,
+                 bool map_en,
+                 bool bank_sel,
+                 lx::sint<38> map_origin0,
+                 lx::uint<5> map_k0,
+                 lx::uint<12> map_n0,
+                 lx::sint<38> map_origin1,
+                 lx::uint<5> map_k1,
+                 lx::uint<12> map_n1,
+                 bool map_we,
+                 lx::uint<11> map_addr,
+                 lx::sint<24> map_data,
+                 lx::axis_out& out) {
 #pragma HLS INTERFACE mode=ap_ctrl_none port=return
 #pragma HLS INTERFACE mode=ap_none port=a
 #pragma HLS INTERFACE mode=ap_none port=b
 #pragma HLS INTERFACE mode=ap_none port=sw
 #pragma HLS INTERFACE mode=ap_none port=lerr
-#pragma HLS INTERFACE mode=s_axilite port=regs bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=period offset=0x10 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_period offset=0x18 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=ratio offset=0x20 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=comp_offset offset=0x30 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=glitch_n offset=0x40 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=sw_debounce offset=0x48 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=min_spacing offset=0x50 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=pace_m offset=0x58 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=backlog_thr offset=0x60 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=mark_len offset=0x68 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=dac_width offset=0x70 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=amplitude offset=0x78 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=rehome offset=0x80 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=clear offset=0x88 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_we offset=0x90 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_addr offset=0x98 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=tbl_data offset=0xA0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_en offset=0xA8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=bank_sel offset=0xB0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_origin0 offset=0xC0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_k0 offset=0xD0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_n0 offset=0xD8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_origin1 offset=0xE0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_k1 offset=0xF0 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_n1 offset=0xF8 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_we offset=0x100 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_addr offset=0x108 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=map_data offset=0x110 bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp
@@ -22,5 +84,34 @@ void laserax_top(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& regs, 
     pins.b = b;
     pins.sw = sw;
     pins.lerr = lerr;
+    lx::axis_regs regs;
+    regs.period = period;
+    regs.tbl_period = tbl_period;
+    regs.ratio = ratio;
+    regs.comp_offset = comp_offset;
+    regs.glitch_n = glitch_n;
+    regs.sw_debounce = sw_debounce;
+    regs.min_spacing = min_spacing;
+    regs.pace_m = pace_m;
+    regs.backlog_thr = backlog_thr;
+    regs.mark_len = mark_len;
+    regs.dac_width = dac_width;
+    regs.amplitude = amplitude;
+    regs.rehome = rehome;
+    regs.clear = clear;
+    regs.tbl_we = tbl_we;
+    regs.tbl_addr = tbl_addr;
+    regs.tbl_data = tbl_data;
+    regs.emap.map_en = map_en;
+    regs.emap.bank_sel = bank_sel;
+    regs.emap.geom[0].origin = map_origin0;
+    regs.emap.geom[0].spacing_log2 = map_k0;
+    regs.emap.geom[0].n_points = map_n0;
+    regs.emap.geom[1].origin = map_origin1;
+    regs.emap.geom[1].spacing_log2 = map_k1;
+    regs.emap.geom[1].n_points = map_n1;
+    regs.emap.we = map_we;
+    regs.emap.addr = map_addr;
+    regs.emap.data = map_data;
     out = core.step(pins, regs);
 }

@@ -1,6 +1,8 @@
 // tb_hls_csim — testbench of the synthesis top function laserax_top() (also the Vitis HLS C
-// simulation testbench of scripts/run_hls.tcl). It uses only the top function, the golden chain
-// and the standard library, so it compiles the same with -DLASERAX_USE_AP_TYPES.
+// simulation testbench of scripts/run_hls.tcl). It uses only the top function (through the
+// generated header-only tools/common/laserax_top_call.h, which passes the registers of an
+// lx::axis_regs as the top's one-scalar-per-register arguments), the golden chain and the standard
+// library, so it compiles the same with -DLASERAX_USE_AP_TYPES.
 //
 // One homing through the switch with the reset register values (P = 256, ratio for a HeNe laser
 // in standard air) at the power-up table contents: every output compared with the golden chain
@@ -10,6 +12,7 @@
 
 #include "golden/axis_chain.h"
 #include "hls/laserax_top.h"
+#include "tools/common/laserax_top_call.h"
 
 int main() {
     const lx::axis_regs regs;  // reset values
@@ -27,7 +30,7 @@ int main() {
         static const bool qb[4] = {false, false, true, true};
         const bool sw = n >= 30;
         lx::axis_out o;
-        laserax_top(qa[n & 3], qb[n & 3], sw, false, regs, o);
+        lxt::laserax_top_regs(qa[n & 3], qb[n & 3], sw, false, regs, o);
         golden::axis_pins gp;
         gp.a = qa[n & 3];
         gp.b = qb[n & 3];

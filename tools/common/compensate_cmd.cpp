@@ -10,6 +10,7 @@
 #include "golden/air_index.h"
 #include "golden/thermal.h"
 #include "tools/common/compensation.h"
+#include "tools/common/regmap.h"
 
 namespace lxt {
 
@@ -26,6 +27,7 @@ const char* const kCompensateUsage =
     "  --material-temp-c TM  workpiece temperature, degC (default: the air temperature)\n"
     "  --origin-um U         thermal origin (zero-correction point, K168), um (default 0)\n"
     "  --equation E          edlen or ciddor: the index used for the register (default ciddor)\n"
+    "  --regs-out FILE       also write the register writes to FILE, one `offset name value` per line\n"
     "ranges: Ciddor 300..1700 nm, -40..100 degC, 10..140 kPa; modified Edlen 350..650 nm, 0..40 degC,\n"
     "        60..120 kPa; RH 0..100 %; CO2 0..2000 umol/mol; workpiece -20..80 degC, |alpha| <= 300 ppm/degC\n";
 
@@ -43,7 +45,7 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first) { return 
 
 int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out, FILE* err) {
     comp_inputs in;
-    std::string material;
+    std::string material, regs_out;
     bool have_alpha = false, have_mtemp = false, have_pa = false, have_kpa = false, have_co2 = false;
     for (size_t i = first; i < args.size(); ++i) {
         const std::string& o = args[i];
@@ -55,7 +57,7 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
                                                "--co2-ppm", "--alpha-ppm", "--material-temp-c", "--origin-um"};
         bool numeric = false;
         for (const char* k : kNumeric) numeric = numeric || o == k;
-        if (!numeric && o != "--material" && o != "--equation") {
+        if (!numeric && o != "--material" && o != "--equation" && o != "--regs-out") {
             std::fprintf(err, "laserax compensate: unknown option '%s'\n%s", o.c_str(), kCompensateUsage);
             return 2;
         }
@@ -66,6 +68,10 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
         const std::string& v = args[++i];
         if (o == "--material") {
             material = v;
+            continue;
+        }
+        if (o == "--regs-out") {
+            regs_out = v;
             continue;
         }
         if (o == "--equation") {
@@ -130,10 +136,23 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
     }
     if (!have_mtemp) in.material_temp_c = (!material.empty() || have_alpha) ? in.air_temp_c : 20.0;
 
-    const comp_outputs c = compute_compensation(in);
-    if (!c.ok) {
-        std::fprintf(err, "laserax compensate: %s\n", c.error.c_str());
+    // the registers through the host helper (regmap.h): a reset image with ratio and comp_offset
+    reg_image img;
+    comp_outputs c;
+    std::string cerr;
+    if (!apply_compensation(in, &img, &c, &cerr)) {
+        std::fprintf(err, "laserax compensate: %s\n", cerr.c_str());
         return 2;
+    }
+    const std::vector<reg_write> writes = compensation_writes(img);
+    if (!regs_out.empty()) {
+        FILE* f = std::fopen(regs_out.c_str(), "w");
+        const std::string text = format_writes(writes);
+        const bool ok = f != nullptr && std::fwrite(text.data(), 1, text.size(), f) == text.size();
+        if ((f != nullptr && std::fclose(f) != 0) || !ok) {
+            std::fprintf(err, "laserax compensate: cannot write %s\n", regs_out.c_str());
+            return 2;
+        }
     }
     golden::air_input ai;
     ai.wavelength_nm = in.wavelength_nm;
@@ -172,6 +191,10 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
     if (std::fabs(static_cast<double>(c.scaling.k168) - c.origin_counts_exact) > 1e-9)
         std::fprintf(out, "    note: origin rounded to a whole count (%.4f -> %lld)\n", c.origin_counts_exact,
                      static_cast<long long>(c.scaling.k168));
+    std::fprintf(out, "  register writes (docs/REGISTERS.md, low word first)%s%s:\n",
+                 regs_out.empty() ? "" : ", also in ", regs_out.c_str());
+    for (const reg_write& w : writes)
+        std::fprintf(out, "    0x%04X  %-20s 0x%08X\n", w.offset, w.name.c_str(), w.value);
     return 0;
 }
 

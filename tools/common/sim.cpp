@@ -13,34 +13,7 @@ uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm) {
     return static_cast<uint64_t>(std::llround(r));
 }
 
-lx::axis_regs to_hls(const axis_settings& s) {
-    lx::axis_regs r;
-    r.period = s.period;
-    r.ratio = s.ratio;
-    r.comp_offset = s.comp_offset;
-    r.glitch_n = s.glitch_n;
-    r.sw_debounce = s.sw_debounce;
-    r.min_spacing = s.min_spacing;
-    r.pace_m = s.pace_m;
-    r.backlog_thr = s.backlog_thr;
-    r.mark_len = s.mark_len;
-    r.dac_width = s.dac_width;
-    r.amplitude = s.amplitude;
-    r.tbl_period = s.tbl_period;
-    r.rehome = s.rehome;
-    r.clear = s.clear;
-    r.emap.map_en = s.emap.map_en;
-    r.emap.bank_sel = s.emap.bank_sel;
-    for (int b = 0; b < 2; ++b) {
-        r.emap.geom[b].origin = s.emap.geom[b].origin;
-        r.emap.geom[b].spacing_log2 = s.emap.geom[b].spacing_log2;
-        r.emap.geom[b].n_points = s.emap.geom[b].n_points;
-    }
-    r.emap.we = s.emap.we;
-    r.emap.addr = s.emap.addr;
-    r.emap.data = s.emap.data;
-    return r;
-}
+// to_hls() is generated from the register map: tools/common/regmap_table.cpp.
 
 golden::axis_regs to_golden(const axis_settings& s) { return s; }
 

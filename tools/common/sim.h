@@ -14,6 +14,7 @@
 
 #include "golden/axis_chain.h"
 #include "hls/axis_core.h"
+#include "tools/common/regmap_table.h"
 
 namespace lxt {
 
@@ -24,13 +25,13 @@ constexpr double kOutputCountNm = 78.125;  // 20 um / 256
 constexpr double kClockHz = 100e6;        // model clock for time axes and speeds
 
 // One register set in plain integers: the golden model's register struct (same names and reset
-// values as the hls s_axilite block, DESIGN §5); converted to the hls types by to_hls().
+// values as the hls s_axilite block, docs/REGISTERS.md); converted to the hls types by to_hls()
+// (generated from the register map, tools/common/regmap_table.h).
 using axis_settings = golden::axis_regs;
 
 // Ratio register for one raw count = vacuum wavelength / air index, output count in nm.
 uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm);
 
-lx::axis_regs to_hls(const axis_settings& s);
 golden::axis_regs to_golden(const axis_settings& s);
 
 // Writes the quarter-wave table for (period, amplitude) into the core's table RAM (host driver).

@@ -1,0 +1,942 @@
+#!/usr/bin/python3
+"""gen_regmap.py — the laserax register map: validates regmap/laserax_regs.csv (the single source
+of truth) and generates every file that depends on it.
+
+Usage (Python 3 standard library only):
+    /usr/bin/python3 scripts/gen_regmap.py            validate and (re)write the generated files
+    /usr/bin/python3 scripts/gen_regmap.py --check    validate, regenerate in memory and compare
+                                                      with the files on disk (CTest regmap_generated)
+    /usr/bin/python3 scripts/gen_regmap.py --selftest malformed CSVs must be rejected with a
+                                                      file:line message (CTest regmap_generator_selftest)
+Options: --csv PATH (default regmap/laserax_regs.csv), --out-dir DIR (default: the repository root).
+
+Generated (each with the header line of GENERATED_NOTE):
+    hls/laserax_top.h, hls/laserax_top.cpp   Vitis HLS top: one s_axilite scalar per register
+    hls/laserax_regmap.h                     lx::regmap constants + static_asserts against lx::axis_regs
+    tools/common/regmap_table.h, .cpp        host table, accessors (lx:: and golden::axis_regs), to_hls
+    tools/common/laserax_top_call.h          host-only: laserax_top() called with an lx::axis_regs
+    tools/common/laserax_regs_c.h            C header for firmware
+    docs/REGISTERS.md                        the documented map
+
+Validation (the first error is reported as `FILE:LINE: message`, exit status 1): the header row,
+unique lower-case names, offsets 32-bit aligned from 0x10 and not overlapping (a register wider
+than 32 bits takes consecutive words), 1 <= width <= 64 (unsigned at most 63: the host table keeps
+values in int64), width-1 registers unsigned, reset/min/max inside the width, min <= max, min and
+max on the step, reset legal (min..max, step), pulse registers reset to 0, known access and check
+values, check cfg/map with a range or step, member paths well-formed and unique.
+Exit status: 0 ok, 1 invalid CSV or (--check) a difference, 2 usage error.
+"""
+import argparse
+import csv
+import difflib
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+CSV_REL = "regmap/laserax_regs.csv"
+COMMAND = "/usr/bin/python3 scripts/gen_regmap.py"
+GENERATED_NOTE = "GENERATED FILE - do not edit. Source: %s. Command: %s" % (CSV_REL, COMMAND)
+FIRST_OFFSET = 0x10
+COLUMNS = ["name", "offset", "width", "signed", "reset", "access", "units", "min", "max", "step",
+           "check", "rule", "hls_member", "golden_member", "description"]
+ACCESS = ("rw", "pulse", "port")
+CHECKS = ("cfg", "map", "none")
+# words that the hls lint (scripts/check_includes.sh --lint) or the synthesisability grep flag
+HLS_FORBIDDEN = re.compile(r"\b(float|double|new|delete|throw|try|catch|virtual|iostream)\b|\b(malloc|calloc|realloc|free|alloca|printf)\s*\(")
+
+
+class CsvError(Exception):
+    def __init__(self, path, line, msg):
+        Exception.__init__(self, "%s:%d: %s" % (path, line, msg))
+
+
+class Reg:
+    """One row of the CSV."""
+
+    def __init__(self, line, row):
+        self.line = line
+        for k, v in zip(COLUMNS, row):
+            setattr(self, "raw_" + k, v)
+        self.name = row[0]
+
+    @property
+    def words(self):
+        return (self.width + 31) // 32
+
+    @property
+    def span(self):  # bytes of address space: the data words plus the reserved control word
+        return 4 * (self.words + 1)
+
+    @property
+    def reserved(self):  # offset of the reserved control word
+        return self.offset + 4 * self.words
+
+    @property
+    def upper(self):
+        return self.name.upper()
+
+    @property
+    def lx_type(self):
+        if self.width == 1:
+            return "bool"
+        return "lx::%s<%d>" % ("sint" if self.signed else "uint", self.width)
+
+    @property
+    def lo(self):  # smallest value of the width
+        return -(1 << (self.width - 1)) if self.signed else 0
+
+    @property
+    def hi(self):  # largest value of the width
+        return (1 << (self.width - 1)) - 1 if self.signed else (1 << self.width) - 1
+
+    @property
+    def any_range(self):
+        return self.min is None and self.max is None
+
+    @property
+    def eff_min(self):
+        return self.lo if self.min is None else self.min
+
+    @property
+    def eff_max(self):
+        return self.hi if self.max is None else self.max
+
+    def bits(self, v):
+        return v & ((1 << self.width) - 1)
+
+
+# ------------------------------------------------------------------------------------------------
+# parsing and validation
+# ------------------------------------------------------------------------------------------------
+def parse_int(path, line, col, text, allow_dash=False, hexa=False):
+    t = text.strip()
+    if allow_dash and t == "-":
+        return None
+    pat = r"0[xX][0-9A-Fa-f]+" if hexa else r"-?[0-9]+"
+    if not re.fullmatch(pat, t):
+        raise CsvError(path, line, "column %s: '%s' is not a %s%s" %
+                       (col, text, "hex number (0x..)" if hexa else "decimal integer",
+                        " or '-'" if allow_dash else ""))
+    return int(t, 16) if hexa else int(t, 10)
+
+
+MEMBER_RE = re.compile(r"[a-z_][a-z0-9_]*(\[[0-9]+\])?(\.[a-z_][a-z0-9_]*(\[[0-9]+\])?)*")
+
+
+def load(path):
+    """Reads and validates the CSV; returns the registers sorted by offset. Raises CsvError."""
+    try:
+        with open(path, "r", encoding="utf-8") as f:
+            lines = f.read().split("\n")
+    except OSError as e:
+        raise CsvError(path, 0, "cannot read: %s" % e.strerror)
+    header_seen = False
+    regs = []
+    for no, text in enumerate(lines, start=1):
+        s = text.strip()
+        if not s or s.startswith("#"):
+            continue
+        row = [c.strip() for c in next(csv.reader([s]))]
+        if not header_seen:
+            if row != COLUMNS:
+                raise CsvError(path, no, "header row must be: %s" % ",".join(COLUMNS))
+            header_seen = True
+            continue
+        if len(row) != len(COLUMNS):
+            raise CsvError(path, no, "%d columns, expected %d (%s)" % (len(row), len(COLUMNS), ",".join(COLUMNS)))
+        regs.append(check_row(path, no, row))
+    if not header_seen:
+        raise CsvError(path, len(lines), "no header row")
+    if not regs:
+        raise CsvError(path, len(lines), "no registers")
+    check_table(path, regs)
+    return sorted(regs, key=lambda r: r.offset)
+
+
+def check_row(path, no, row):
+    r = Reg(no, row)
+    if not re.fullmatch(r"[a-z][a-z0-9_]*", r.name):
+        raise CsvError(path, no, "name '%s' must be a lower-case identifier" % r.name)
+    r.offset = parse_int(path, no, "offset", r.raw_offset, hexa=True)
+    if r.offset % 4:
+        raise CsvError(path, no, "%s: offset 0x%X is not 32-bit word aligned" % (r.name, r.offset))
+    if r.offset < FIRST_OFFSET:
+        raise CsvError(path, no, "%s: offset 0x%X is below the first register offset 0x%X" % (r.name, r.offset, FIRST_OFFSET))
+    r.width = parse_int(path, no, "width", r.raw_width)
+    if r.raw_signed not in ("s", "u"):
+        raise CsvError(path, no, "%s: signed must be s or u, not '%s'" % (r.name, r.raw_signed))
+    r.signed = r.raw_signed == "s"
+    if not 1 <= r.width <= 64:
+        raise CsvError(path, no, "%s: width %d is outside 1..64" % (r.name, r.width))
+    if r.width == 64 and not r.signed:
+        raise CsvError(path, no, "%s: unsigned registers are at most 63 bits wide (the host table keeps values in int64)" % r.name)
+    if r.width == 1 and r.signed:
+        raise CsvError(path, no, "%s: a 1-bit register is a bool and must be unsigned" % r.name)
+
+    def in_width(what, v):
+        if v is not None and not r.lo <= v <= r.hi:
+            raise CsvError(path, no, "%s: %s %d does not fit %s %d bits (%d .. %d)" %
+                           (r.name, what, v, "signed" if r.signed else "unsigned", r.width, r.lo, r.hi))
+
+    r.reset = parse_int(path, no, "reset", r.raw_reset)
+    in_width("reset", r.reset)
+    if r.raw_access not in ACCESS:
+        raise CsvError(path, no, "%s: access must be one of %s, not '%s'" % (r.name, "|".join(ACCESS), r.raw_access))
+    r.access = r.raw_access
+    r.units = r.raw_units or "-"
+    r.min = parse_int(path, no, "min", r.raw_min, allow_dash=True)
+    r.max = parse_int(path, no, "max", r.raw_max, allow_dash=True)
+    in_width("min", r.min)
+    in_width("max", r.max)
+    if r.eff_min > r.eff_max:
+        raise CsvError(path, no, "%s: min %d > max %d" % (r.name, r.eff_min, r.eff_max))
+    r.step = parse_int(path, no, "step", r.raw_step, allow_dash=True)
+    if r.step is not None and r.step < 1:
+        raise CsvError(path, no, "%s: step %d must be >= 1 (or '-')" % (r.name, r.step))
+    r.step = r.step or 1
+    for what, v in (("min", r.min), ("max", r.max)):
+        if v is not None and v % r.step:
+            raise CsvError(path, no, "%s: %s %d is not a multiple of the step %d" % (r.name, what, v, r.step))
+    if not r.eff_min <= r.reset <= r.eff_max or r.reset % r.step:
+        raise CsvError(path, no, "%s: reset %d is not legal (%d .. %d, step %d)" % (r.name, r.reset, r.eff_min, r.eff_max, r.step))
+    if r.access == "pulse" and r.reset != 0:
+        raise CsvError(path, no, "%s: a pulse register must reset to 0" % r.name)
+    if r.raw_check not in CHECKS:
+        raise CsvError(path, no, "%s: check must be one of %s, not '%s'" % (r.name, "|".join(CHECKS), r.raw_check))
+    r.check = r.raw_check
+    if r.check != "none" and r.any_range and r.step == 1:
+        raise CsvError(path, no, "%s: check %s needs a min, max or step" % (r.name, r.check))
+    if r.check == "none" and not (r.any_range and r.step == 1):
+        raise CsvError(path, no, "%s: a range or step is given but check is none (nothing enforces it)" % r.name)
+    r.rule = "" if r.raw_rule == "-" else r.raw_rule
+    if not MEMBER_RE.fullmatch(r.raw_hls_member):
+        raise CsvError(path, no, "%s: hls_member '%s' is not a member path" % (r.name, r.raw_hls_member))
+    r.hls_member = r.raw_hls_member
+    if r.raw_golden_member != "-" and not MEMBER_RE.fullmatch(r.raw_golden_member):
+        raise CsvError(path, no, "%s: golden_member '%s' is not a member path or '-'" % (r.name, r.raw_golden_member))
+    r.golden_member = "" if r.raw_golden_member == "-" else r.raw_golden_member
+    r.description = r.raw_description
+    if not r.description:
+        raise CsvError(path, no, "%s: empty description" % r.name)
+    return r
+
+
+def check_table(path, regs):
+    seen = {}
+    members = {}
+    for r in regs:
+        if r.name in seen:
+            raise CsvError(path, r.line, "duplicate name '%s' (first on line %d)" % (r.name, seen[r.name]))
+        seen[r.name] = r.line
+        for m in (r.hls_member, "golden:" + r.golden_member if r.golden_member else ""):
+            if m and m in members:
+                raise CsvError(path, r.line, "%s: member %s already used by %s" % (r.name, m, members[m]))
+            if m:
+                members[m] = r.name
+    by_off = sorted(regs, key=lambda r: (r.offset, r.line))
+    for a, b in zip(by_off, by_off[1:]):
+        if b.offset < a.offset + a.span:
+            late = a if a.line > b.line else b
+            raise CsvError(path, late.line, "%s (0x%X..0x%X) overlaps %s (0x%X..0x%X, incl. its reserved control word)" %
+                           (b.name, b.offset, b.offset + b.span - 1, a.name, a.offset, a.offset + a.span - 1))
+
+
+# ------------------------------------------------------------------------------------------------
+# generators: each returns the file text
+# ------------------------------------------------------------------------------------------------
+def c_ll(v):
+    """int64 literal (INT64_MIN cannot be written directly)."""
+    if v == -(1 << 63):
+        return "(-9223372036854775807LL - 1)"
+    return "%dLL" % v
+
+
+def member_path(base, path):
+    return "%s.%s" % (base, path)
+
+
+def word_ranges(r):
+    """[(offset, lo_bit, hi_bit)] of the words of a register, low word first."""
+    out = []
+    for w in range(r.words):
+        lo = 32 * w
+        out.append((r.offset + 4 * w, lo, min(r.width, lo + 32) - 1))
+    return out
+
+
+def gen_top_h(regs):
+    args = ",\n".join("                 %s %s" % (r.lx_type, r.name) for r in regs)
+    return """// laserax_top.h — declaration of the synthesis top (see laserax_top.cpp).
+//
+// %s
+#ifndef LASERAX_HLS_LASERAX_TOP_H
+#define LASERAX_HLS_LASERAX_TOP_H
+
+#include "hls/axis_core.h"
+
+// Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
+// s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
+void laserax_top(bool a, bool b, bool sw, bool lerr,
+%s,
+                 lx::axis_out& out);
+
+#endif  // LASERAX_HLS_LASERAX_TOP_H
+""" % (GENERATED_NOTE, args)
+
+
+def gen_top_cpp(regs):
+    params = ",\n".join("                 %s %s" % (r.lx_type, r.name) for r in regs)
+    pragmas = "\n".join("#pragma HLS INTERFACE mode=s_axilite port=%s offset=0x%02X bundle=ctrl" % (r.name, r.offset)
+                        for r in regs)
+    assigns = "\n".join("    regs.%s = %s;" % (r.hls_member, r.name) for r in regs)
+    return """// laserax_top.cpp — Vitis HLS top function of the single-axis interface.
+//
+// %s
+//
+// One call = one clock (free-running pipeline, II = 1, no block-level handshake). Pins are plain
+// wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
+// slave at its fixed offset (a register wider than 32 bits takes consecutive words, low word
+// first); the outputs are wires. The state of the axis lives in one static axis_core, so the
+// function is the whole IP. Build for Vitis with -DLASERAX_USE_AP_TYPES (see scripts/run_hls.tcl);
+// the default build uses lx_types' own classes.
+#include "hls/laserax_top.h"
+
+#include "hls/laserax_regmap.h"
+
+void laserax_top(bool a, bool b, bool sw, bool lerr,
+%s,
+                 lx::axis_out& out) {
+#pragma HLS INTERFACE mode=ap_ctrl_none port=return
+#pragma HLS INTERFACE mode=ap_none port=a
+#pragma HLS INTERFACE mode=ap_none port=b
+#pragma HLS INTERFACE mode=ap_none port=sw
+#pragma HLS INTERFACE mode=ap_none port=lerr
+%s
+#pragma HLS INTERFACE mode=ap_none port=out
+#pragma HLS AGGREGATE variable=out
+#pragma HLS PIPELINE II=1 style=frp
+    static lx::axis_core core;
+    lx::axis_pins pins;
+    pins.a = a;
+    pins.b = b;
+    pins.sw = sw;
+    pins.lerr = lerr;
+    lx::axis_regs regs;
+%s
+    out = core.step(pins, regs);
+}
+""" % (GENERATED_NOTE, params, pragmas, assigns)
+
+
+def gen_regmap_h(regs):
+    end = max(r.offset + r.span for r in regs)
+    consts = []
+    for r in regs:
+        u = r.upper
+        consts.append("// %s: 0x%02X, %d bit%s %s, %s, reset %d" %
+                      (r.name, r.offset, r.width, "" if r.width == 1 else "s", "signed" if r.signed else "unsigned",
+                       r.access, r.reset))
+        consts.append("constexpr unsigned %s_OFFSET = 0x%02X;" % (u, r.offset))
+        consts.append("constexpr int %s_WIDTH = %d;" % (u, r.width))
+        consts.append("constexpr int %s_WORDS = %d;" % (u, r.words))
+        consts.append("constexpr bool %s_SIGNED = %s;" % (u, "true" if r.signed else "false"))
+        consts.append("constexpr long long %s_RESET = %s;" % (u, c_ll(r.reset)))
+    asserts = []
+    for r in regs:
+        asserts.append("static_assert(member_is<LX_REGMAP_MEMBER(%s)>(%s_WIDTH, %s_SIGNED),\n"
+                       "              \"lx::axis_regs::%s is not %s (register %s)\");" %
+                       (r.hls_member, r.upper, r.upper, r.hls_member, r.lx_type, r.name))
+    return """// laserax_regmap.h — the s_axilite register map (docs/REGISTERS.md) as compile-time constants,
+// for firmware authors and static checks, plus static_asserts that every register has the width
+// and signedness of its member in lx::axis_regs.
+//
+// %s
+#ifndef LASERAX_HLS_LASERAX_REGMAP_H
+#define LASERAX_HLS_LASERAX_REGMAP_H
+
+#include <type_traits>
+
+#include "hls/axis_core.h"
+
+namespace lx {
+namespace regmap {
+
+constexpr unsigned FIRST_OFFSET = 0x%02X;  // first register
+constexpr unsigned END_OFFSET = 0x%02X;    // one past the last word (the last reserved word)
+constexpr int N_REGS = %d;
+
+%s
+
+// Width and signedness of a member type: lx::sint<W> / lx::uint<W> on both back ends (own classes
+// and ap_int), bool = 1 bit unsigned; is_lx is false for any other type.
+template <typename T>
+struct member_bits {
+    static constexpr int width = T::width;
+    static constexpr bool is_signed = std::is_same<T, sint<T::width> >::value;
+    static constexpr bool is_lx = is_signed || std::is_same<T, uint<T::width> >::value;
+};
+template <>
+struct member_bits<bool> {
+    static constexpr int width = 1;
+    static constexpr bool is_signed = false;
+    static constexpr bool is_lx = true;
+};
+template <typename T>
+constexpr bool member_is(int width, bool is_signed) {
+    return member_bits<T>::is_lx && member_bits<T>::width == width && member_bits<T>::is_signed == is_signed;
+}
+
+// The declared type of a member path of axis_regs (unevaluated).
+#define LX_REGMAP_MEMBER(path) std::decay<decltype(static_cast<axis_regs*>(nullptr)->path)>::type
+%s
+#undef LX_REGMAP_MEMBER
+
+}  // namespace regmap
+}  // namespace lx
+
+#endif  // LASERAX_HLS_LASERAX_REGMAP_H
+""" % (GENERATED_NOTE, FIRST_OFFSET, end, len(regs), "\n".join(consts), "\n".join(asserts))
+
+
+def c_str(s):
+    return '"%s"' % s.replace("\\", "\\\\").replace('"', '\\"')
+
+
+def gen_table_h(regs):
+    idx = "\n".join("constexpr int %s = %d;" % (r.name, i) for i, r in enumerate(regs))
+    rows = []
+    for r in regs:
+        rows.append("    {%s, 0x%02X, %d, %s, %s, access::%s, %s, %s, %s, %s, %s, check::%s, %s, %s, %s,\n     %s}," %
+                    (c_str(r.name), r.offset, r.width, "true" if r.signed else "false", c_ll(r.reset), r.access,
+                     c_str(r.units), "true" if r.any_range else "false", c_ll(r.eff_min), c_ll(r.eff_max), c_ll(r.step),
+                     r.check, c_str(r.rule), c_str(r.hls_member), c_str(r.golden_member), c_str(r.description)))
+    return """// regmap_table.h — the s_axilite register map (docs/REGISTERS.md) for host code: a constexpr
+// table of every register and accessors that read or write one register of lx::axis_regs or
+// golden::axis_regs by index; to_hls() (golden register struct -> hls register struct).
+//
+// %s
+//
+// Values are int64: the register's value (sign-extended for signed registers); the bits as they
+// appear on the bus are to_bits(value). Hand-written users: tools/common/regmap.h (register
+// image, physical settings <-> registers).
+#ifndef LASERAX_TOOLS_REGMAP_TABLE_H
+#define LASERAX_TOOLS_REGMAP_TABLE_H
+
+#include <cstdint>
+
+#include "golden/axis_chain.h"
+#include "hls/axis_core.h"
+
+namespace lxt {
+namespace regmap {
+
+enum class access { rw, pulse, port };  // pulse: the host writes 1 then 0; port: table write port
+enum class check { none, cfg, map };    // cfg: outside the range -> cfg_err; map: -> map_cfg_err
+
+struct reg_info {
+    const char* name;
+    uint32_t offset;  // byte offset of the low word
+    int width;        // bits (1..64)
+    bool is_signed;
+    int64_t reset;
+    access acc;
+    const char* units;
+    bool any_range;   // every value of the width is legal as far as min/max go
+    int64_t min, max; // legal range (the width's range when any_range)
+    int64_t step;     // legal values are multiples of step (1: any)
+    check chk;
+    const char* rule;           // cross-register constraint, "" if none
+    const char* hls_member;     // path inside lx::axis_regs
+    const char* golden_member;  // path inside golden::axis_regs, "" if golden has none
+    const char* description;
+    constexpr int words() const { return (width + 31) / 32; }
+};
+
+constexpr int kNumRegs = %d;
+constexpr uint32_t kFirstOffset = 0x%02X;
+constexpr uint32_t kEndOffset = 0x%02X;  // one past the last word (the last reserved word)
+
+// Register indices (offset order).
+namespace idx {
+%s
+}  // namespace idx
+
+inline constexpr reg_info kRegs[kNumRegs] = {
+%s
+};
+
+// Smallest / largest value of the register's width.
+constexpr int64_t width_min(const reg_info& r) {
+    return r.is_signed ? (r.width == 64 ? INT64_MIN : -(int64_t(1) << (r.width - 1))) : 0;
+}
+constexpr int64_t width_max(const reg_info& r) {
+    return r.is_signed ? (r.width == 64 ? INT64_MAX : (int64_t(1) << (r.width - 1)) - 1)
+                       : (int64_t(1) << r.width) - 1;  // unsigned registers have at most 63 bits
+}
+constexpr bool fits(const reg_info& r, int64_t v) { return v >= width_min(r) && v <= width_max(r); }
+// min..max and the step (cross-register rules are not evaluated here).
+constexpr bool legal(const reg_info& r, int64_t v) { return v >= r.min && v <= r.max && v %% r.step == 0; }
+// value -> the register's bits (two's complement, width bits) and back.
+constexpr uint64_t to_bits(const reg_info& r, int64_t v) {
+    return r.width == 64 ? static_cast<uint64_t>(v) : static_cast<uint64_t>(v) & ((uint64_t(1) << r.width) - 1);
+}
+constexpr int64_t from_bits(const reg_info& r, uint64_t bits) {
+    if (r.width == 64) return static_cast<int64_t>(bits);
+    const uint64_t m = (uint64_t(1) << r.width) - 1;
+    const uint64_t u = bits & m;
+    if (!r.is_signed) return static_cast<int64_t>(u);
+    const uint64_t sign = uint64_t(1) << (r.width - 1);
+    return static_cast<int64_t>(u ^ sign) - static_cast<int64_t>(sign);
+}
+
+// Index of a register by name, -1 if there is none.
+int find(const char* name);
+
+// lx::axis_regs: every register.
+int64_t get(const lx::axis_regs& r, int i);
+bool set(lx::axis_regs& r, int i, int64_t value);  // false (r unchanged) if value does not fit
+// golden::axis_regs: false for registers golden has no member for (golden_member == "").
+// get() returns the member as it is (it may lie outside the register's width).
+bool get(const golden::axis_regs& r, int i, int64_t* value);
+bool set(golden::axis_regs& r, int i, int64_t value);
+
+}  // namespace regmap
+
+// The hls register struct for a golden one (registers golden lacks keep their reset values);
+// member values are truncated to the register widths, as a register write would.
+lx::axis_regs to_hls(const golden::axis_regs& s);
+
+}  // namespace lxt
+
+#endif  // LASERAX_TOOLS_REGMAP_TABLE_H
+""" % (GENERATED_NOTE, len(regs), FIRST_OFFSET, max(r.offset + r.span for r in regs), idx, "\n".join(rows))
+
+
+def gen_table_cpp(regs):
+    get_h, set_h, get_g, set_g, to_hls = [], [], [], [], []
+    for r in regs:
+        m = "r." + r.hls_member
+        if r.width == 1:
+            get_h.append("        case idx::%s: return %s ? 1 : 0;" % (r.name, m))
+            set_h.append("        case idx::%s: %s = value != 0; return true;" % (r.name, m))
+        elif r.signed:
+            get_h.append("        case idx::%s: return %s.to_int64();" % (r.name, m))
+            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
+        else:
+            get_h.append("        case idx::%s: return static_cast<int64_t>(%s.to_uint64());" % (r.name, m))
+            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
+        if r.golden_member:
+            g = "r." + r.golden_member
+            get_g.append("        case idx::%s: *value = static_cast<int64_t>(%s); return true;" % (r.name, g))
+            set_g.append("        case idx::%s: assign(%s, value); return true;" % (r.name, g))
+            to_hls.append("    r.%s = s.%s;" % (r.hls_member, r.golden_member))
+    return """// regmap_table.cpp — see regmap_table.h.
+//
+// %s
+#include "tools/common/regmap_table.h"
+
+#include <cstring>
+
+namespace lxt {
+namespace regmap {
+
+namespace {
+template <typename T>
+void assign(T& dst, int64_t v) {
+    dst = static_cast<T>(v);
+}
+void assign(bool& dst, int64_t v) { dst = v != 0; }
+}  // namespace
+
+int find(const char* name) {
+    for (int i = 0; i < kNumRegs; ++i)
+        if (std::strcmp(kRegs[i].name, name) == 0) return i;
+    return -1;
+}
+
+int64_t get(const lx::axis_regs& r, int i) {
+    switch (i) {
+%s
+        default: return 0;
+    }
+}
+
+bool set(lx::axis_regs& r, int i, int64_t value) {
+    if (i < 0 || i >= kNumRegs || !fits(kRegs[i], value)) return false;
+    switch (i) {
+%s
+        default: return false;
+    }
+}
+
+bool get(const golden::axis_regs& r, int i, int64_t* value) {
+    switch (i) {
+%s
+        default: return false;
+    }
+}
+
+bool set(golden::axis_regs& r, int i, int64_t value) {
+    if (i < 0 || i >= kNumRegs || !fits(kRegs[i], value)) return false;
+    switch (i) {
+%s
+        default: return false;
+    }
+}
+
+}  // namespace regmap
+
+lx::axis_regs to_hls(const golden::axis_regs& s) {
+    lx::axis_regs r;
+%s
+    return r;
+}
+
+}  // namespace lxt
+""" % (GENERATED_NOTE, "\n".join(get_h), "\n".join(set_h), "\n".join(get_g), "\n".join(set_g), "\n".join(to_hls))
+
+
+def gen_top_call_h(regs):
+    args = ",\n".join("                %s" % ("r." + r.hls_member) for r in regs)
+    return """// laserax_top_call.h — host-side (testbench) helper: calls the synthesis top laserax_top(),
+// whose arguments are one scalar per register, with the registers of an lx::axis_regs. Header-only
+// and built on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
+//
+// %s
+#ifndef LASERAX_TOOLS_LASERAX_TOP_CALL_H
+#define LASERAX_TOOLS_LASERAX_TOP_CALL_H
+
+#include "hls/laserax_top.h"
+
+namespace lxt {
+
+inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
+    laserax_top(a, b, sw, lerr,
+%s,
+                out);
+}
+
+}  // namespace lxt
+
+#endif  // LASERAX_TOOLS_LASERAX_TOP_CALL_H
+""" % (GENERATED_NOTE, args)
+
+
+def gen_c_h(regs):
+    end = max(r.offset + r.span for r in regs)
+    defs = []
+    xs = []
+    for r in regs:
+        u = "LASERAX_REG_" + r.upper
+        defs.append("/* %s: %s */" % (r.name, r.description.replace("*/", "* /")))
+        defs.append("#define %s_OFFSET 0x%02Xu" % (u, r.offset))
+        defs.append("#define %s_WIDTH %d" % (u, r.width))
+        defs.append("#define %s_WORDS %d" % (u, r.words))
+        defs.append("#define %s_SIGNED %d" % (u, 1 if r.signed else 0))
+        defs.append("#define %s_RESET %s" % (u, c_ll(r.reset)))
+        if not r.any_range:
+            defs.append("#define %s_MIN %s" % (u, c_ll(r.eff_min)))
+            defs.append("#define %s_MAX %s" % (u, c_ll(r.eff_max)))
+        if r.step != 1:
+            defs.append("#define %s_STEP %d" % (u, r.step))
+        xs.append("    X(%s, 0x%02Xu, %d, %d, %s)" % (r.upper, r.offset, r.width, 1 if r.signed else 0, c_ll(r.reset)))
+    return """/* laserax_regs_c.h — the laserax s_axilite register map for C firmware (docs/REGISTERS.md).
+ *
+ * %s
+ *
+ * Byte offsets on the AXI-lite slave (bundle ctrl). A register wider than 32 bits takes WORDS
+ * consecutive 32-bit words, low word first; the word after them is reserved (Vitis HLS control
+ * word). Pulse registers: write 1, then 0. RESET is the value
+ * (sign-extended for SIGNED registers); MIN/MAX/STEP are given where the range is restricted.
+ */
+#ifndef LASERAX_REGS_C_H
+#define LASERAX_REGS_C_H
+
+#define LASERAX_REG_FIRST_OFFSET 0x%02Xu
+#define LASERAX_REG_END_OFFSET 0x%02Xu
+#define LASERAX_REG_COUNT %d
+
+%s
+
+/* X-macro over every register: X(NAME, OFFSET, WIDTH, SIGNED, RESET) */
+#define LASERAX_REGS(X) \\
+%s
+
+#endif /* LASERAX_REGS_C_H */
+""" % (GENERATED_NOTE, FIRST_OFFSET, end, len(regs), "\n".join(defs), " \\\n".join(xs))
+
+
+def md_escape(s):
+    return s.replace("|", "\\|")
+
+
+def legal_text(r):
+    if r.any_range and r.step == 1:
+        parts = ["any"]
+    elif r.any_range:
+        parts = ["multiple of %d" % r.step]
+    else:
+        parts = ["%d .. %d" % (r.eff_min, r.eff_max)]
+        if r.step != 1:
+            parts[0] += ", step %d" % r.step
+    if r.rule:
+        parts.append(r.rule)
+    text = "; ".join(parts)
+    if r.check == "cfg":
+        text += " (else cfg_err)"
+    elif r.check == "map":
+        text += " (else map_cfg_err)"
+    return md_escape(text)
+
+
+def gen_md(regs):
+    rows = []
+    for r in regs:
+        off = "0x%02X" % r.offset if r.words == 1 else "0x%02X..0x%02X" % (r.offset, r.reserved - 1)
+        w = "%d%s" % (r.width, " signed" if r.signed else "")
+        hexv = "0x%X" % r.bits(r.reset)
+        rows.append("| %s | `%s` | %s | %s | %d (%s) | %s | %s | %s |" %
+                    (off, r.name, w, r.access, r.reset, hexv, md_escape(r.units), legal_text(r), md_escape(r.description)))
+    wide = [r for r in regs if r.words > 1]
+    words = []
+    for r in wide:
+        words.append("  * `%s`: %s" % (r.name, ", ".join("0x%02X = bits %d..%d" % (o, lo, hi) for o, lo, hi in word_ranges(r))))
+    pulses = ", ".join("`%s`" % r.name for r in regs if r.access == "pulse")
+    ports = ", ".join("`%s`" % r.name for r in regs if r.access == "port")
+    end = max(r.offset + r.span for r in regs)
+    used = set()
+    for r in regs:
+        for w in range(r.words + 1):
+            used.add(r.offset + 4 * w)
+    gaps = ["0x%02X" % o for o in range(FIRST_OFFSET, end, 4) if o not in used]
+    return """<!-- %s -->
+# laserax register map (s_axilite)
+
+Generated from [`regmap/laserax_regs.csv`](../regmap/laserax_regs.csv), the single source of the
+register map: the Vitis HLS top (`hls/laserax_top.cpp`, one s_axilite scalar per register at the
+offsets below), the constants in `hls/laserax_regmap.h` and `tools/common/laserax_regs_c.h`, the
+host table and accessors (`tools/common/regmap_table.h`, used by the register image and the
+physical <-> register helper in `tools/common/regmap.h`) and this page are all written by
+`%s`.
+Edit the CSV, never the generated files; CTest `regmap_generated` fails until they are regenerated.
+
+Conventions:
+
+* Byte offsets on the AXI4-lite slave `s_axi_ctrl` (bundle `ctrl`); the first register is at 0x%02X
+  (Vitis HLS reserves 0x00..0x0F of an s_axilite slave for its block-control registers, unused
+  here: the top has `ap_ctrl_none`). The word after each register's data words is reserved: Vitis
+  HLS keeps one control word per s_axilite scalar, even with `ap_none` (UG1399, "S_AXILITE Offset
+  Option"), so a register of W bits occupies ceil(W/32) + 1 words. Other unused words: %s.
+  Write 0 to reserved words.
+* A register wider than 32 bits takes consecutive 32-bit words, **low word first**; write the low
+  word, then the high word. The core reads the registers every clock and has no shadow registers:
+  between the two writes it sees a mixed value for a few clocks. For `ratio` that is harmless for
+  the position (comp is a pure function of N and R, DESIGN §4.3, so the final value gives the exact
+  position) but the mixed value may move the output transiently (and a mixed value of 0 would be
+  a configuration error); change such registers while the axis stands still, or accept the
+  transient. The wide registers:
+%s
+* Signed registers are two's complement in their width; the bits above the width in the high
+  word are ignored (write the sign extension or 0).
+* `access`:
+  * `rw` — a setting, read every clock;
+  * `pulse` — the host writes 1, then 0; the action happens in every clock the register is 1 (the
+    core acts on the level): %s;
+  * `port` — fields of a table write port: set address and data, then write enable 1, then 0;
+    the word is written in every clock the enable is 1: %s.
+* Legal range: a `cfg` register outside its range (or its rule) puts the whole chain in the safe
+  state with status `cfg_err` (DESIGN §4.7); a `map` register outside its range gives the status
+  bit `map_cfg_err` while `map_en` and that bank is selected, and the map is inactive
+  ([ERROR_MAP.md](ERROR_MAP.md) §4.5); `any` is every value of the width.
+* Reset: the values after power-up; they are the default member values of `lx::axis_regs` and
+  `golden::axis_regs` (checked by `tb_regmap`).
+
+| offset | name | width | access | reset | units | legal | description |
+|---|---|---|---|---|---|---|---|
+%s
+
+Cross-register rules (checked by the configuration check every clock, DESIGN §4.7):
+`tbl_period == period`, `period/4 <= mark_len <= period`, `amplitude <= 2^(dac_width-1) - 1`.
+Table load (DESIGN §4.6): while `tbl_period != period` (the chain is in the safe state) write the
+P/4 quarter-wave words through `tbl_we/tbl_addr/tbl_data`, then `tbl_period = period`.
+Error-map reload (docs/ERROR_MAP.md §4.4): write the geometry (`map_originB`, `map_kB`,
+`map_nB`) of the bank B not selected by `bank_sel` and its words through
+`map_we/map_addr/map_data`, then flip `bank_sel`.
+
+Status and taps are not registers of this map: they are output wires of the top (`lx::axis_out`,
+DESIGN §5).
+
+Host helper: `tools/common/regmap.h` keeps a register image (32-bit words by offset) with
+write/read by name, converts it to and from `lx::axis_regs` / `golden::axis_regs`, and converts
+physical settings (air temperature, pressure, humidity, CO2, expansion coefficient, material
+temperature, thermal origin, error-map table) to register values and back; `laserax compensate`
+prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
+""" % (GENERATED_NOTE, COMMAND, FIRST_OFFSET, ", ".join(gaps) if gaps else "none",
+       "\n".join(words), pulses, ports, "\n".join(rows))
+
+
+def generate(regs):
+    files = {
+        "hls/laserax_top.h": gen_top_h(regs),
+        "hls/laserax_top.cpp": gen_top_cpp(regs),
+        "hls/laserax_regmap.h": gen_regmap_h(regs),
+        "tools/common/regmap_table.h": gen_table_h(regs),
+        "tools/common/regmap_table.cpp": gen_table_cpp(regs),
+        "tools/common/laserax_top_call.h": gen_top_call_h(regs),
+        "tools/common/laserax_regs_c.h": gen_c_h(regs),
+        "docs/REGISTERS.md": gen_md(regs),
+    }
+    for rel, text in files.items():
+        if rel.startswith("hls/"):
+            for no, line in enumerate(text.split("\n"), start=1):
+                m = HLS_FORBIDDEN.search(line)
+                if m:
+                    raise CsvError(rel, no, "generated hls text contains '%s' (hls lint); reword the CSV" % m.group(1))
+    return files
+
+
+# ------------------------------------------------------------------------------------------------
+# self-test: malformed CSVs must be rejected with FILE:LINE: message
+# ------------------------------------------------------------------------------------------------
+def selftest():
+    with open(os.path.join(ROOT, CSV_REL), "r", encoding="utf-8") as f:
+        good = f.read().split("\n")
+    data = [i for i, l in enumerate(good) if l.strip() and not l.startswith("#")]
+    hdr, first, second = data[0], data[1], data[2]
+
+    def edit(row_i, col, value):
+        lines = list(good)
+        row = next(csv.reader([lines[row_i]]))
+        row[COLUMNS.index(col)] = value
+        lines[row_i] = ",".join('"%s"' % c if "," in c else c for c in row)
+        return lines
+
+    def field(row_i, col):
+        return next(csv.reader([good[row_i]]))[COLUMNS.index(col)]
+
+    second_off = int(field(second, "offset"), 16)
+    ranged = next(i for i in data[1:] if field(i, "min") not in ("-", "0"))  # a row with a lower bound
+    dup = list(good)
+    dup.insert(second + 1, good[second])
+    cases = [  # (name, lines, line number expected in the message, word expected)
+        ("overlap", edit(second, "offset", "0x%X" % int(field(first, "offset"), 16)), second + 1, "overlaps"),
+        ("misaligned", edit(second, "offset", "0x%X" % (second_off + 2)), second + 1, "aligned"),
+        ("on_reserved_word", edit(second, "offset", "0x%X" % (int(field(first, "offset"), 16) + 4)), second + 1, "reserved"),
+        ("below_first", edit(first, "offset", "0x0C"), first + 1, "below"),
+        ("reset_out_of_width", edit(first, "reset", "999999"), first + 1, "does not fit"),
+        ("reset_illegal", edit(ranged, "reset", str(int(field(ranged, "min")) - 1)), ranged + 1, "not legal"),
+        ("duplicate_name", dup, second + 2, "duplicate"),
+        ("width_zero", edit(first, "width", "0"), first + 1, "width"),
+        ("width_65", edit(first, "width", "65"), first + 1, "width"),
+        ("bad_check", edit(first, "check", "maybe"), first + 1, "check"),
+        ("bad_access", edit(first, "access", "wo"), first + 1, "access"),
+        ("bad_signed", edit(first, "signed", "x"), first + 1, "signed"),
+        ("bad_offset", edit(first, "offset", "16"), first + 1, "hex"),
+        ("min_gt_max", edit(first, "min", "5000"), first + 1, "min"),
+        ("bad_header", [l if i != hdr else l.replace("reset", "rst") for i, l in enumerate(good)], hdr + 1, "header"),
+        ("few_columns", [l if i != first else l.rsplit(",", 3)[0] for i, l in enumerate(good)], first + 1, "columns"),
+    ]
+    fails = 0
+    with tempfile.TemporaryDirectory(prefix="gen_regmap_selftest_") as tmp:
+        def run(lines, name):
+            path = os.path.join(tmp, name + ".csv")
+            with open(path, "w", encoding="utf-8") as f:
+                f.write("\n".join(lines))
+            out = os.path.join(tmp, "out_" + name)
+            p = subprocess.run([sys.executable, os.path.abspath(__file__), "--csv", path, "--out-dir", out],
+                               capture_output=True, text=True)
+            return p.returncode, p.stdout + p.stderr, path, out
+
+        rc, msg, _, out = run(good, "good")
+        if rc != 0 or not os.path.exists(os.path.join(out, "hls/laserax_top.cpp")):
+            fails += 1
+            print("selftest: the committed CSV is rejected (exit %d): %s" % (rc, msg.strip()))
+        for name, lines, line, word in cases:
+            rc, msg, path, out = run(lines, name)
+            want = "%s:%d:" % (path, line)
+            ok = rc == 1 and want in msg and word in msg and not os.path.exists(out)
+            if not ok:
+                fails += 1
+                print("selftest: case %s: expected exit 1 with '%s ... %s', got exit %d: %s" % (name, want, word, rc, msg.strip()))
+            else:
+                print("selftest: %-20s rejected: %s" % (name, msg.strip().replace(tmp + "/", "")))
+    n = len(cases) + 1
+    if fails:
+        print("regmap_generator_selftest: FAIL (%d of %d cases)" % (fails, n))
+        return 1
+    print("regmap_generator_selftest: PASS (%d cases)" % n)
+    return 0
+
+
+# ------------------------------------------------------------------------------------------------
+def main():
+    ap = argparse.ArgumentParser(description="laserax register map generator", add_help=True)
+    ap.add_argument("--csv", default=None, help="register map CSV (default %s)" % CSV_REL)
+    ap.add_argument("--out-dir", default=None, help="root of the generated files (default: the repository root)")
+    ap.add_argument("--check", action="store_true", help="compare with the files on disk, write nothing")
+    ap.add_argument("--selftest", action="store_true", help="run the malformed-CSV self-test")
+    a = ap.parse_args()
+    if a.selftest:
+        return selftest()
+    csv_path = a.csv if a.csv is not None else os.path.join(ROOT, CSV_REL)
+    shown = os.path.relpath(csv_path, ROOT) if a.csv is None else csv_path
+    out_dir = a.out_dir if a.out_dir is not None else ROOT
+    try:
+        regs = load(csv_path)
+        files = generate(regs)
+    except CsvError as e:
+        msg = str(e)
+        if a.csv is None and msg.startswith(csv_path):
+            msg = shown + msg[len(csv_path):]
+        print("gen_regmap.py: error: %s" % msg, file=sys.stderr)
+        return 1
+    if a.check:
+        bad = 0
+        for rel, text in sorted(files.items()):
+            path = os.path.join(out_dir, rel)
+            try:
+                with open(path, "r", encoding="utf-8", newline="") as f:
+                    disk = f.read()
+            except OSError:
+                disk = None
+            if disk == text:
+                continue
+            bad += 1
+            if disk is None:
+                print("gen_regmap.py --check: %s is missing" % rel)
+                continue
+            print("gen_regmap.py --check: %s differs from what %s generates:" % (rel, shown))
+            diff = list(difflib.unified_diff(disk.split("\n"), text.split("\n"), "committed/" + rel, "generated/" + rel,
+                                             n=1, lineterm=""))
+            for line in diff[:40]:
+                print("    " + line)
+            if len(diff) > 40:
+                print("    ... (%d more diff lines)" % (len(diff) - 40))
+        if bad:
+            print("regmap_generated: FAIL (%d of %d files differ; run %s)" % (bad, len(files), COMMAND))
+            return 1
+        print("regmap_generated: PASS (%d registers, %d generated files up to date)" % (len(regs), len(files)))
+        return 0
+    written = 0
+    for rel, text in sorted(files.items()):
+        path = os.path.join(out_dir, rel)
+        try:
+            with open(path, "r", encoding="utf-8", newline="") as f:
+                if f.read() == text:
+                    continue
+        except OSError:
+            pass
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8", newline="\n") as f:
+            f.write(text)
+        written += 1
+        print("gen_regmap.py: wrote %s" % rel)
+    print("gen_regmap.py: %d registers, %d files (%d changed)" % (len(regs), len(files), written))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,181 @@
+// regmap_table.h — the s_axilite register map (docs/REGISTERS.md) for host code: a constexpr
+// table of every register and accessors that read or write one register of lx::axis_regs or
+// golden::axis_regs by index; to_hls() (golden register struct -> hls register struct).
+//
+// GENERATED FILE - do not edit. Source: regmap/laserax_regs.csv. Command: /usr/bin/python3 scripts/gen_regmap.py
+//
+// Values are int64: the register's value (sign-extended for signed registers); the bits as they
+// appear on the bus are to_bits(value). Hand-written users: tools/common/regmap.h (register
+// image, physical settings <-> registers).
+#ifndef LASERAX_TOOLS_REGMAP_TABLE_H
+#define LASERAX_TOOLS_REGMAP_TABLE_H
+
+#include <cstdint>
+
+#include "golden/axis_chain.h"
+#include "hls/axis_core.h"
+
+namespace lxt {
+namespace regmap {
+
+enum class access { rw, pulse, port };  // pulse: the host writes 1 then 0; port: table write port
+enum class check { none, cfg, map };    // cfg: outside the range -> cfg_err; map: -> map_cfg_err
+
+struct reg_info {
+    const char* name;
+    uint32_t offset;  // byte offset of the low word
+    int width;        // bits (1..64)
+    bool is_signed;
+    int64_t reset;
+    access acc;
+    const char* units;
+    bool any_range;   // every value of the width is legal as far as min/max go
+    int64_t min, max; // legal range (the width's range when any_range)
+    int64_t step;     // legal values are multiples of step (1: any)
+    check chk;
+    const char* rule;           // cross-register constraint, "" if none
+    const char* hls_member;     // path inside lx::axis_regs
+    const char* golden_member;  // path inside golden::axis_regs, "" if golden has none
+    const char* description;
+    constexpr int words() const { return (width + 31) / 32; }
+};
+
+constexpr int kNumRegs = 28;
+constexpr uint32_t kFirstOffset = 0x10;
+constexpr uint32_t kEndOffset = 0x118;  // one past the last word (the last reserved word)
+
+// Register indices (offset order).
+namespace idx {
+constexpr int period = 0;
+constexpr int tbl_period = 1;
+constexpr int ratio = 2;
+constexpr int comp_offset = 3;
+constexpr int glitch_n = 4;
+constexpr int sw_debounce = 5;
+constexpr int min_spacing = 6;
+constexpr int pace_m = 7;
+constexpr int backlog_thr = 8;
+constexpr int mark_len = 9;
+constexpr int dac_width = 10;
+constexpr int amplitude = 11;
+constexpr int rehome = 12;
+constexpr int clear = 13;
+constexpr int tbl_we = 14;
+constexpr int tbl_addr = 15;
+constexpr int tbl_data = 16;
+constexpr int map_en = 17;
+constexpr int bank_sel = 18;
+constexpr int map_origin0 = 19;
+constexpr int map_k0 = 20;
+constexpr int map_n0 = 21;
+constexpr int map_origin1 = 22;
+constexpr int map_k1 = 23;
+constexpr int map_n1 = 24;
+constexpr int map_we = 25;
+constexpr int map_addr = 26;
+constexpr int map_data = 27;
+}  // namespace idx
+
+inline constexpr reg_info kRegs[kNumRegs] = {
+    {"period", 0x10, 13, false, 256LL, access::rw, "output counts", false, 8LL, 4096LL, 8LL, check::cfg, "tbl_period == period; mark_len in period/4 .. period", "period", "period",
+     "sin/cos period P (20 um = 256 counts); a change while running restarts the chain (one safe-state call)"},
+    {"tbl_period", 0x18, 13, false, 256LL, access::rw, "output counts", false, 8LL, 4096LL, 8LL, check::cfg, "== period", "tbl_period", "tbl_period",
+     "period the quarter-wave table was computed for; written after loading the table"},
+    {"ratio", 0x20, 37, false, 34789620252LL, access::rw, "Q5.32 output counts per raw count", false, 1LL, 137438953471LL, 1LL, check::cfg, "", "ratio", "ratio",
+     "pulse multiplier ratio R: comp = floor((N * R + comp_offset) / 2^32); reset = rha(632.991 / 1.000271 / 78.125 * 2^32)"},
+    {"comp_offset", 0x30, 64, true, 0LL, access::rw, "Q32.32 output counts", true, (-9223372036854775807LL - 1), 9223372036854775807LL, 1LL, check::none, "", "comp_offset", "comp_offset",
+     "offset added to N * R in the pulse multiplier (thermal origin: rha(-K168 * K169 * 1e-5 * 2^32), 0 = none)"},
+    {"glitch_n", 0x40, 8, false, 2LL, access::rw, "clock cycles", true, 0LL, 255LL, 1LL, check::none, "", "glitch_n", "glitch_n",
+     "glitch filter length of the A/B/LERR inputs (0 and 1 = pass after one clock)"},
+    {"sw_debounce", 0x48, 16, false, 16LL, access::rw, "clock cycles", true, 0LL, 65535LL, 1LL, check::none, "", "sw_debounce", "sw_debounce",
+     "debounce length of the reference switch input"},
+    {"min_spacing", 0x50, 16, false, 0LL, access::rw, "clock cycles", true, 0LL, 65535LL, 1LL, check::none, "", "min_spacing", "min_spacing",
+     "minimum spacing of counted A/B edges; closer edges set ovs_edge_st (0 = off)"},
+    {"pace_m", 0x58, 16, false, 4LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "", "pace_m", "pace_m",
+     "output pacer: consecutive output counts at least M clocks apart"},
+    {"backlog_thr", 0x60, 32, false, 4096LL, access::rw, "output counts", true, 0LL, 4294967295LL, 1LL, check::none, "", "backlog_thr", "backlog_thr",
+     "pacer backlog alarm threshold (|backlog| > thr sets ovs_backlog_st)"},
+    {"mark_len", 0x68, 13, false, 64LL, access::rw, "output counts", false, 2LL, 4096LL, 1LL, check::cfg, "period/4 .. period", "mark_len", "mark_len",
+     "reference mark length: the mark is active from B to C = B + mark_len"},
+    {"dac_width", 0x70, 5, false, 16LL, access::rw, "bits", false, 12LL, 18LL, 1LL, check::cfg, "", "dac_width", "dac_width",
+     "width of the sin/cos DAC codes; limits the amplitude"},
+    {"amplitude", 0x78, 18, false, 32767LL, access::rw, "DAC codes", false, 1LL, 131071LL, 1LL, check::cfg, "<= 2^(dac_width-1)-1", "amplitude", "amplitude",
+     "sin/cos amplitude (the table value at a quarter period)"},
+    {"rehome", 0x80, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "rehome", "rehome",
+     "back to stage 1 (un-homed) without a phase jump; a new switch edge homes again"},
+    {"clear", 0x88, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "clear", "clear",
+     "clears the sticky flags illegal_st / ovs_edge_st / ovs_backlog_st / glitch_st / lerr_alarm and err_cnt (an event in the same clock wins)"},
+    {"tbl_we", 0x90, 1, false, 0LL, access::port, "-", true, 0LL, 1LL, 1LL, check::none, "", "tbl_we", "",
+     "quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1"},
+    {"tbl_addr", 0x98, 10, false, 0LL, access::port, "table words", true, 0LL, 1023LL, 1LL, check::none, "", "tbl_addr", "",
+     "quarter-wave table address 0 .. P/4-1"},
+    {"tbl_data", 0xA0, 17, false, 0LL, access::port, "DAC codes", true, 0LL, 131071LL, 1LL, check::none, "", "tbl_data", "",
+     "quarter-wave table word rha(amplitude * sin(2 pi k / P))"},
+    {"map_en", 0xA8, 1, false, 0LL, access::rw, "-", true, 0LL, 1LL, 1LL, check::none, "", "emap.map_en", "emap.map_en",
+     "error map enable (docs/ERROR_MAP.md); active only while homed and the selected bank's geometry is valid"},
+    {"bank_sel", 0xB0, 1, false, 0LL, access::rw, "-", true, 0LL, 1LL, 1LL, check::none, "", "emap.bank_sel", "emap.bank_sel",
+     "active error-map bank; the map write port writes the other bank"},
+    {"map_origin0", 0xC0, 38, true, 0LL, access::rw, "output counts", true, -137438953472LL, 137438953471LL, 1LL, check::none, "", "emap.geom[0].origin", "emap.geom[0].origin",
+     "position of table point 0 of bank 0 (comp coordinates)"},
+    {"map_k0", 0xD0, 5, false, 10LL, access::rw, "log2 output counts", false, 4LL, 20LL, 1LL, check::map, "", "emap.geom[0].spacing_log2", "emap.geom[0].spacing_log2",
+     "bank 0 point spacing 2^k counts (16 counts = 1.25 um .. 2^20 counts = 81.9 mm)"},
+    {"map_n0", 0xD8, 12, false, 2048LL, access::rw, "points", false, 2LL, 2048LL, 1LL, check::map, "", "emap.geom[0].n_points", "emap.geom[0].n_points",
+     "number of table points used in bank 0"},
+    {"map_origin1", 0xE0, 38, true, 0LL, access::rw, "output counts", true, -137438953472LL, 137438953471LL, 1LL, check::none, "", "emap.geom[1].origin", "emap.geom[1].origin",
+     "position of table point 0 of bank 1 (comp coordinates)"},
+    {"map_k1", 0xF0, 5, false, 10LL, access::rw, "log2 output counts", false, 4LL, 20LL, 1LL, check::map, "", "emap.geom[1].spacing_log2", "emap.geom[1].spacing_log2",
+     "bank 1 point spacing 2^k counts"},
+    {"map_n1", 0xF8, 12, false, 2048LL, access::rw, "points", false, 2LL, 2048LL, 1LL, check::map, "", "emap.geom[1].n_points", "emap.geom[1].n_points",
+     "number of table points used in bank 1"},
+    {"map_we", 0x100, 1, false, 0LL, access::port, "-", true, 0LL, 1LL, 1LL, check::none, "", "emap.we", "emap.we",
+     "error-map table write enable: writes map_data to map_addr of bank !bank_sel in every clock while 1"},
+    {"map_addr", 0x108, 11, false, 0LL, access::port, "table points", true, 0LL, 2047LL, 1LL, check::none, "", "emap.addr", "emap.addr",
+     "error-map table address 0 .. 2047"},
+    {"map_data", 0x110, 24, true, 0LL, access::port, "Q15.8 output counts", true, -8388608LL, 8388607LL, 1LL, check::none, "", "emap.data", "emap.data",
+     "error-map table word: correction at that point in 1/256 output count"},
+};
+
+// Smallest / largest value of the register's width.
+constexpr int64_t width_min(const reg_info& r) {
+    return r.is_signed ? (r.width == 64 ? INT64_MIN : -(int64_t(1) << (r.width - 1))) : 0;
+}
+constexpr int64_t width_max(const reg_info& r) {
+    return r.is_signed ? (r.width == 64 ? INT64_MAX : (int64_t(1) << (r.width - 1)) - 1)
+                       : (int64_t(1) << r.width) - 1;  // unsigned registers have at most 63 bits
+}
+constexpr bool fits(const reg_info& r, int64_t v) { return v >= width_min(r) && v <= width_max(r); }
+// min..max and the step (cross-register rules are not evaluated here).
+constexpr bool legal(const reg_info& r, int64_t v) { return v >= r.min && v <= r.max && v % r.step == 0; }
+// value -> the register's bits (two's complement, width bits) and back.
+constexpr uint64_t to_bits(const reg_info& r, int64_t v) {
+    return r.width == 64 ? static_cast<uint64_t>(v) : static_cast<uint64_t>(v) & ((uint64_t(1) << r.width) - 1);
+}
+constexpr int64_t from_bits(const reg_info& r, uint64_t bits) {
+    if (r.width == 64) return static_cast<int64_t>(bits);
+    const uint64_t m = (uint64_t(1) << r.width) - 1;
+    const uint64_t u = bits & m;
+    if (!r.is_signed) return static_cast<int64_t>(u);
+    const uint64_t sign = uint64_t(1) << (r.width - 1);
+    return static_cast<int64_t>(u ^ sign) - static_cast<int64_t>(sign);
+}
+
+// Index of a register by name, -1 if there is none.
+int find(const char* name);
+
+// lx::axis_regs: every register.
+int64_t get(const lx::axis_regs& r, int i);
+bool set(lx::axis_regs& r, int i, int64_t value);  // false (r unchanged) if value does not fit
+// golden::axis_regs: false for registers golden has no member for (golden_member == "").
+// get() returns the member as it is (it may lie outside the register's width).
+bool get(const golden::axis_regs& r, int i, int64_t* value);
+bool set(golden::axis_regs& r, int i, int64_t value);
+
+}  // namespace regmap
+
+// The hls register struct for a golden one (registers golden lacks keep their reset values);
+// member values are truncated to the register widths, as a register write would.
+lx::axis_regs to_hls(const golden::axis_regs& s);
+
+}  // namespace lxt
+
+#endif  // LASERAX_TOOLS_REGMAP_TABLE_H
