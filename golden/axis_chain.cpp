@@ -21,20 +21,30 @@ bool config_ok(const axis_regs& r) {
 void axis_chain::reset() {
     const int64_t keep = last_period_;  // the period memory is not part of the chain's reset
     const bool keep_run = was_running_;
+    const uint64_t keep_ratio = ratio_held_;  // held registers: register file, not chain state
+    const int64_t keep_offset = offset_held_;
     error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
     *this = axis_chain{};
     emap_ = std::move(keep_map);
     emap_.reset();
     last_period_ = keep;
     was_running_ = keep_run;
+    ratio_held_ = keep_ratio;
+    offset_held_ = keep_offset;
 }
 
 axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     axis_out o{};
+    // DESIGN 4.7: ratio and comp_offset in force are loaded in every call without comp_sync,
+    // else only in a call with comp_commit
+    if (!regs.comp_sync || regs.comp_commit) {
+        ratio_held_ = regs.ratio;
+        offset_held_ = regs.comp_offset;
+    }
     // DESIGN 4.7: a change of the period register between two running calls is a
     // reconfiguration: the call in which the new value appears is a safe-state call.
     const bool period_changed = was_running_ && regs.period != last_period_;
-    const bool running = config_ok(regs) && !period_changed;
+    const bool running = config_ok(regs) && ratio_held_ != 0 && !period_changed;
     last_period_ = regs.period;
     was_running_ = running;
     if (!running) {
@@ -50,7 +60,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     const input_filter::out swf_o = swf_.step(pins.sw, regs.sw_debounce);
     const quad_decoder::out dec_o =
         dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, regs.ratio, regs.comp_offset);
+    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, ratio_held_, offset_held_);
     // error map (docs/ERROR_MAP.md §8): uncorrected comp and homed status of the previous call;
     // its delta joins the multiplier delta at the pacer input
     const error_map::out emap_o = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);

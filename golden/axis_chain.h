@@ -37,6 +37,8 @@ struct axis_regs {
     int64_t period = 256;
     uint64_t ratio = default_ratio();
     int64_t comp_offset = 0;  // Q32.32 output counts added to N * R (thermal origin, K168)
+    bool comp_sync = false;   // 1: ratio / comp_offset take effect only in a comp_commit call
+    bool comp_commit = false; // pulse (DESIGN 4.7)
     int64_t glitch_n = 2;
     int64_t sw_debounce = 16;
     int64_t min_spacing = 0;
@@ -102,6 +104,8 @@ private:
     rephase::out rep_q_{};   // rephase output of call t-1
     rephase::out rep_q2_{};  // rephase output of call t-2 (qa, qb, qz, ref_mark)
     int64_t last_period_ = 0;    // period register of the previous call
+    uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
+    int64_t offset_held_ = 0;                // comp_offset in force
     bool was_running_ = false;   // the previous call ran with a valid configuration
 };
 

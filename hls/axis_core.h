@@ -41,6 +41,11 @@ struct axis_regs {
     period_t period = axis_core_cfg::PERIOD_DEFAULT;
     ratio_t ratio = axis_core_cfg::RATIO_DEFAULT;
     offset_t comp_offset = 0;  // Q32.32 output counts added to N * R (thermal origin, K168)
+    // Commit of the wide compensation registers (DESIGN §4.7): with comp_sync = 0 ratio and
+    // comp_offset act in the call they are written; with comp_sync = 1 only in a call with
+    // comp_commit = 1 (a bus host writes the words, then pulses comp_commit: no torn value).
+    bool comp_sync = false;
+    bool comp_commit = false;
     quad_decoder_cfg::glitch_t glitch_n = 2;
     axis_core_cfg::debounce_t sw_debounce = 16;
     quad_decoder_cfg::spacing_t min_spacing = 0;
@@ -144,12 +149,18 @@ public:
 
     axis_out step(const axis_pins& pins, const axis_regs& regs) {
         if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
+        // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
+        // not part of the chain reset (register file state)
+        if (!regs.comp_sync || regs.comp_commit) {
+            ratio_h_ = regs.ratio;
+            offset_h_ = regs.comp_offset;
+        }
         axis_out o = axis_out{};
         // A period change while running is a reconfiguration: the phase counters of the old
         // period are meaningless for the next one, so the chain restarts (one call in the safe
         // state). Coming out of reset or of an invalid configuration the blocks are already reset.
         const bool period_changed = run_q_ && regs.period != period_q_;
-        const bool ok = axis_config_ok(regs) && !period_changed;
+        const bool ok = axis_config_ok(regs) && ratio_h_ != 0 && !period_changed;
         period_q_ = regs.period;
         run_q_ = ok;
         if (!ok) {
@@ -162,7 +173,7 @@ public:
         const input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf = swf_.step(pins.sw, regs.sw_debounce);
         const quad_decoder::out_t dec =
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, regs.ratio, regs.comp_offset);
+        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta joins the multiplier delta at the
         // pacer input (2 calls of map latency, DESIGN §4.7)
@@ -234,6 +245,8 @@ private:
     rephase::out_t rep_q_, rep_q2_;
     error_map::out_t emap_q_;
     period_t period_q_ = 0;  // period register of the previous call
+    ratio_t ratio_h_ = axis_core_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
+    offset_t offset_h_ = 0;                           // comp_offset in force
     bool run_q_ = false;     // the previous call ran with a valid configuration
 };
 

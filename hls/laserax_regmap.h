@@ -14,8 +14,8 @@ namespace lx {
 namespace regmap {
 
 constexpr unsigned FIRST_OFFSET = 0x10;  // first register
-constexpr unsigned END_OFFSET = 0x118;    // one past the last word (the last reserved word)
-constexpr int N_REGS = 28;
+constexpr unsigned END_OFFSET = 0x128;    // one past the last word (the last reserved word)
+constexpr int N_REGS = 30;
 
 // period: 0x10, 13 bits unsigned, rw, reset 256
 constexpr unsigned PERIOD_OFFSET = 0x10;
@@ -185,6 +185,18 @@ constexpr int MAP_DATA_WIDTH = 24;
 constexpr int MAP_DATA_WORDS = 1;
 constexpr bool MAP_DATA_SIGNED = true;
 constexpr long long MAP_DATA_RESET = 0LL;
+// comp_sync: 0x118, 1 bit unsigned, rw, reset 0
+constexpr unsigned COMP_SYNC_OFFSET = 0x118;
+constexpr int COMP_SYNC_WIDTH = 1;
+constexpr int COMP_SYNC_WORDS = 1;
+constexpr bool COMP_SYNC_SIGNED = false;
+constexpr long long COMP_SYNC_RESET = 0LL;
+// comp_commit: 0x120, 1 bit unsigned, pulse, reset 0
+constexpr unsigned COMP_COMMIT_OFFSET = 0x120;
+constexpr int COMP_COMMIT_WIDTH = 1;
+constexpr int COMP_COMMIT_WORDS = 1;
+constexpr bool COMP_COMMIT_SIGNED = false;
+constexpr long long COMP_COMMIT_RESET = 0LL;
 
 // Width and signedness of a member type: lx::sint<W> / lx::uint<W> on both back ends (own classes
 // and ap_int), bool = 1 bit unsigned; is_lx is false for any other type.
@@ -263,6 +275,10 @@ static_assert(member_is<LX_REGMAP_MEMBER(emap.addr)>(MAP_ADDR_WIDTH, MAP_ADDR_SI
               "lx::axis_regs::emap.addr is not lx::uint<11> (register map_addr)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.data)>(MAP_DATA_WIDTH, MAP_DATA_SIGNED),
               "lx::axis_regs::emap.data is not lx::sint<24> (register map_data)");
+static_assert(member_is<LX_REGMAP_MEMBER(comp_sync)>(COMP_SYNC_WIDTH, COMP_SYNC_SIGNED),
+              "lx::axis_regs::comp_sync is not bool (register comp_sync)");
+static_assert(member_is<LX_REGMAP_MEMBER(comp_commit)>(COMP_COMMIT_WIDTH, COMP_COMMIT_SIGNED),
+              "lx::axis_regs::comp_commit is not bool (register comp_commit)");
 #undef LX_REGMAP_MEMBER
 
 }  // namespace regmap

@@ -41,6 +41,8 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
                  bool map_we,
                  lx::uint<11> map_addr,
                  lx::sint<24> map_data,
+                 bool comp_sync,
+                 bool comp_commit,
                  lx::axis_out& out) {
 #pragma HLS INTERFACE mode=ap_ctrl_none port=return
 #pragma HLS INTERFACE mode=ap_none port=a
@@ -75,6 +77,8 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
 #pragma HLS INTERFACE mode=s_axilite port=map_we offset=0x100 bundle=ctrl
 #pragma HLS INTERFACE mode=s_axilite port=map_addr offset=0x108 bundle=ctrl
 #pragma HLS INTERFACE mode=s_axilite port=map_data offset=0x110 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=comp_sync offset=0x118 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=comp_commit offset=0x120 bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp
@@ -113,5 +117,7 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
     regs.emap.we = map_we;
     regs.emap.addr = map_addr;
     regs.emap.data = map_data;
+    regs.comp_sync = comp_sync;
+    regs.comp_commit = comp_commit;
     out = core.step(pins, regs);
 }

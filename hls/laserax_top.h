@@ -37,6 +37,8 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
                  bool map_we,
                  lx::uint<11> map_addr,
                  lx::sint<24> map_data,
+                 bool comp_sync,
+                 bool comp_commit,
                  lx::axis_out& out);
 
 #endif  // LASERAX_HLS_LASERAX_TOP_H

@@ -42,6 +42,8 @@ module laserax_top #(
     input  wire [12:0]        i_period,         // 256 at reset; 8..4096, multiple of 8
     input  wire [36:0]        i_ratio,          // Q5.32, 1..2^37-1
     input  wire signed [63:0] i_comp_offset,    // Q32.32 output counts added to N*R (any)
+    input  wire               i_comp_sync,      // 1: ratio / comp_offset act only on i_comp_commit
+    input  wire               i_comp_commit,    // pulse: load ratio / comp_offset (with i_comp_sync)
     input  wire [7:0]         i_glitch_n,
     input  wire [15:0]        i_sw_debounce,
     input  wire [15:0]        i_min_spacing,
@@ -114,12 +116,30 @@ module laserax_top #(
     localparam [12:0] P_MAX          = 13'd4096;
     localparam [4:0]  W_DAC_MIN      = 5'd12;
     localparam [4:0]  W_DAC_MAX      = 5'd18;
+    localparam [36:0] RATIO_DEFAULT  = 37'd34789620252;  // reset value of the ratio register
 
     generate
         if (INIT_FILE == "") begin : g_bad_init_file
             laserax_top_PARAMETER_INIT_FILE_must_not_be_empty u_param_error ();
         end
     endgenerate
+
+    // ---- compensation registers in force (DESIGN 4.7): loaded in every call without
+    // i_comp_sync, else only with i_comp_commit; register-file state, not reset by the safe state
+    reg  [36:0]        ratio_h_q;
+    reg  signed [63:0] offset_h_q;
+    wire               comp_load  = !i_comp_sync || i_comp_commit;
+    wire [36:0]        ratio_eff  = comp_load ? i_ratio : ratio_h_q;
+    wire signed [63:0] offset_eff = comp_load ? i_comp_offset : offset_h_q;
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            ratio_h_q  <= RATIO_DEFAULT;
+            offset_h_q <= 64'sd0;
+        end else begin
+            ratio_h_q  <= ratio_eff;
+            offset_h_q <= offset_eff;
+        end
+    end
 
     // ---- configuration check (combinational, every call) -------------------------------------
     wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
@@ -128,6 +148,7 @@ module laserax_top #(
     wire        amp_ok    = width_ok && i_amplitude >= 18'd1 && i_amplitude <= amp_max;
     wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
     wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && i_ratio != 37'd0 &&
+                            ratio_eff != 37'd0 &&
                             i_pace_m >= 16'd2 && i_tbl_period == i_period;
 
     // a period change between two running calls is a reconfiguration: one call in the safe state
@@ -175,7 +196,7 @@ module laserax_top #(
     wire signed [37:0] mul_comp;
     wire signed [38:0] mul_delta;
     pulse_multiplier u_mul (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(i_ratio), .i_comp_offset(i_comp_offset),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_step(dec_step), .i_ratio(ratio_eff), .i_comp_offset(offset_eff),
         .o_comp(mul_comp), .o_delta(mul_delta));
 
     // rephase outputs used by the error map (declared before use)

@@ -732,12 +732,12 @@ Conventions:
   Option"), so a register of W bits occupies ceil(W/32) + 1 words. Other unused words: %s.
   Write 0 to reserved words.
 * A register wider than 32 bits takes consecutive 32-bit words, **low word first**; write the low
-  word, then the high word. The core reads the registers every clock and has no shadow registers:
-  between the two writes it sees a mixed value for a few clocks. For `ratio` that is harmless for
-  the position (comp is a pure function of N and R, DESIGN §4.3, so the final value gives the exact
-  position) but the mixed value may move the output transiently (and a mixed value of 0 would be
-  a configuration error); change such registers while the axis stands still, or accept the
-  transient. The wide registers:
+  word, then the high word. The core reads the registers every clock, so between the two writes
+  it would see a mixed value. For `ratio` and `comp_offset`, which change while the axis moves,
+  set `comp_sync` = 1 once: the multiplier then keeps the pair in force until a clock with
+  `comp_commit` = 1, which loads both together (write the words of both, then pulse
+  `comp_commit`; `lxt::compensation_writes` does exactly this). The map origins change through
+  the bank flip (`bank_sel`), which is atomic already. The wide registers:
 %s
 * Signed registers are two's complement in their width; the bits above the width in the high
   word are ignored (write the sign extension or 0).

@@ -222,6 +222,8 @@ BLOCKS = [
             IN("period", 13),
             IN("ratio", 37),
             IN("comp_offset", 64, S),
+            IN("comp_sync", 1),
+            IN("comp_commit", 1),
             IN("glitch_n", 8),
             IN("sw_debounce", 16),
             IN("min_spacing", 16),

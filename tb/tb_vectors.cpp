@@ -90,6 +90,8 @@ void replay_top(tbu::result& res, const lxt::vec_table& t) {
         s.period = in("period");
         s.ratio = static_cast<uint64_t>(in("ratio"));
         s.comp_offset = in("comp_offset");
+        s.comp_sync = in("comp_sync") != 0;
+        s.comp_commit = in("comp_commit") != 0;
         s.glitch_n = in("glitch_n");
         s.sw_debounce = in("sw_debounce");
         s.min_spacing = in("min_spacing");

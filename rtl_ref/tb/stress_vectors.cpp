@@ -95,6 +95,7 @@ vec_table top_stress(rng_t& r, long long calls) {
     std::mt19937_64 mr_seed = r.g;  // a copy: r itself is not advanced
     rng_t mr(mr_seed() ^ 0x6572726f725f6d61ULL);
     lx::error_map_regs mp;
+    bool csync = false;  // comp_sync register (commit framing of ratio / comp_offset)
     auto new_geom = [&mr](lx::error_map_geom& gm) {
         gm.origin = mr.range(-2500, 1500);
         gm.spacing_log2 = static_cast<unsigned>(mr.range(4, 9));
@@ -189,6 +190,17 @@ vec_table top_stress(rng_t& r, long long calls) {
         regs.tbl_addr = addr;
         regs.tbl_data = data;
 
+        // --- commit framing (own generator): comp_sync toggles now and then; while it is 1 the
+        // ratio / comp_offset changes above act only at a comp_commit pulse, and a half-written
+        // offset (low word only, this call) must have no effect at all
+        if (mr.chance(20000)) csync = !csync;
+        regs.comp_sync = csync;
+        regs.comp_commit = mr.chance(1500);
+        if (csync && !regs.comp_commit && mr.chance(400)) {
+            const uint64_t cur = static_cast<uint64_t>(regs.comp_offset.to_int64());
+            regs.comp_offset = static_cast<int64_t>((cur & ~uint64_t(0xFFFFFFFF)) | (mr.u() & 0xFFFFFFFFu));
+        }
+
         // --- error map: table words into the inactive bank, flips, enables, new geometries ---
         if (mr.chance(mp.map_en ? 15000 : 1500)) mp.map_en = !mp.map_en;  // mostly enabled
         if (k == calls / 20) mp.map_en = true;
@@ -252,7 +264,8 @@ vec_table top_stress(rng_t& r, long long calls) {
         p.lerr = lerr;
         const lx::axis_out o = core.step(p, regs);
         t.rows.push_back({i64(a), i64(b), i64(sw), i64(lerr), static_cast<int64_t>(regs.period.to_uint64()),
-                          static_cast<int64_t>(regs.ratio.to_uint64()), regs.comp_offset.to_int64(),
+                          static_cast<int64_t>(regs.ratio.to_uint64()), regs.comp_offset.to_int64(), i64(regs.comp_sync),
+                          i64(regs.comp_commit),
                           static_cast<int64_t>(regs.glitch_n.to_uint64()),
                           static_cast<int64_t>(regs.sw_debounce.to_uint64()),
                           static_cast<int64_t>(regs.min_spacing.to_uint64()), static_cast<int64_t>(regs.pace_m.to_uint64()),

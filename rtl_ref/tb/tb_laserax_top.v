@@ -26,6 +26,8 @@
 //   field period in 13 unsigned
 //   field ratio in 37 unsigned
 //   field comp_offset in 64 signed
+//   field comp_sync in 1 unsigned
+//   field comp_commit in 1 unsigned
 //   field glitch_n in 8 unsigned
 //   field sw_debounce in 16 unsigned
 //   field min_spacing in 16 unsigned
@@ -92,7 +94,7 @@
 module tb_laserax_top;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
-    localparam integer ROW_BITS = 1100;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 1108;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_top";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -107,6 +109,8 @@ module tb_laserax_top;
     reg  [12:0] i_period;
     reg  [36:0] i_ratio;
     reg  [63:0] i_comp_offset;
+    reg  i_comp_sync;
+    reg  i_comp_commit;
     reg  [7:0] i_glitch_n;
     reg  [15:0] i_sw_debounce;
     reg  [15:0] i_min_spacing;
@@ -178,6 +182,8 @@ module tb_laserax_top;
         .i_period(i_period),
         .i_ratio(i_ratio),
         .i_comp_offset(i_comp_offset),
+        .i_comp_sync(i_comp_sync),
+        .i_comp_commit(i_comp_commit),
         .i_glitch_n(i_glitch_n),
         .i_sw_debounce(i_sw_debounce),
         .i_min_spacing(i_min_spacing),
@@ -244,13 +250,15 @@ module tb_laserax_top;
 
     task apply_inputs;
         begin
-            i_a = row[1096:1096];
-            i_b = row[1092:1092];
-            i_sw = row[1088:1088];
-            i_lerr = row[1084:1084];
-            i_period = row[1080:1068];
-            i_ratio = row[1064:1028];
-            i_comp_offset = row[1027:964];
+            i_a = row[1104:1104];
+            i_b = row[1100:1100];
+            i_sw = row[1096:1096];
+            i_lerr = row[1092:1092];
+            i_period = row[1088:1076];
+            i_ratio = row[1072:1036];
+            i_comp_offset = row[1035:972];
+            i_comp_sync = row[968:968];
+            i_comp_commit = row[964:964];
             i_glitch_n = row[963:956];
             i_sw_debounce = row[955:940];
             i_min_spacing = row[939:924];
@@ -288,6 +296,8 @@ module tb_laserax_top;
             i_period = 13'd0;
             i_ratio = 37'd0;
             i_comp_offset = 64'd0;
+            i_comp_sync = 1'd0;
+            i_comp_commit = 1'd0;
             i_glitch_n = 8'd0;
             i_sw_debounce = 16'd0;
             i_min_spacing = 16'd0;

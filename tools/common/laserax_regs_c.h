@@ -11,8 +11,8 @@
 #define LASERAX_REGS_C_H
 
 #define LASERAX_REG_FIRST_OFFSET 0x10u
-#define LASERAX_REG_END_OFFSET 0x118u
-#define LASERAX_REG_COUNT 28
+#define LASERAX_REG_END_OFFSET 0x128u
+#define LASERAX_REG_COUNT 30
 
 /* period: sin/cos period P (20 um = 256 counts); a change while running restarts the chain (one safe-state call) */
 #define LASERAX_REG_PERIOD_OFFSET 0x10u
@@ -206,6 +206,18 @@
 #define LASERAX_REG_MAP_DATA_WORDS 1
 #define LASERAX_REG_MAP_DATA_SIGNED 1
 #define LASERAX_REG_MAP_DATA_RESET 0LL
+/* comp_sync: 1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: in the clock they are written */
+#define LASERAX_REG_COMP_SYNC_OFFSET 0x118u
+#define LASERAX_REG_COMP_SYNC_WIDTH 1
+#define LASERAX_REG_COMP_SYNC_WORDS 1
+#define LASERAX_REG_COMP_SYNC_SIGNED 0
+#define LASERAX_REG_COMP_SYNC_RESET 0LL
+/* comp_commit: with comp_sync = 1: loads ratio and comp_offset into the multiplier in this clock (both together) */
+#define LASERAX_REG_COMP_COMMIT_OFFSET 0x120u
+#define LASERAX_REG_COMP_COMMIT_WIDTH 1
+#define LASERAX_REG_COMP_COMMIT_WORDS 1
+#define LASERAX_REG_COMP_COMMIT_SIGNED 0
+#define LASERAX_REG_COMP_COMMIT_RESET 0LL
 
 /* X-macro over every register: X(NAME, OFFSET, WIDTH, SIGNED, RESET) */
 #define LASERAX_REGS(X) \
@@ -236,6 +248,8 @@
     X(MAP_N1, 0xF8u, 12, 0, 2048LL) \
     X(MAP_WE, 0x100u, 1, 0, 0LL) \
     X(MAP_ADDR, 0x108u, 11, 0, 0LL) \
-    X(MAP_DATA, 0x110u, 24, 1, 0LL)
+    X(MAP_DATA, 0x110u, 24, 1, 0LL) \
+    X(COMP_SYNC, 0x118u, 1, 0, 0LL) \
+    X(COMP_COMMIT, 0x120u, 1, 0, 0LL)
 
 #endif /* LASERAX_REGS_C_H */

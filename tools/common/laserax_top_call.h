@@ -40,6 +40,8 @@ inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_
                 r.emap.we,
                 r.emap.addr,
                 r.emap.data,
+                r.comp_sync,
+                r.comp_commit,
                 out);
 }
 

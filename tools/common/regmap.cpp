@@ -190,7 +190,18 @@ bool apply_compensation(const comp_inputs& in, reg_image* img, comp_outputs* out
 }
 
 std::vector<reg_write> compensation_writes(const reg_image& img) {
-    return writes_for(img, {rm::idx::ratio, rm::idx::comp_offset});
+    // comp_sync = 1, the words of ratio and comp_offset, then a comp_commit pulse: the core takes
+    // the new pair in one clock (DESIGN 4.7) and never sees a half-written register
+    reg_image w = img;
+    w.set(rm::idx::comp_sync, 1);
+    std::vector<reg_write> out = writes_for(w, {rm::idx::comp_sync, rm::idx::ratio, rm::idx::comp_offset});
+    w.set(rm::idx::comp_commit, 1);
+    const std::vector<reg_write> on = w.writes(rm::idx::comp_commit);
+    w.set(rm::idx::comp_commit, 0);
+    const std::vector<reg_write> off = w.writes(rm::idx::comp_commit);
+    out.insert(out.end(), on.begin(), on.end());
+    out.insert(out.end(), off.begin(), off.end());
+    return out;
 }
 
 comp_readback compensation_from_image(const reg_image& img, const comp_knowns& k) {

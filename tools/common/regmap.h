@@ -88,7 +88,8 @@ golden::axis_regs golden_from(const reg_image& img);  // registers golden lacks 
 // compute_compensation(in) and, if ok, ratio and comp_offset written into img. false with the
 // message for out-of-range input (img unchanged). *out (optional) gets every computed quantity.
 bool apply_compensation(const comp_inputs& in, reg_image* img, comp_outputs* out = nullptr, std::string* err = nullptr);
-// The bus writes of ratio and comp_offset.
+// The bus writes of ratio and comp_offset, framed for an atomic update: comp_sync = 1, the words
+// of both registers (low word first), comp_commit = 1, comp_commit = 0.
 std::vector<reg_write> compensation_writes(const reg_image& img);
 
 // What the registers cannot hold; needed to read pressure and origin back.

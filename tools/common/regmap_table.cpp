@@ -52,6 +52,8 @@ int64_t get(const lx::axis_regs& r, int i) {
         case idx::map_we: return r.emap.we ? 1 : 0;
         case idx::map_addr: return static_cast<int64_t>(r.emap.addr.to_uint64());
         case idx::map_data: return r.emap.data.to_int64();
+        case idx::comp_sync: return r.comp_sync ? 1 : 0;
+        case idx::comp_commit: return r.comp_commit ? 1 : 0;
         default: return 0;
     }
 }
@@ -87,6 +89,8 @@ bool set(lx::axis_regs& r, int i, int64_t value) {
         case idx::map_we: r.emap.we = value != 0; return true;
         case idx::map_addr: r.emap.addr = lx::uint<11>(value); return true;
         case idx::map_data: r.emap.data = lx::sint<24>(value); return true;
+        case idx::comp_sync: r.comp_sync = value != 0; return true;
+        case idx::comp_commit: r.comp_commit = value != 0; return true;
         default: return false;
     }
 }
@@ -118,6 +122,8 @@ bool get(const golden::axis_regs& r, int i, int64_t* value) {
         case idx::map_we: *value = static_cast<int64_t>(r.emap.we); return true;
         case idx::map_addr: *value = static_cast<int64_t>(r.emap.addr); return true;
         case idx::map_data: *value = static_cast<int64_t>(r.emap.data); return true;
+        case idx::comp_sync: *value = static_cast<int64_t>(r.comp_sync); return true;
+        case idx::comp_commit: *value = static_cast<int64_t>(r.comp_commit); return true;
         default: return false;
     }
 }
@@ -150,6 +156,8 @@ bool set(golden::axis_regs& r, int i, int64_t value) {
         case idx::map_we: assign(r.emap.we, value); return true;
         case idx::map_addr: assign(r.emap.addr, value); return true;
         case idx::map_data: assign(r.emap.data, value); return true;
+        case idx::comp_sync: assign(r.comp_sync, value); return true;
+        case idx::comp_commit: assign(r.comp_commit, value); return true;
         default: return false;
     }
 }
@@ -183,6 +191,8 @@ lx::axis_regs to_hls(const golden::axis_regs& s) {
     r.emap.we = s.emap.we;
     r.emap.addr = s.emap.addr;
     r.emap.data = s.emap.data;
+    r.comp_sync = s.comp_sync;
+    r.comp_commit = s.comp_commit;
     return r;
 }
 

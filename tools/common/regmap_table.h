@@ -40,9 +40,9 @@ struct reg_info {
     constexpr int words() const { return (width + 31) / 32; }
 };
 
-constexpr int kNumRegs = 28;
+constexpr int kNumRegs = 30;
 constexpr uint32_t kFirstOffset = 0x10;
-constexpr uint32_t kEndOffset = 0x118;  // one past the last word (the last reserved word)
+constexpr uint32_t kEndOffset = 0x128;  // one past the last word (the last reserved word)
 
 // Register indices (offset order).
 namespace idx {
@@ -74,6 +74,8 @@ constexpr int map_n1 = 24;
 constexpr int map_we = 25;
 constexpr int map_addr = 26;
 constexpr int map_data = 27;
+constexpr int comp_sync = 28;
+constexpr int comp_commit = 29;
 }  // namespace idx
 
 inline constexpr reg_info kRegs[kNumRegs] = {
@@ -133,6 +135,10 @@ inline constexpr reg_info kRegs[kNumRegs] = {
      "error-map table address 0 .. 2047"},
     {"map_data", 0x110, 24, true, 0LL, access::port, "Q15.8 output counts", true, -8388608LL, 8388607LL, 1LL, check::none, "", "emap.data", "emap.data",
      "error-map table word: correction at that point in 1/256 output count"},
+    {"comp_sync", 0x118, 1, false, 0LL, access::rw, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_sync", "comp_sync",
+     "1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: in the clock they are written"},
+    {"comp_commit", 0x120, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_commit", "comp_commit",
+     "with comp_sync = 1: loads ratio and comp_offset into the multiplier in this clock (both together)"},
 };
 
 // Smallest / largest value of the register's width.

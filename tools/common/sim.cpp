@@ -171,6 +171,10 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     h_ = core_.step(p, hr_);
     g_ = gold_.step(gp, gr_);
     ++calls_;
+    if (!s_.comp_sync || s_.comp_commit) {
+        eff_ratio_ = s_.ratio;
+        eff_offset_ = s_.comp_offset;
+    }
     if (s_.emap.we) {  // write_map(): one call only
         s_.emap.we = false;
         hr_.emap.we = false;
@@ -198,7 +202,7 @@ std::string dual_axis::integrity() {
     } else {
         __extension__ typedef __int128 i128;
         const int64_t want_comp = static_cast<int64_t>(
-            (static_cast<i128>(prev_raw_) * static_cast<i128>(s_.ratio) + static_cast<i128>(s_.comp_offset)) >> 32);
+            (static_cast<i128>(prev_raw_) * static_cast<i128>(eff_ratio_) + static_cast<i128>(eff_offset_)) >> 32);
         if (g_.comp_pos != want_comp)
             m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor((N*R + OFF) / 2^32) " + std::to_string(want_comp);
         else if (g_.paced_pos + g_.backlog != prev_comp_ + prev_corr_)

@@ -138,6 +138,9 @@ private:
     int hist_n_ = 0;
     bool prev_cfg_err_ = true;
     int64_t prev_comp_ = 0, prev_raw_ = 0, prev_corr_ = 0;
+    // ratio / comp_offset in force (DESIGN 4.7: loaded every call without comp_sync, else on comp_commit)
+    uint64_t eff_ratio_ = golden::default_ratio();
+    int64_t eff_offset_ = 0;
     std::string integrity();
 };
 

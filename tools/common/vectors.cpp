@@ -282,7 +282,7 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 out("cos", W::W_DAC_MAX, true)};
     if (block == "laserax_top")
         return {in("a", 1), in("b", 1), in("sw", 1), in("lerr", 1), in("period", W::W_P), in("ratio", W::W_RATIO),
-                in("comp_offset", W::W_OFFSET, true), in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
+                in("comp_offset", W::W_OFFSET, true), in("comp_sync", 1), in("comp_commit", 1), in("glitch_n", 8), in("sw_debounce", 16), in("min_spacing", 16), in("pace_m", 16),
                 in("backlog_thr", 32), in("mark_len", W::W_P), in("dac_width", W::W_DACW),
                 in("amplitude", W::W_DAC_MAX), in("tbl_period", W::W_P), in("rehome", 1), in("clear", 1),
                 in("tbl_we", 1), in("tbl_addr", W::W_TBL_ADDR), in("tbl_data", W::W_TBL),
@@ -376,14 +376,33 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     int glitch_left = 0, lerr_left = 0;
     const int kMapPoints = 64;
     int map_words = 0;
+    uint64_t mul_ratio = golden::default_ratio();
+    int64_t mul_offset = 0;
     for (long long t = 0; t < calls; ++t) {
         axis_settings ns = ax.settings();
         ns.rehome = false;
         ns.clear = false;
+        ns.comp_commit = false;
         const long long phase = t * 8 / calls;  // eight acts: homing, reversals, faults, re-homing
-        if (t == calls / 2) ns.ratio = s.ratio + 4000000;          // ratio update while moving
-        if (t == calls / 3) ns.comp_offset = -(int64_t(37) << 32) - 123456789;  // offset update while moving
-        if (t == calls * 7 / 8) ns.comp_offset = int64_t(5) << 31;              // ... and another
+        // compensation updates while moving: from calls/4 on with comp_sync = 1, so the offset's
+        // low word written alone (calls/3 - 12) has no effect until the commit with the full value
+        // (calls/3); the ratio update at calls/2 is committed in its own call; from 7/8 on
+        // comp_sync = 0 again and an offset write acts at once
+        const int64_t off1 = -(int64_t(37) << 32) - 123456789;
+        if (t == calls / 4) ns.comp_sync = true;
+        if (t == calls / 3 - 12)
+            ns.comp_offset = static_cast<int64_t>((static_cast<uint64_t>(ns.comp_offset) & ~uint64_t(0xFFFFFFFF)) |
+                                                  (static_cast<uint64_t>(off1) & 0xFFFFFFFFu));  // low word only
+        if (t == calls / 3) {
+            ns.comp_offset = off1;
+            ns.comp_commit = true;
+        }
+        if (t == calls / 2) {
+            ns.ratio = s.ratio + 4000000;
+            ns.comp_commit = true;
+        }
+        if (t == calls * 7 / 8 - 100) ns.comp_sync = false;
+        if (t == calls * 7 / 8) ns.comp_offset = int64_t(5) << 31;
         if (t == calls * 5 / 8) ns.rehome = true;
         if (t % 5000 == 4999) ns.clear = true;
         if (t == calls * 3 / 4) ns.tbl_period = 264;               // invalid configuration ...
@@ -435,7 +454,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const lx::axis_out& h = ax.hls();
         const golden::axis_out& g = ax.gold();
         const golden::axis_regs gr = to_golden(ns);
-        top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.comp_offset, gr.glitch_n,
+        top.rows.push_back({p.a, p.b, p.sw, p.lerr, gr.period, static_cast<int64_t>(gr.ratio), gr.comp_offset, gr.comp_sync,
+                            gr.comp_commit, gr.glitch_n,
                             gr.sw_debounce, gr.min_spacing, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.mark_len,
                             gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, 0, 0, 0,
                             gr.emap.map_en, gr.emap.bank_sel, gr.emap.geom[0].origin, gr.emap.geom[0].spacing_log2,
@@ -453,8 +473,13 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const lx::input_filter<8>::out_t hfo = h_flt.step(p.a, gr.glitch_n);
         const golden::quad_decoder::out dq = g_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
         const lx::quad_decoder::out_t hdq = h_dec.step(p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear);
-        const golden::pulse_multiplier::out mo = g_mul.step(prev_step, gr.ratio, gr.comp_offset);
-        const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, gr.ratio, gr.comp_offset);
+        // the multiplier's ports carry the ratio / offset in force (comp_sync / comp_commit, DESIGN 4.7)
+        if (!gr.comp_sync || gr.comp_commit) {
+            mul_ratio = gr.ratio;
+            mul_offset = gr.comp_offset;
+        }
+        const golden::pulse_multiplier::out mo = g_mul.step(prev_step, mul_ratio, mul_offset);
+        const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, mul_ratio, mul_offset);
         const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
         const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
         const golden::rephase::out ro =
@@ -485,7 +510,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         flt.rows.push_back({p.a, gr.glitch_n, fo.f, fo.valid, fo.glitch});
         dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
                             dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm, dq.glitch_st});
-        mul.rows.push_back({prev_step, static_cast<int64_t>(gr.ratio), gr.comp_offset, 0, 0, mo.comp, mo.delta});
+        mul.rows.push_back({prev_step, static_cast<int64_t>(mul_ratio), mul_offset, 0, 0, mo.comp, mo.delta});
         pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
                             po.backlog, po.ovs, po.ovs_st});
         rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
