@@ -2,21 +2,26 @@
 # rtl_synth_check.sh — lint and quick synthesis check of rtl_ref/ (CTest test rtl_lint_synth).
 #
 # Usage: scripts/rtl_synth_check.sh BUILD_DIR [MODULE...]     (default: every module)
-#        scripts/rtl_synth_check.sh --selftest                the checks catch a latch, an
-#                                                              undriven net, a multiple driver and
-#                                                              an iverilog warning
+#        scripts/rtl_synth_check.sh --selftest                the checks catch a latch (full and
+#                                                              coarse synth), an undriven net, a
+#                                                              multiple driver and an iverilog warning
 # For each module (each as the top of its own elaboration, default parameters):
 #   1. Icarus: iverilog -g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array
 #      -s MODULE: any output is a failure;
 #   2. Yosys: read_verilog (Verilog-2005); hierarchy -check -top MODULE; proc; check -assert;
-#      then a generic `synth -top MODULE`; check -assert; no latch cell may remain
+#      then a generic `synth -top MODULE` (for the modules holding the error-map RAM, error_map
+#      and laserax_top, only its coarse part `synth -run :fine`: the 2 x 2048 x 24-bit RAM stays a
+#      memory cell instead of 98k flip-flops, which took over 3 minutes; their logic around the
+#      RAM is the same RTL, and `make synth` maps the whole top to the iCE40 with BRAMs);
+#      check -assert; no latch cell may remain
 #      ($dlatch, $adlatch, $dlatchsr, $_DLATCH*); the log must hold no "Latch inferred" and no
 #      Yosys warning (undriven / multiple drivers / implicit nets / anything else).
 # The table RAM image for dds_sincos / laserax_top is written by BUILD_DIR/lutgen into a scratch
 # directory in which Yosys runs. Exit status 0 if every module passes.
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos laserax_top)
+MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top)
+COARSE_MODULES=" error_map laserax_top "  # synth -run :fine (see above)
 IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 LATCH_CELLS='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 
@@ -45,6 +50,8 @@ yosys_check() {
     script="read_verilog $*; hierarchy -check -top $top; proc; check -assert; select -assert-none $LATCH_CELLS"
     if [ "$synth" = 1 ]; then
         script="$script; synth -top $top; check -assert; select -assert-none $LATCH_CELLS"
+    elif [ "$synth" = coarse ]; then
+        script="$script; synth -top $top -run :fine; check -assert; select -assert-none $LATCH_CELLS"
     fi
     if ! (cd "$dir" && yosys -q -l "$log" -p "$script" >/dev/null 2>&1); then
         grep -E 'ERROR|Warning|Latch inferred|problem' "$log" | grep -v '^ABC:' | head -20 | sed 's/^/    yosys: /'
@@ -111,6 +118,8 @@ EOF
     expect pass "clean module, yosys"    yosys_check "$dir" good 1 "$dir/good.v"
     expect pass "clean module, iverilog" iverilog_lint good "$dir/good.v"
     expect fail "latch"                  yosys_check "$dir" latch 1 "$dir/latch.v"
+    expect pass "clean module, coarse"   yosys_check "$dir" good coarse "$dir/good.v"
+    expect fail "latch, coarse synth"    yosys_check "$dir" latch coarse "$dir/latch.v"
     expect fail "undriven net"           yosys_check "$dir" undriven 0 "$dir/undriven.v"
     expect fail "multiple drivers"       yosys_check "$dir" multi 0 "$dir/multi.v"
     expect fail "iverilog warning"       iverilog_lint iwarn "$dir/iwarn.v"
@@ -152,8 +161,11 @@ for m in "${MODULES[@]}"; do
     t0=$SECONDS
     status=PASS
     iverilog_lint "$m" "${sources[@]}" || status=FAIL
-    yosys_check "$work" "$m" 1 "${sources[@]}" || status=FAIL
-    echo "rtl_synth_check: $m: $status (iverilog -Wall, yosys proc/check/synth, no latches; $((SECONDS - t0)) s)"
+    mode=1
+    what=synth
+    case "$COARSE_MODULES" in *" $m "*) mode=coarse; what="synth -run :fine" ;; esac
+    yosys_check "$work" "$m" "$mode" "${sources[@]}" || status=FAIL
+    echo "rtl_synth_check: $m: $status (iverilog -Wall, yosys proc/check/$what, no latches; $((SECONDS - t0)) s)"
     [ "$status" = PASS ] || fails=$((fails + 1))
 done
 if [ $fails -ne 0 ]; then
