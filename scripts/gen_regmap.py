@@ -17,13 +17,15 @@ Generated (each with the header line of GENERATED_NOTE):
     tools/common/laserax_top_call.h          host-only: laserax_top() called with an lx::axis_regs
     tools/common/laserax_regs_c.h            C header for firmware
     docs/REGISTERS.md                        the documented map
+    rtl_ref/laserax_regs.v                   Verilog AXI4-Lite slave holding the map (o_<name> ports)
 
 Validation (the first error is reported as `FILE:LINE: message`, exit status 1): the header row,
 unique lower-case names, offsets 32-bit aligned from 0x10 and not overlapping (a register wider
 than 32 bits takes consecutive words), 1 <= width <= 64 (unsigned at most 63: the host table keeps
 values in int64), width-1 registers unsigned, reset/min/max inside the width, min <= max, min and
 max on the step, reset legal (min..max, step), pulse registers reset to 0, known access and check
-values, check cfg/map with a range or step, member paths well-formed and unique.
+values, check cfg/map with a range or step, member paths well-formed and unique, unique word names
+in the RTL slave (A_<NAME>, A_<NAME>_<w>).
 Exit status: 0 ok, 1 invalid CSV or (--check) a difference, 2 usage error.
 """
 import argparse
@@ -236,6 +238,16 @@ def check_table(path, regs):
                 raise CsvError(path, r.line, "%s: member %s already used by %s" % (r.name, m, members[m]))
             if m:
                 members[m] = r.name
+    # the RTL slave names each data word A_<NAME> (A_<NAME>_<w> for wide registers): a register
+    # "x_1" next to a wide "x" would give two words the same name
+    words = {}
+    for r in sorted(regs, key=lambda r: r.line):
+        for w in range((r.width + 31) // 32):
+            wn = "A_%s" % r.upper if r.width <= 32 else "A_%s_%d" % (r.upper, w)
+            if wn in words:
+                raise CsvError(path, r.line, "%s: its RTL word name %s clashes with a word of %s (rtl_ref/laserax_regs.v)" %
+                               (r.name, wn, words[wn]))
+            words[wn] = r.name
     by_off = sorted(regs, key=lambda r: (r.offset, r.line))
     for a, b in zip(by_off, by_off[1:]):
         if b.offset < a.offset + a.span:
@@ -669,6 +681,247 @@ def gen_c_h(regs):
 """ % (GENERATED_NOTE, FIRST_OFFSET, end, len(regs), "\n".join(defs), " \\\n".join(xs))
 
 
+# ---- rtl_ref/laserax_regs.v: the AXI4-Lite slave ------------------------------------------------
+RTL_ADDR_W = 12  # default of the slave's ADDR_W parameter (byte address bits)
+
+
+def rtl_map_addr_w(regs):
+    """Byte address bits needed to reach every word of the map (the last reserved word)."""
+    end = max(r.offset + r.span for r in regs)
+    return max(3, (end - 1).bit_length())
+
+
+def v_range(width):
+    return "" if width == 1 else "[%d:0]" % (width - 1)
+
+
+def v_const(r, v):
+    """Sized Verilog literal of value v in the register's width (two's complement bits)."""
+    if v >= 0:
+        return "%d'd%d" % (r.width, v)
+    return "%d'h%X" % (r.width, r.bits(v))
+
+
+def rtl_words(r):
+    """[(localparam, byte offset, reg lo bit, reg hi bit)] of the register's data words."""
+    out = []
+    for w, (off, lo, hi) in enumerate(word_ranges(r)):
+        name = "A_%s" % r.upper if r.words == 1 else "A_%s_%d" % (r.upper, w)
+        out.append((name, off, lo, hi))
+    return out
+
+
+def gen_rtl_regs(regs):
+    end = max(r.offset + r.span for r in regs)
+    map_aw = rtl_map_addr_w(regs)
+    q = lambda r: "reg_%s_q" % r.name
+    d = lambda r: "reg_%s_d" % r.name
+    wen = lambda a: "wen_" + a[2:].lower()  # A_RATIO_1 -> wen_ratio_1: write of that word now
+    rdw = lambda a: "rdw_" + a[2:].lower()  # the word as read
+
+    ports = []
+    for i, r in enumerate(regs):
+        decl = "output wire %s%s" % ("signed " if r.signed else "", v_range(r.width))
+        sep = "," if i + 1 < len(regs) else ""
+        ports.append("    %-25s %-18s // 0x%02X %s, reset %d" % (decl, "o_%s%s" % (r.name, sep), r.offset, r.access, r.reset))
+    params = []
+    for r in regs:
+        for name, off, lo, hi in rtl_words(r):
+            what = r.name if r.words == 1 else "%s bits %d..%d" % (r.name, hi, lo)
+            params.append("    localparam [WA_W-1:0] %-16s = %-4s // 0x%02X: %s" % (name, "%d;" % (off // 4), off, what))
+    decls = []
+    for r in regs:
+        sg = "signed " if r.signed else "       "
+        decls.append("    reg  %s%-7s %s;" % (sg, v_range(r.width), q(r)))
+    nexts = []
+    for r in regs:
+        words = rtl_words(r)
+        for name, off, lo, hi in words:
+            nexts.append("    wire %s = wr_fire && wr_word == %s;" % (wen(name), name))
+        slices = []  # high bits first
+        for name, off, lo, hi in reversed(words):
+            for lane in reversed(range(4)):
+                blo, bhi = lo + 8 * lane, min(hi, lo + 8 * lane + 7)
+                if blo > bhi:
+                    continue
+                dlo, dhi = blo - lo, bhi - lo
+                cur = q(r) if r.width == 1 else "%s[%d]" % (q(r), blo) if blo == bhi else "%s[%d:%d]" % (q(r), bhi, blo)
+                src = "wr_data[%d]" % dlo if dlo == dhi else "wr_data[%d:%d]" % (dhi, dlo)
+                slices.append("(%s && wr_strb[%d]) ? %s : %s" % (wen(name), lane, src, cur))
+        sg = "signed " if r.signed else ""
+        if len(slices) == 1:
+            nexts.append("    wire %s%s%s = %s;" % (sg, v_range(r.width) + " " if r.width > 1 else "", d(r), slices[0]))
+        else:
+            nexts.append("    wire %s%s %s = {" % (sg, v_range(r.width), d(r)))
+            nexts.extend("        %s%s" % (x, "," if i + 1 < len(slices) else "};") for i, x in enumerate(slices))
+    reads = []
+    rdws = []
+    for r in regs:
+        for name, off, lo, hi in rtl_words(r):
+            n = hi - lo + 1
+            src = q(r) if r.words == 1 else "%s[%d:%d]" % (q(r), hi, lo)
+            val = src if n == 32 else "{%d'd0, %s}" % (32 - n, src)
+            rdws.append("    wire [31:0] %-20s = %s;" % (rdw(name), val))
+            reads.append("            %-18s rd_word = %s;" % (name + ":", rdw(name)))
+    resets = ["            %s <= %s;   // %d" % (q(r), v_const(r, r.reset), r.reset) if r.reset < 0 else
+              "            %s <= %s;" % (q(r), v_const(r, r.reset)) for r in regs]
+    updates = ["            %s <= %s;" % (q(r), d(r)) for r in regs]
+    assigns = ["    assign o_%s = %s;" % (r.name, q(r)) for r in regs]
+    return """// %s
+// laserax_regs.v — the laserax register map (docs/REGISTERS.md) as an AXI4-Lite slave: every
+// register of regmap/laserax_regs.csv at its byte offset, with its width and reset value, drives
+// one output port o_<name> (the i_<name> input of laserax_top; rtl_ref/laserax_axil.v wires the two).
+//
+// Bus: AXI4-Lite, 32-bit data, ADDR_W-bit byte addresses (AWPROT/ARPROT are not used).
+//   write   AW and W are accepted independently, in the same cycle or in different ones (AWREADY =
+//           no address held and no response pending, WREADY likewise). The write takes effect at
+//           the rising edge at which the later of the two handshakes completes; BVALID rises at
+//           that same edge (BRESP = OKAY) and AWREADY/WREADY stay 0 until the B handshake (one
+//           write outstanding). o_<name> has the new value after that edge, so laserax_top uses
+//           it from the following edge on (a write completing at edge t acts in call t+1).
+//   strobe  WSTRB[i] writes byte i of the word; bits above a register's width are dropped; a
+//           register wider than 32 bits takes consecutive words, low word first.
+//   read    ARREADY = !RVALID. At the edge of the AR handshake RDATA is registered from the
+//           registers before that edge (a write completing at the same edge is not seen) and
+//           RVALID rises; it stays until the R handshake (RRESP = OKAY). A register word reads
+//           its bits with 0 above the register's width, signed registers too (as the Vitis HLS
+//           slave: sign-extend from the width in software).
+//   other   0x00..0x%02X, the reserved word after each register and every address from 0x%02X on
+//           read 0 and ignore writes, with an OKAY response (no SLVERR). Address bits [1:0] are
+//           ignored. Pulse and table-port registers hold what the host wrote (the core acts on
+//           the level; nothing clears them).
+// i_rst (synchronous, active high): every register at its reset value, no transaction held.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module laserax_regs #(
+    // ADDR_W: byte address width, %d..32 (the map ends at 0x%02X); addresses past the map read 0
+    parameter integer ADDR_W = %d
+) (
+    input  wire              i_clk,
+    input  wire              i_rst,            // synchronous, active high: reset values
+    // AXI4-Lite slave
+    input  wire [ADDR_W-1:0] s_axil_awaddr,
+    input  wire              s_axil_awvalid,
+    output wire              s_axil_awready,
+    input  wire [31:0]       s_axil_wdata,
+    input  wire [3:0]        s_axil_wstrb,
+    input  wire              s_axil_wvalid,
+    output wire              s_axil_wready,
+    output wire [1:0]        s_axil_bresp,
+    output wire              s_axil_bvalid,
+    input  wire              s_axil_bready,
+    input  wire [ADDR_W-1:0] s_axil_araddr,
+    input  wire              s_axil_arvalid,
+    output wire              s_axil_arready,
+    output wire [31:0]       s_axil_rdata,
+    output wire [1:0]        s_axil_rresp,
+    output wire              s_axil_rvalid,
+    input  wire              s_axil_rready,
+    // registers, offset order
+%s
+);
+
+    localparam integer MAP_ADDR_W = %d;       // byte address bits of the map (0x00 .. 0x%02X)
+    localparam integer WA_W       = ADDR_W - 2;  // word address bits
+    localparam [1:0]   RESP_OKAY  = 2'b00;
+
+    generate
+        if (ADDR_W < MAP_ADDR_W || ADDR_W > 32) begin : g_bad_addr_w
+            laserax_regs_PARAMETER_ADDR_W_must_be_%d_to_32 u_param_error ();
+        end
+    endgenerate
+
+    // ---- word addresses (byte offset / 4) of the register words --------------------------------
+%s
+
+    // ---- write channel: address and data held until both are there -----------------------------
+    reg              aw_full_q;                  // address accepted, data not yet
+    reg [WA_W-1:0]   aw_word_q;
+    reg              w_full_q;                   // data accepted, address not yet
+    reg [31:0]       w_data_q;
+    reg [3:0]        w_strb_q;
+    reg              bvalid_q;
+    wire             aw_hs     = s_axil_awvalid && s_axil_awready;
+    wire             w_hs      = s_axil_wvalid && s_axil_wready;
+    wire             wr_fire   = (aw_full_q || aw_hs) && (w_full_q || w_hs);   // the write edge
+    wire [WA_W-1:0]  wr_word   = aw_full_q ? aw_word_q : s_axil_awaddr[ADDR_W-1:2];
+    wire [31:0]      wr_data   = w_full_q ? w_data_q : s_axil_wdata;
+    wire [3:0]       wr_strb   = w_full_q ? w_strb_q : s_axil_wstrb;
+    wire             aw_full_d = (aw_full_q || aw_hs) && !wr_fire;
+    wire             w_full_d  = (w_full_q || w_hs) && !wr_fire;
+    wire             bvalid_d  = wr_fire || (bvalid_q && !s_axil_bready);
+
+    assign s_axil_awready = !aw_full_q && !bvalid_q;
+    assign s_axil_wready  = !w_full_q && !bvalid_q;
+    assign s_axil_bvalid  = bvalid_q;
+    assign s_axil_bresp   = RESP_OKAY;
+
+    // ---- read channel ----------------------------------------------------------------------------
+    reg              rvalid_q;
+    reg [31:0]       rdata_q;
+    wire             ar_hs    = s_axil_arvalid && s_axil_arready;
+    wire [WA_W-1:0]  rd_addr  = s_axil_araddr[ADDR_W-1:2];
+    wire             rvalid_d = ar_hs || (rvalid_q && !s_axil_rready);
+
+    assign s_axil_arready = !rvalid_q;
+    assign s_axil_rvalid  = rvalid_q;
+    assign s_axil_rdata   = rdata_q;
+    assign s_axil_rresp   = RESP_OKAY;
+
+    // ---- registers -------------------------------------------------------------------------------
+%s
+
+    // next state: the bytes of the addressed word that WSTRB selects, at the write edge; a write
+    // to a reserved or unmapped word enables nothing
+%s
+
+    // read data: the addressed word, 0 above the register's width; 0 for any other address
+%s
+    reg [31:0] rd_word;
+    always @* begin
+        case (rd_addr)
+%s
+            default:           rd_word = 32'd0;
+        endcase
+    end
+
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            aw_full_q <= 1'b0;
+            aw_word_q <= {WA_W{1'b0}};
+            w_full_q  <= 1'b0;
+            w_data_q  <= 32'd0;
+            w_strb_q  <= 4'd0;
+            bvalid_q  <= 1'b0;
+            rvalid_q  <= 1'b0;
+            rdata_q   <= 32'd0;
+%s
+        end else begin
+            aw_full_q <= aw_full_d;
+            if (aw_hs) aw_word_q <= s_axil_awaddr[ADDR_W-1:2];
+            w_full_q  <= w_full_d;
+            if (w_hs) begin
+                w_data_q <= s_axil_wdata;
+                w_strb_q <= s_axil_wstrb;
+            end
+            bvalid_q  <= bvalid_d;
+            rvalid_q  <= rvalid_d;
+            if (ar_hs) rdata_q <= rd_word;
+%s
+        end
+    end
+
+%s
+
+endmodule
+
+`default_nettype wire
+""" % (GENERATED_NOTE, FIRST_OFFSET - 1, end, map_aw, end, RTL_ADDR_W, "\n".join(ports), map_aw, end - 1, map_aw,
+       "\n".join(params), "\n".join(decls), "\n".join(nexts), "\n".join(rdws), "\n".join(reads),
+       "\n".join(resets), "\n".join(updates), "\n".join(assigns))
+
+
 def md_escape(s):
     return s.replace("|", "\\|")
 
@@ -774,8 +1027,40 @@ write/read by name, converts it to and from `lx::axis_regs` / `golden::axis_regs
 physical settings (air temperature, pressure, humidity, CO2, expansion coefficient, material
 temperature, thermal origin, error-map table) to register values and back; `laserax compensate`
 prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
+
+## RTL slave (`rtl_ref/laserax_regs.v`)
+
+The Verilog reference of this map, generated from the CSV with the other files: an AXI4-Lite
+slave (32-bit data, parameter `ADDR_W` = %d byte-address bits by default, %d .. 32 allowed: the map
+ends at 0x%02X) that holds every register at its reset value and drives one output `o_<name>` per
+register (its width, `signed` where the table says so). `rtl_ref/laserax_axil.v` wires it to the
+`i_<name>` inputs of `laserax_top` (the IP top).
+
+* Write: AW and W are accepted independently, in the same cycle or in either order (`AWREADY` =
+  no address held and no response pending, `WREADY` likewise; one write outstanding). The write
+  takes effect at the rising edge at which the later of the two handshakes completes; `BVALID`
+  rises at that edge and the next write is accepted after the B handshake (back to back with
+  `BREADY` = 1: one write every 2 clocks). **Latency**: with `AWVALID` and `WVALID` raised
+  together on an idle slave, the register (and `o_<name>`) changes at the first rising edge, and
+  the core uses the new value from the next edge on: a write whose handshake completes at edge t
+  acts in call t+1 of `axis_core::step()` (CTest `rtl_laserax_axil` checks exactly this).
+* `WSTRB` writes the selected bytes of the word; bits above a register's width are dropped; a
+  register wider than 32 bits takes its words low word first at its offsets (each word on its own:
+  the core sees the mixed value between two word writes, hence `comp_sync` / `comp_commit`).
+* Read: `ARREADY` = not `RVALID`; `RDATA` is registered at the AR handshake edge from the registers
+  before that edge (a write completing at the same edge is not seen); `RVALID` holds until the R
+  handshake (one read every 2 clocks). A register word reads its bits, **zero above the register's
+  width**, signed registers too (as the Vitis HLS slave; sign-extend from the width in software,
+  `lxt::regmap::from_bits`).
+* Reserved words (the word after each register), 0x00 .. 0x%02X and addresses from 0x%02X on
+  read 0; writes to them are ignored. Every response is OKAY (no SLVERR), as the Vitis HLS
+  s_axilite slave. Address bits [1:0] are ignored (AXI4-Lite transfers are word aligned).
+* The pulse registers (`%s`) and the table-port fields hold
+  what the host wrote; the slave clears nothing (the core acts on the level, see `access` above).
+* `i_rst` (synchronous, active high): every register at its reset value, no transaction held.
 """ % (GENERATED_NOTE, COMMAND, FIRST_OFFSET, ", ".join(gaps) if gaps else "none",
-       "\n".join(words), pulses, ports, "\n".join(rows))
+       "\n".join(words), pulses, ports, "\n".join(rows), RTL_ADDR_W, rtl_map_addr_w(regs), end,
+       FIRST_OFFSET - 1, end, "`, `".join(r.name for r in regs if r.access == "pulse"))
 
 
 def generate(regs):
@@ -788,6 +1073,7 @@ def generate(regs):
         "tools/common/laserax_top_call.h": gen_top_call_h(regs),
         "tools/common/laserax_regs_c.h": gen_c_h(regs),
         "docs/REGISTERS.md": gen_md(regs),
+        "rtl_ref/laserax_regs.v": gen_rtl_regs(regs),
     }
     for rel, text in files.items():
         if rel.startswith("hls/"):
@@ -821,6 +1107,15 @@ def selftest():
     ranged = next(i for i in data[1:] if field(i, "min") not in ("-", "0"))  # a row with a lower bound
     dup = list(good)
     dup.insert(second + 1, good[second])
+    wide = next(i for i in data[1:] if int(field(i, "width")) > 32)  # a register of two words
+    clash = list(good)  # a one-word register named <wide>_1 at a free offset after the map
+    end_off = max(int(field(i, "offset"), 16) + 4 * ((int(field(i, "width")) + 31) // 32 + 1) for i in data[1:])
+    row = next(csv.reader([good[first]]))
+    row[COLUMNS.index("name")] = field(wide, "name") + "_1"
+    row[COLUMNS.index("offset")] = "0x%X" % end_off
+    row[COLUMNS.index("hls_member")] = "clash_member"
+    row[COLUMNS.index("golden_member")] = "-"
+    clash.insert(data[-1] + 1, ",".join('"%s"' % c if "," in c else c for c in row))
     cases = [  # (name, lines, line number expected in the message, word expected)
         ("overlap", edit(second, "offset", "0x%X" % int(field(first, "offset"), 16)), second + 1, "overlaps"),
         ("misaligned", edit(second, "offset", "0x%X" % (second_off + 2)), second + 1, "aligned"),
@@ -829,6 +1124,7 @@ def selftest():
         ("reset_out_of_width", edit(first, "reset", "999999"), first + 1, "does not fit"),
         ("reset_illegal", edit(ranged, "reset", str(int(field(ranged, "min")) - 1)), ranged + 1, "not legal"),
         ("duplicate_name", dup, second + 2, "duplicate"),
+        ("rtl_word_clash", clash, data[-1] + 2, "clashes"),
         ("width_zero", edit(first, "width", "0"), first + 1, "width"),
         ("width_65", edit(first, "width", "65"), first + 1, "width"),
         ("bad_check", edit(first, "check", "maybe"), first + 1, "check"),

@@ -9,10 +9,11 @@
 #   1. Icarus: iverilog -g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array
 #      -s MODULE: any output is a failure;
 #   2. Yosys: read_verilog (Verilog-2005); hierarchy -check -top MODULE; proc; check -assert;
-#      then a generic `synth -top MODULE` (for the modules holding the error-map RAM, error_map
-#      and laserax_top, only its coarse part `synth -run :fine`: the 2 x 2048 x 24-bit RAM stays a
-#      memory cell instead of 98k flip-flops, which took over 3 minutes; their logic around the
-#      RAM is the same RTL, and `make synth` maps the whole top to the iCE40 with BRAMs);
+#      then a generic `synth -top MODULE` (for the modules holding the error-map RAM, error_map,
+#      laserax_top and laserax_axil, only its coarse part `synth -run :fine`: the 2 x 2048 x 24-bit
+#      RAM stays a memory cell instead of 98k flip-flops, which took about 3 minutes per module;
+#      their logic around the RAM is the same RTL, and `make synth` maps the whole top to the
+#      iCE40 with BRAMs);
 #      check -assert; no latch cell may remain
 #      ($dlatch, $adlatch, $dlatchsr, $_DLATCH*); the log must hold no "Latch inferred" and no
 #      Yosys warning (undriven / multiple drivers / implicit nets / anything else).
@@ -20,8 +21,9 @@
 # directory in which Yosys runs. Exit status 0 if every module passes.
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
-MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top)
-COARSE_MODULES=" error_map laserax_top "  # synth -run :fine (see above)
+MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top
+         laserax_regs laserax_axil)
+COARSE_MODULES=" error_map laserax_top laserax_axil "  # synth -run :fine (see above)
 IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 LATCH_CELLS='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 
@@ -153,7 +155,8 @@ mkdir -p "$work"
     die "lutgen failed"
 sources=("$ROOT"/rtl_ref/input_filter.v "$ROOT"/rtl_ref/quad_decoder.v "$ROOT"/rtl_ref/pulse_multiplier.v
          "$ROOT"/rtl_ref/output_pacer.v "$ROOT"/rtl_ref/rephase.v "$ROOT"/rtl_ref/dds_sincos.v
-         "$ROOT"/rtl_ref/error_map.v "$ROOT"/rtl_ref/laserax_top.v)
+         "$ROOT"/rtl_ref/error_map.v "$ROOT"/rtl_ref/laserax_top.v "$ROOT"/rtl_ref/laserax_regs.v
+         "$ROOT"/rtl_ref/laserax_axil.v)
 
 fails=0
 for m in "${MODULES[@]}"; do
