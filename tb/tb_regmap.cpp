@@ -22,8 +22,18 @@
 //    error-map tables (random geometry, corrections in counts or um) through program_map, a replay
 //    of the bus writes and map_from_image: geometry exact, every correction within 1/512 count.
 // 5. Errors, not values: out-of-range physical input, unknown register names, values outside a
-//    register's width, words outside the map, bad map tables; `laserax compensate --regs-out`
-//    writes exactly the helper's register writes.
+//    register's width, words outside the map, bad map tables, bad DDS settings; `laserax
+//    compensate --regs-out` writes exactly the helper's register writes.
+// 6. DDS table load (lxt::program_dds): a chain of loads (period changes 256 -> 640 and to the
+//    extremes 8 / 4096, amplitude changes at the same period, dac_width kept, widened, set) is
+//    replayed write by write into a reg_image and an hls axis_core (1..3 calls per write) while
+//    the axis moves: cfg_err must be 1 in exactly the documented window (from the call after the
+//    first write up to the call of the last write) and 0 before and after it; afterwards the
+//    image equals program_dds's, the table RAM holds lxt::dds_table(P, amp), the axis homes with
+//    the new period (Z = A + P + P/4, output phase P/8 at Z, sin == cos > 0 there) and in every
+//    running call sin/cos equal the words of lxt::dds_table at the phase out_pos(t-2) mod P (the
+//    quadrant mapping of DESIGN §4.6), every phase 0..P-1 visited. Negative controls: the same
+//    load with one tbl_addr off by one, and without its first write, must fail those checks.
 // ctest-args: --seed 5 --samples 3000
 #include <algorithm>
 #include <cctype>
@@ -40,6 +50,7 @@
 #include "hls/error_map.h"
 #include "hls/laserax_regmap.h"
 #include "tb/tb_util.h"
+#include "tools/common/dds_table.h"
 #include "tools/common/compensate_cmd.h"
 #include "tools/common/laserax_regs_c.h"
 #include "tools/common/regmap.h"
@@ -100,6 +111,152 @@ lxt::reg_image legal_base() {
     lxt::reg_image img;
     img.set(rm::idx::amplitude, 1);
     return img;
+}
+
+// ---- DDS table load (section 6) ----------------------------------------------------------------
+
+// The pins of an axis at raw count n (quadrature index n mod 4, DESIGN §4.2); the reference switch
+// closes at n >= kSwPos. move_toward() steps one raw count every `spacing` calls.
+constexpr int64_t kSwPos = 20;
+struct axis_motion {
+    int64_t n = 0;
+    long wait = 0;
+    lx::axis_pins pins() const {
+        const int i = static_cast<int>(((n % 4) + 4) % 4);
+        lx::axis_pins p;
+        p.a = i == 1 || i == 2;
+        p.b = i == 2 || i == 3;
+        p.sw = n >= kSwPos;
+        return p;
+    }
+    void move_toward(int64_t target, long spacing) {
+        if (n == target) return;
+        if (wait-- <= 0) {
+            n += target > n ? 1 : -1;
+            wait = spacing;
+        }
+    }
+};
+
+// sin/cos of the DDS at phase ph from the quarter-wave words t (DESIGN §4.6: T[r] and T[P/4 - r],
+// the amplitude register standing in for T[P/4]).
+void table_sincos(const std::vector<uint32_t>& t, int period, int64_t amp, int ph, int64_t* sn, int64_t* cs) {
+    const int quarter = period / 4;
+    const int r = ph % quarter;
+    const int64_t dir = t[static_cast<size_t>(r)];
+    const int64_t mir = r == 0 ? amp : static_cast<int64_t>(t[static_cast<size_t>(quarter - r)]);
+    switch (ph / quarter) {
+        case 0: *sn = dir; *cs = mir; break;
+        case 1: *sn = mir; *cs = -dir; break;
+        case 2: *sn = -dir; *cs = -mir; break;
+        default: *sn = -mir; *cs = dir; break;
+    }
+}
+
+struct load_stats {
+    long calls = 0, window_calls = 0;
+    long err_outside = 0;  // calls with cfg_err before or after the window
+    long ok_inside = 0;    // calls in the window without cfg_err
+    long sincos_checked = 0, sincos_bad = 0;
+    std::string first_bad;
+    int phases = 0;  // distinct phases whose sin/cos were checked
+    bool homed = false, z_ok = false, sin_eq_cos_at_z = false;
+    std::string z_text;
+};
+
+// Replays the bus writes seq into img and core (each write acts from the next call on, 1..3
+// calls per write) while the axis moves below the switch, then homes the axis with the period
+// and amplitude the image holds at the end and runs it over more than a period, checking cfg_err
+// against the window and sin/cos against lxt::dds_table in every call.
+load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, const std::vector<lxt::reg_write>& seq,
+                    std::mt19937_64& rng) {
+    load_stats st;
+    const int64_t n_lo = kSwPos - 8;
+    const auto spacing_for = [&]() {  // calls per raw count so that the pacer keeps up
+        const double cpr = static_cast<double>(img.get(rm::idx::ratio)) / 4294967296.0;
+        return static_cast<long>(static_cast<double>(img.get(rm::idx::pace_m)) * cpr) + 4;
+    };
+    const auto call = [&](bool in_window) {
+        const lx::axis_out o = core.step(ax.pins(), lxt::hls_from(img));
+        ++st.calls;
+        if (in_window) {
+            ++st.window_calls;
+            st.ok_inside += o.cfg_err ? 0 : 1;
+        } else {
+            st.err_outside += o.cfg_err ? 1 : 0;
+        }
+        return o;
+    };
+    // before: the old configuration runs, the axis heads below the switch
+    for (int k = 0; k < 20; ++k) {
+        ax.move_toward(n_lo, spacing_for());
+        call(false);
+    }
+    // the window: every write but the last is followed by 1..3 calls that must be in the safe state
+    for (size_t i = 0; i < seq.size(); ++i) {
+        std::string e;
+        if (!img.write_word(seq[i].offset, seq[i].value, &e)) {
+            st.first_bad = "write " + std::to_string(i) + ": " + e;
+            ++st.sincos_bad;
+            return st;
+        }
+        if (i + 1 == seq.size()) break;
+        for (int64_t k = std::uniform_int_distribution<int64_t>(1, 3)(rng); k > 0; --k) {
+            ax.move_toward(n_lo, spacing_for());
+            call(true);
+        }
+    }
+    // after: the chain runs from reset with the new period; the axis waits below the switch,
+    // then drives through it far enough for A + P + P/4 and a full period past it
+    const int period = static_cast<int>(img.get(rm::idx::period));
+    const int64_t amp = img.get(rm::idx::amplitude);
+    const std::vector<uint32_t> words = lxt::dds_table(period, static_cast<int>(amp));
+    const double cpr = static_cast<double>(img.get(rm::idx::ratio)) / 4294967296.0;
+    const int64_t n_hi = kSwPos + static_cast<int64_t>((2.5 * period + 64.0) / cpr) + 2;
+    std::vector<char> seen(static_cast<size_t>(period), 0);
+    std::vector<int64_t> out_hist = {0, 0};  // out_pos of the two calls before the first running one
+    long below = 0, at_top = 0, tz = -1;
+    for (long t = 0; t < 2000000; ++t) {
+        if (below < 200) {
+            ax.move_toward(n_lo, spacing_for());
+            below = ax.n == n_lo ? below + 1 : 0;
+        } else {
+            ax.move_toward(n_hi, spacing_for());
+        }
+        const lx::axis_out o = call(false);
+        if (o.cfg_err) {
+            out_hist.push_back(0);
+            continue;
+        }
+        const int64_t out = o.out_pos.to_int64();
+        const int ph = static_cast<int>(((out_hist[out_hist.size() - 2] % period) + period) % period);
+        int64_t sn = 0, cs = 0;
+        table_sincos(words, period, amp, ph, &sn, &cs);
+        ++st.sincos_checked;
+        seen[static_cast<size_t>(ph)] = 1;
+        if (o.sin.to_int64() != sn || o.cos.to_int64() != cs) {
+            if (st.sincos_bad++ == 0)
+                st.first_bad = "running call " + std::to_string(t) + ", phase " + std::to_string(ph) + ": sin/cos " +
+                               std::to_string(o.sin.to_int64()) + "/" + std::to_string(o.cos.to_int64()) +
+                               ", table words give " + std::to_string(sn) + "/" + std::to_string(cs);
+        }
+        out_hist.push_back(out);
+        if (o.stage == 3 && !st.homed) {
+            st.homed = true;
+            st.z_ok = o.z_pos.to_int64() == o.a_pos.to_int64() + period + period / 4;
+            st.z_text = "A " + std::to_string(o.a_pos.to_int64()) + ", Z " + std::to_string(o.z_pos.to_int64());
+        }
+        if (st.homed && tz < 0 && out - o.adj.to_int64() == o.z_pos.to_int64()) {  // the paced position at Z
+            tz = t;
+            st.z_ok = st.z_ok && ((out % period) + period) % period == period / 8;
+            st.z_text += ", output phase at Z " + std::to_string(((out % period) + period) % period);
+        }
+        if (tz >= 0 && t == tz + 2) st.sin_eq_cos_at_z = o.sin == o.cos && o.sin > 0;  // the codes of Z
+        at_top = (ax.n == n_hi && o.backlog == 0) ? at_top + 1 : 0;
+        if (at_top > 50) break;
+    }
+    for (char c : seen) st.phases += c;
+    return st;
 }
 
 }  // namespace
@@ -596,6 +753,30 @@ int main(int argc, char** argv) {
         bad_geom.set(rm::idx::map_k1, 2);
         res.check(!lxt::map_from_image(bad_geom, 1, std::vector<int32_t>(2048, 0), lxt::map_units::counts, &back, &err),
                   "map_from_image accepted an invalid geometry");
+
+        const auto bad_dds = [&](const char* what, int period, int amp, int mark_len, int dac_width, const char* word) {
+            lxt::reg_image m;
+            lxt::dds_load ld;
+            std::string e;
+            lxt::dds_setting ds;
+            ds.period = period;
+            ds.amplitude = amp;
+            ds.mark_len = mark_len;
+            ds.dac_width = dac_width;
+            res.check(!lxt::program_dds(ds, &m, &ld, &e) && e.find(word) != std::string::npos &&
+                          same_words(m, ref, &where),
+                      std::string("bad DDS setting (") + what + ") accepted or no message: '" + e + "'");
+        };
+        bad_dds("period 0", 0, 32767, 0, 0, "period");
+        bad_dds("period 4104", 4104, 32767, 0, 0, "period");
+        bad_dds("period 260", 260, 32767, 0, 0, "period");
+        bad_dds("amplitude 0", 256, 0, 0, 0, "amplitude");
+        bad_dds("amplitude 131072", 256, 131072, 0, 0, "amplitude");
+        bad_dds("mark_len P/4 - 1", 640, 32767, 159, 0, "mark_len");
+        bad_dds("mark_len P + 1", 640, 32767, 641, 0, "mark_len");
+        bad_dds("dac_width 11", 256, 100, 0, 11, "dac_width");
+        bad_dds("dac_width 19", 256, 100, 0, 19, "dac_width");
+        bad_dds("amplitude 40000 at dac_width 16", 256, 40000, 0, 16, "dac_width");
     }
 
     // ---- `laserax compensate --regs-out` ---------------------------------------------------------
@@ -640,6 +821,116 @@ int main(int argc, char** argv) {
         res.check(lxt::cmd_compensate(bad, 1, fo, fe) == 2 && std::ftell(fo) == 0, "unwritable --regs-out accepted");
         std::fclose(fo);
         std::fclose(fe);
+    }
+    // ---- 6. DDS table load through the bus (lxt::program_dds) ---------------------------------------
+    {
+        lxt::reg_image img;  // the chain's registers as the slave holds them
+        img.set(rm::idx::pace_m, 2);
+        img.set(rm::idx::glitch_n, 1);
+        img.set(rm::idx::sw_debounce, 4);
+        lx::axis_core core;  // power-up table: P = 256, amp = 32767 (as the reset image)
+        axis_motion ax;
+        for (int k = 0; k < 100; ++k) core.step(ax.pins(), lxt::hls_from(img));
+        struct plan_t {
+            lxt::dds_setting s;
+            int want_width;  // dac_width after the load
+        };
+        const auto setting = [](int p, int a, int m, int w) {
+            lxt::dds_setting x;
+            x.period = p;
+            x.amplitude = a;
+            x.mark_len = m;
+            x.dac_width = w;
+            return x;
+        };
+        std::vector<plan_t> plan = {
+            {setting(640, 32767, 0, 0), 16},    // 256 -> 640 (the preset change)
+            {setting(640, 20000, 400, 0), 16},  // amplitude change, same period, new mark_len
+            {setting(640, 131071, 0, 0), 18},   // widest amplitude: dac_width widened 16 -> 18
+            {setting(256, 1, 256, 12), 12},     // back to 256, amplitude 1, narrowest width
+            {setting(8, 3, 0, 0), 12},          // shortest period (P/4 = 2 words)
+            {setting(4096, 65535, 0, 0), 17},   // longest period (1024 words), width 12 -> 17
+            {setting(1000, 2047, 0, 12), 12},   // 1000 counts, the largest amplitude of 12 bits
+        };
+        for (int k = 0; k < 2; ++k) {  // random settings
+            const int p = static_cast<int>(unii(2, 256)) * 8;
+            const int a = static_cast<int>(unii(1, 131071));
+            plan.push_back({setting(p, a, static_cast<int>(unii(p / 4, p)), 0), 0});
+        }
+        plan.push_back({setting(256, 32767, 64, 16), 16});  // back to the reset configuration
+        long n_loads = 0, n_calls = 0, n_window = 0, n_sincos = 0;
+        for (size_t li = 0; li < plan.size(); ++li) {
+            const lxt::dds_setting& ds = plan[li].s;
+            const std::string tag = "DDS load " + std::to_string(li) + " (P " + std::to_string(ds.period) + ", amp " +
+                                    std::to_string(ds.amplitude) + ")";
+            lxt::reg_image target = img;
+            lxt::dds_load ld;
+            std::string err;
+            if (!res.expect(lxt::program_dds(ds, &target, &ld, &err), [&] { return tag + ": " + err; })) continue;
+            const rm::reg_info& tp = rm::kRegs[rm::idx::tbl_period];
+            res.check(ld.words == lxt::dds_table(ds.period, ds.amplitude), tag + ": words are not lxt::dds_table's");
+            res.check(ld.seq.size() == static_cast<size_t>(ds.period) + 6, tag + ": not P + 6 writes");
+            res.check(!ld.seq.empty() && ld.seq.front().offset == tp.offset && ld.seq.front().value == 0 &&
+                          ld.seq.back().offset == tp.offset &&
+                          ld.seq.back().value == static_cast<uint32_t>(ds.period),
+                      tag + ": the sequence does not open with tbl_period = 0 and close with tbl_period = P");
+            if (plan[li].want_width != 0)
+                res.check(target.get(rm::idx::dac_width) == plan[li].want_width,
+                          tag + ": dac_width " + s64(target.get(rm::idx::dac_width)) + ", expected " +
+                              std::to_string(plan[li].want_width));
+            res.check(target.get(rm::idx::tbl_we) == 0 && lx::axis_config_ok(lxt::hls_from(target)),
+                      tag + ": enable left on or invalid configuration after the sequence");
+
+            if (li == 0) {  // negative controls, from copies of the state before the load
+                std::vector<lxt::reg_write> off = ld.seq;  // tbl_addr 1 written as 2
+                for (lxt::reg_write& w : off)
+                    if (w.offset == rm::kRegs[rm::idx::tbl_addr].offset && w.value == 1) {
+                        w.value = 2;
+                        break;
+                    }
+                lx::axis_core c1 = core;
+                lxt::reg_image i1 = img;
+                axis_motion a1 = ax;
+                const load_stats m1 = run_load(c1, i1, a1, off, rng);
+                res.check(m1.sincos_bad > 0, tag + ": negative control: a table word written one address off went "
+                                                   "unnoticed by the sin/cos check");
+                const std::vector<lxt::reg_write> late(ld.seq.begin() + 1, ld.seq.end());  // no tbl_period = 0
+                lx::axis_core c2 = core;
+                lxt::reg_image i2 = img;
+                axis_motion a2 = ax;
+                const load_stats m2 = run_load(c2, i2, a2, late, rng);
+                res.check(m2.ok_inside > 0, tag + ": negative control: without tbl_period = 0 first the chain still "
+                                                  "stayed in the safe state while the table was written");
+            }
+
+            const load_stats st = run_load(core, img, ax, ld.seq, rng);
+            std::string where;
+            res.expect(same_words(img, target, &where), [&] { return tag + ": replayed image differs: " + where; });
+            res.check(st.err_outside == 0, tag + ": " + std::to_string(st.err_outside) +
+                                               " calls with cfg_err outside the window");
+            res.check(st.ok_inside == 0, tag + ": " + std::to_string(st.ok_inside) +
+                                             " calls of the window ran (no cfg_err)");
+            bool ram_ok = true;
+            for (size_t k = 0; k < ld.words.size(); ++k)
+                ram_ok = ram_ok && core.dds().read(static_cast<unsigned>(k)) == ld.words[k];
+            res.check(ram_ok, tag + ": the table RAM does not hold lxt::dds_table's words");
+            res.check(st.sincos_bad == 0, tag + ": " + std::to_string(st.sincos_bad) + " calls with sin/cos off the "
+                                                   "table, first: " + st.first_bad);
+            res.check(st.phases == ds.period, tag + ": " + std::to_string(st.phases) + " of " +
+                                                  std::to_string(ds.period) + " phases checked");
+            res.check(st.homed && st.z_ok && st.sin_eq_cos_at_z,
+                      tag + ": homing with the new period: homed " + std::to_string(st.homed) + ", " + st.z_text +
+                          " (expected Z = A + P + P/4, phase P/8), sin == cos > 0 at Z " +
+                          std::to_string(st.sin_eq_cos_at_z));
+            ++n_loads;
+            n_calls += st.calls;
+            n_window += st.window_calls;
+            n_sincos += st.sincos_checked;
+        }
+        std::printf("  DDS table loads: %ld loads replayed (%ld calls, %ld in the safe-state windows), sin/cos "
+                    "checked against lxt::dds_table in %ld calls, homed after each; negative controls (address "
+                    "off by one, no tbl_period = 0) caught\n",
+                    n_loads, n_calls, n_window, n_sincos);
     }
     return res.finish();
 }

@@ -5,6 +5,7 @@
 #include <cstdio>
 
 #include "golden/thermal.h"
+#include "tools/common/dds_table.h"
 
 namespace lxt {
 
@@ -421,6 +422,81 @@ bool map_from_image(const reg_image& img, int bank, const std::vector<int32_t>& 
         t.corr.push_back(units == map_units::um ? c / kCountsPerUm : c);
     }
     *out = t;
+    return true;
+}
+
+// ---- DDS quarter-wave table ------------------------------------------------------------------
+
+bool program_dds(const dds_setting& s, reg_image* img, dds_load* out, std::string* err) {
+    const rm::reg_info& pr = rm::kRegs[rm::idx::period];
+    const rm::reg_info& mr = rm::kRegs[rm::idx::mark_len];
+    const rm::reg_info& wr = rm::kRegs[rm::idx::dac_width];
+    const rm::reg_info& ar = rm::kRegs[rm::idx::amplitude];
+    if (!rm::legal(pr, s.period)) {
+        set_err(err, "DDS period " + std::to_string(s.period) + ": must be " + std::to_string(pr.min) + " .. " +
+                         std::to_string(pr.max) + " in steps of " + std::to_string(pr.step));
+        return false;
+    }
+    if (!rm::legal(ar, s.amplitude)) {
+        set_err(err, "DDS amplitude " + std::to_string(s.amplitude) + ": must be " + std::to_string(ar.min) + " .. " +
+                         std::to_string(ar.max));
+        return false;
+    }
+    const int mark_len = s.mark_len == 0 ? s.period / 4 : s.mark_len;
+    if (!rm::legal(mr, mark_len) || mark_len < s.period / 4 || mark_len > s.period) {
+        set_err(err, "mark_len " + std::to_string(mark_len) + " for period " + std::to_string(s.period) +
+                         ": must be P/4 .. P (" + std::to_string(s.period / 4) + " .. " + std::to_string(s.period) +
+                         ")");
+        return false;
+    }
+    const auto amp_max = [](int64_t w) { return (int64_t(1) << (w - 1)) - 1; };
+    int64_t width = s.dac_width;
+    if (width == 0) {  // keep the image's width if the amplitude fits it, else widen just enough
+        width = img->get(rm::idx::dac_width);
+        if (!rm::legal(wr, width) || s.amplitude > amp_max(width)) {
+            width = wr.min;
+            while (width < wr.max && s.amplitude > amp_max(width)) ++width;
+        }
+    }
+    if (!rm::legal(wr, width) || s.amplitude > amp_max(width)) {
+        set_err(err, "dac_width " + std::to_string(static_cast<long long>(width)) + " for amplitude " +
+                         std::to_string(s.amplitude) + ": must be " + std::to_string(wr.min) + " .. " +
+                         std::to_string(wr.max) + " with amplitude <= 2^(dac_width-1) - 1");
+        return false;
+    }
+    dds_load ld;
+    std::string e;
+    ld.words = dds_table(s.period, s.amplitude, &e);  // the ranges above are dds_table's
+    if (ld.words.size() != static_cast<size_t>(s.period / 4)) {
+        set_err(err, "dds_table: " + e);
+        return false;
+    }
+    reg_image m = *img;
+    // 1. the table is being rewritten: tbl_period = 0 matches no period (safe state from here)
+    m.set(rm::idx::tbl_period, 0);
+    ld.seq = m.writes(rm::idx::tbl_period);
+    // 2. the words through the port
+    for (size_t k = 0; k < ld.words.size(); ++k) {
+        m.set(rm::idx::tbl_addr, static_cast<int64_t>(k));
+        m.set(rm::idx::tbl_data, ld.words[k]);
+        m.set(rm::idx::tbl_we, 1);
+        const std::vector<reg_write> w1 = writes_for(m, {rm::idx::tbl_addr, rm::idx::tbl_data, rm::idx::tbl_we});
+        ld.seq.insert(ld.seq.end(), w1.begin(), w1.end());
+        m.set(rm::idx::tbl_we, 0);
+        const std::vector<reg_write> w0 = m.writes(rm::idx::tbl_we);
+        ld.seq.insert(ld.seq.end(), w0.begin(), w0.end());
+    }
+    // 3. the period-dependent registers, 4. tbl_period = P: valid again
+    m.set(rm::idx::period, s.period);
+    m.set(rm::idx::mark_len, mark_len);
+    m.set(rm::idx::dac_width, width);
+    m.set(rm::idx::amplitude, s.amplitude);
+    m.set(rm::idx::tbl_period, s.period);
+    const std::vector<reg_write> w = writes_for(
+        m, {rm::idx::period, rm::idx::mark_len, rm::idx::dac_width, rm::idx::amplitude, rm::idx::tbl_period});
+    ld.seq.insert(ld.seq.end(), w.begin(), w.end());
+    *img = m;
+    if (out) *out = ld;
     return true;
 }
 

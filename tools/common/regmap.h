@@ -16,6 +16,10 @@
 //                     counts or um) -> geometry of the bank not selected by bank_sel, its Q15.8
 //                     words (docs/ERROR_MAP.md §3) and the register write sequence that loads them
 //                     through the map write port; back: geometry + words -> corrections.
+//   DDS table         a period / amplitude (+ mark_len, dac_width) -> the quarter-wave table words
+//                     of lxt::dds_table (tools/common/dds_table.h) and the register write sequence
+//                     that loads them through the table write port and switches the chain to them,
+//                     with one documented safe-state window (program_dds, below).
 //
 // Quantisation of the round trips (tb/tb_regmap checks them):
 //   ratio        |R - 2^32 s| <= 1/2, s = lambda/n/78.125 (1+g): the relative error of n is at most
@@ -157,6 +161,45 @@ bool replay(const std::vector<reg_write>& seq, reg_image* img, map_ram* ram, std
 // false with a message for an invalid geometry (map_cfg_err) or fewer words than points.
 bool map_from_image(const reg_image& img, int bank, const std::vector<int32_t>& words, map_units units, map_table* out,
                     std::string* err = nullptr);
+
+// ---- DDS quarter-wave table: load and switch (DESIGN §4.6, §4.7) ---------------------------
+struct dds_setting {
+    int period = 256;       // P, output counts: 8 .. 4096, step 8
+    int amplitude = 32767;  // sin/cos amplitude (the value at a quarter period): 1 .. 2^(dac_width-1) - 1
+    int mark_len = 0;       // reference mark length, P/4 .. P; 0: P/4
+    int dac_width = 0;      // 12 .. 18; 0: img's width if the amplitude fits it, else the smallest that does
+};
+
+struct dds_load {
+    std::vector<uint32_t> words;  // lxt::dds_table(period, amplitude): the P/4 words, word 0 first
+    std::vector<reg_write> seq;   // every bus write, in order
+};
+
+// Loads the table for s and switches the chain to it, for a period change as for a new amplitude
+// at the same period. The bus writes, in this order:
+//   1. tbl_period = 0: marks the table as being rewritten. From the call after this write the
+//      configuration check fails (tbl_period != period), so the chain is in the safe state
+//      (cfg_err = 1, sin = cos = 0, every block in reset, counts not counted) and the DDS never
+//      reads a half-written table (DESIGN §4.6: the table is written only while tbl_period !=
+//      period).
+//   2. per word k = 0 .. P/4-1: tbl_addr = k, tbl_data = T[k], tbl_we = 1, tbl_we = 0 (the port
+//      writes the word in every clock the enable is 1; it is written in the safe state too).
+//   3. period, mark_len, dac_width, amplitude (all four, whatever img held: the sequence does not
+//      rely on the host's copy being in step with the slave).
+//   4. tbl_period = P: the configuration is valid again from the call after this write.
+// P + 6 writes in all. The sequence accepts exactly one safe-state window: with its first write
+// completing at edge t0 and its last at edge t1, cfg_err = 1 in calls t0+1 .. t1 and 0 from call
+// t1+1 on (a write completing at edge t acts in call t+1; docs/REGISTERS.md, "RTL slave").
+// Nothing in between can make the configuration valid early, whatever the old and new period,
+// mark_len, dac_width and amplitude (tbl_period = 0 matches no legal period). Leaving the window the
+// chain starts from reset with the new period (coming out of an invalid configuration costs no
+// extra safe-state call, DESIGN §4.7): raw_count restarts at 0 and the axis is un-homed (stage 1)
+// until the next rising edge of the switch homes it with the new period. Not touched: the
+// compensation pair in force, the error-map tables and every other register; the chain runs after
+// the window only if those are valid too (ratio, pace_m).
+// img ends in the state after the sequence (tbl_we = 0, tbl_addr / tbl_data hold the last word).
+// false with a message (img unchanged) for a setting outside the legal ranges or rules.
+bool program_dds(const dds_setting& s, reg_image* img, dds_load* out, std::string* err = nullptr);
 
 }  // namespace lxt
 
