@@ -12,15 +12,15 @@
 #
 # 1. Vectors, into BUILD_DIR/rtl_vectors: BUILD_DIR/laserax vectors --calls $RTL_CALLS (40000),
 #    and BUILD_DIR/rtl_stress_vectors --calls $RTL_STRESS_CALLS (30000; top: 3x) and
-#    BUILD_DIR/regmap_vectors (laserax_axil: $RTL_CALLS rows) when those tools are built; generated
-#    once and reused while newer than the binaries and made with the same counts (a lock
-#    serialises parallel tests).
+#    BUILD_DIR/regmap_vectors --calls $RTL_REGMAP_CALLS (50000 rows of laserax_axil) when those
+#    tools are built; generated once and reused while newer than the binaries and made with the
+#    same counts (a lock serialises parallel tests).
 # 2. The `// field` lines of SET.hex must equal the field list the testbench was written for.
 # 3. iverilog -g2005 -Wall (plus the sensitivity warnings) on the testbench and rtl_ref/*.v: any
 #    compiler output is an error (iverilog has no -Werror).
 # 4. vvp; the run passes if it prints `PASS tb_BLOCK:` and no warning, error or FAIL line.
-# Environment: RTL_CALLS, RTL_STRESS_CALLS (vector rows), RTL_ROWS (simulate only the first N rows),
-#              RTL_VCD=FILE (dump a VCD of the run).
+# Environment: RTL_CALLS, RTL_STRESS_CALLS, RTL_REGMAP_CALLS (vector rows), RTL_ROWS (simulate only
+#              the first N rows), RTL_VCD=FILE (dump a VCD of the run).
 # Exit status 0 on PASS, 1 on any failure.
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -28,6 +28,7 @@ BLOCKS="input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sinc
 REGMAP_SETS="laserax_regs laserax_axil"   # regmap_vectors, no _stress set
 CALLS="${RTL_CALLS:-40000}"
 STRESS_CALLS="${RTL_STRESS_CALLS:-30000}"
+REGMAP_CALLS="${RTL_REGMAP_CALLS:-50000}"   # laserax_axil: DDS table loads and homings take room
 IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 
 die() { echo "rtl_sim: $*" >&2; exit 1; }
@@ -48,7 +49,7 @@ make_vectors() {
     local stamp="$vecdir/.stamp" tmp want have_stress=0 have_regmap=0
     [ -x "$stressgen" ] && have_stress=1
     [ -x "$regmapgen" ] && have_regmap=1
-    want="calls $CALLS stress $have_stress $STRESS_CALLS regmap $have_regmap"
+    want="calls $CALLS stress $have_stress $STRESS_CALLS regmap $have_regmap $REGMAP_CALLS"
     exec 9>"$build/rtl_vectors.lock"
     flock 9
     if [ ! -f "$stamp" ] || [ "$laserax" -nt "$stamp" ] || [ "$(cat "$stamp")" != "$want" ] ||
@@ -67,7 +68,7 @@ make_vectors() {
             die "rtl_stress_vectors failed"
         fi
         if [ $have_regmap = 1 ] &&
-           ! (cd "$build" && ./regmap_vectors --out "$tmp" --calls "$CALLS" >>"$tmp/.log" 2>&1); then
+           ! (cd "$build" && ./regmap_vectors --out "$tmp" --calls "$REGMAP_CALLS" >>"$tmp/.log" 2>&1); then
             cat "$tmp/.log" >&2
             rm -rf "$tmp"
             die "regmap_vectors failed"
@@ -75,7 +76,7 @@ make_vectors() {
         echo "$want" >"$tmp/.stamp"
         rm -rf "$vecdir"
         mv "$tmp" "$vecdir"
-        echo "rtl_sim: vectors written to $vecdir ($CALLS calls; stress vectors: $([ $have_stress = 1 ] && echo "$STRESS_CALLS calls" || echo "rtl_stress_vectors not built"); register map: $([ $have_regmap = 1 ] && echo "regmap_vectors" || echo "regmap_vectors not built"))"
+        echo "rtl_sim: vectors written to $vecdir ($CALLS calls; stress vectors: $([ $have_stress = 1 ] && echo "$STRESS_CALLS calls" || echo "rtl_stress_vectors not built"); register map: $([ $have_regmap = 1 ] && echo "regmap_vectors, $REGMAP_CALLS calls" || echo "regmap_vectors not built"))"
     fi
     flock -u 9
 }

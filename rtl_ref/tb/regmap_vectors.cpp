@@ -17,8 +17,13 @@
 //                     the compensation sequence of lxt::compensation_writes (comp_sync, ratio and
 //                     comp_offset words, comp_commit pulse) for new air / material conditions, two
 //                     error-map loads by lxt::program_map (geometry, words through the map write
-//                     port, bank flip, map_en), clear and rehome pulses, reads; meanwhile the pins
-//                     move the axis through homing and back and forth.
+//                     port, bank flip, map_en), DDS table loads by lxt::program_dds (tbl_period = 0,
+//                     the quarter-wave words through the table write port, period, mark_len,
+//                     dac_width, amplitude, tbl_period = P: one safe-state window each) switching
+//                     the period 256 <-> 640 counts or only the amplitude (and dac_width), a stray
+//                     table word written while the chain runs and restored later, clear and rehome
+//                     pulses, reads; meanwhile the pins move the axis through homing (with the
+//                     period in force) and back and forth.
 //
 // The slave's timing is the one documented in docs/REGISTERS.md ("RTL slave") and modelled by
 // axil_slave below: AWREADY = no address held and no response pending, WREADY likewise; a write
@@ -31,9 +36,12 @@
 // in call t+1, the latency of the register stage in laserax_axil.
 //
 // Usage: regmap_vectors --out DIR [--seed N] [--calls N]   writes DIR/laserax_regs.hex and
-//        DIR/laserax_axil.hex (--calls: rows of laserax_axil, default 40000)
+//        DIR/laserax_axil.hex (--calls: rows of laserax_axil, default 50000 as in scripts/rtl_sim.sh;
+//        with much fewer, e.g. 15000, there is no room for two period changes and a homing with
+//        each period after them, and the program fails saying so)
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdint>
 #include <cstdio>
@@ -46,6 +54,7 @@
 #include <vector>
 
 #include "hls/axis_core.h"
+#include "tools/common/dds_table.h"
 #include "tools/common/regmap.h"
 #include "tools/common/vectors.h"
 
@@ -471,6 +480,51 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
         queue(ld.seq);
         return true;
     };
+    // A new quarter-wave table for (period, amplitude) and the switch to it (lxt::program_dds, one
+    // safe-state window): the writes back to back as a driver issues them, one in 8 with random
+    // timing. After a load with a period change the host waits for the axis to home with the new
+    // period (the sweeps take it through the switch) before its next step, at most until call
+    // await_until; once the writes are through, the model's table RAM is checked (check_table).
+    int n_tbl_loads = 0, n_period_changes = 0, n_stray = 0;
+    bool await_home = false, check_table = false;
+    long long await_until = 0;
+    auto load_dds = [&](int period, int amp, int mark_len, int dac_width) {
+        lxt::dds_setting ds;
+        ds.period = period;
+        ds.amplitude = amp;
+        ds.mark_len = mark_len;
+        ds.dac_width = dac_width;
+        const bool change = host.get(rm::idx::period) != period;
+        lxt::dds_load ld;
+        std::string e;
+        if (!lxt::program_dds(ds, &host, &ld, &e)) {
+            *err = "laserax_axil: program_dds: " + e;
+            return false;
+        }
+        for (const lxt::reg_write& w : ld.seq) {
+            txn x;
+            if (r.chance(8)) x = random_timing(r, w.offset, w.value, 0xF);
+            x.addr = w.offset;
+            x.data = w.value;
+            m.writes.push_back(x);
+        }
+        await_home = change;
+        await_until = static_cast<long long>(t.rows.size()) + 16000;
+        check_table = true;
+        ++n_tbl_loads;
+        n_period_changes += change ? 1 : 0;
+        return true;
+    };
+    // one table word through the port (tbl_addr, tbl_data, tbl_we = 1, tbl_we = 0)
+    auto table_word = [&](int64_t addr, int64_t data) {
+        host.set(rm::idx::tbl_addr, addr);
+        host.set(rm::idx::tbl_data, data);
+        host.set(rm::idx::tbl_we, 1);
+        queue(lxt::writes_for(host, {rm::idx::tbl_addr, rm::idx::tbl_data, rm::idx::tbl_we}));
+        host.set(rm::idx::tbl_we, 0);
+        queue(host.writes(rm::idx::tbl_we));
+    };
+    int64_t stray_addr = -1;  // a table word overwritten while running, restored at the next host step
 
     // settings first (the chain runs from reset with the CSV reset values meanwhile)
     set_regs({{rm::idx::glitch_n, 1}, {rm::idx::sw_debounce, 3}, {rm::idx::pace_m, 2}, {rm::idx::backlog_thr, 200},
@@ -480,35 +534,86 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
     int64_t n = 0;
     int dir = 1;
     long long wait = 0, spacing = 40, seg_left = 0;
-    const int64_t sw_pos = 60, reach = 80;
+    // the travel: sw_pos - 80 .. sw_pos + reach raw counts, reach enough to home and pass Z
+    // (A + P + P/4) with the period in force (~8.1 output counts per raw count)
+    const int64_t sw_pos = 60;
+    int64_t reach = 80;
     int glitch_left = 0;
     long long next_event = 300;
     int event = 0;
     long long homed = 0, corr = 0, cfg_err = 0;  // calls, for the summary line
+    bool was_homed = false;  // o.homed of the previous call
+    long long homings_256 = 0, homings_640 = 0;  // homings after the first table load, by period
     for (long long k = 0; k < calls; ++k) {
         // --- host programme: one step whenever the write queue has drained ---
-        if (k >= next_event && k < calls - 2000 && m.write_idle()) {
+        if (check_table && m.write_idle()) {
+            // the sequence did what it claims: the model's table RAM holds lxt::dds_table's words
+            // (the RTL's is compared through sin/cos on every clock)
+            check_table = false;
+            const int p = static_cast<int>(s.img.get(rm::idx::period));
+            const std::vector<uint32_t> words = lxt::dds_table(p, static_cast<int>(s.img.get(rm::idx::amplitude)));
+            for (int j = 0; j < p / 4; ++j) {
+                if (core.dds().read(static_cast<unsigned>(j)) != words[static_cast<size_t>(j)]) {
+                    *err = "laserax_axil: after the table load for P = " + std::to_string(p) + " word " +
+                           std::to_string(j) + " of the table RAM is not lxt::dds_table's";
+                    return false;
+                }
+            }
+        }
+        if (await_home && m.write_idle() && (was_homed || k >= await_until)) {
+            await_home = false;
+            next_event = k + r.range(200, 1500);
+        }
+        if (!await_home && k >= next_event && k < calls - 4000 && m.write_idle()) {
             bool ok = true;
-            switch (event++ % 10) {
+            if (stray_addr >= 0) {  // put back the word of the table in force
+                const std::vector<uint32_t> words = lxt::dds_table(
+                    static_cast<int>(host.get(rm::idx::period)), static_cast<int>(host.get(rm::idx::amplitude)));
+                table_word(stray_addr, words[static_cast<size_t>(stray_addr)]);
+                stray_addr = -1;
+            }
+            // one cycle of 14 steps; the DDS table steps are spread over it (each load un-homes the
+            // axis, and the host waits for the homing with the new period)
+            switch (event++ % 14) {
                 case 0: ok = compensate(100000.0 + static_cast<double>(r.range(-3000, 3000)), 20.0 + static_cast<double>(r.range(-30, 30)) / 10.0,
                                         11.5, 20.0 + static_cast<double>(r.range(-50, 50)) / 10.0,
                                         static_cast<double>(r.range(-20, 40))); break;
                 case 1: ok = load_map(-512 + r.range(-100, 100), 7, 20, 30.0); break;
-                case 2: pulse(rm::idx::clear); break;
-                case 3: ok = compensate(101325.0 + static_cast<double>(r.range(-5000, 5000)), 21.0, 0.0, 20.0, 0.0); break;
-                case 4:  // read back a few registers
+                case 2:
+                case 10: {  // table load + period change 256 <-> 640 (mark_len anywhere in P/4 .. P)
+                    const int p = host.get(rm::idx::period) == 256 ? 640 : 256;
+                    ok = load_dds(p, r.chance(2) ? 32767 : static_cast<int>(r.range(2000, 32767)),
+                                  static_cast<int>(r.range(p / 4, p)), 0);
+                    break;
+                }
+                case 3: pulse(rm::idx::clear); break;
+                case 4:  // a stray table word while the chain runs (tbl_period == period, against
+                         // DESIGN 4.6): the DDS shows it at once; put back at the next host step
+                    stray_addr = r.range(0, host.get(rm::idx::period) / 4 - 1);
+                    table_word(stray_addr, static_cast<int64_t>(r.u() & 0x1FFFF));
+                    ++n_stray;
+                    break;
+                case 5: ok = compensate(101325.0 + static_cast<double>(r.range(-5000, 5000)), 21.0, 0.0, 20.0, 0.0); break;
+                case 6: set_regs({{rm::idx::map_en, r.chance(3) ? 0 : 1}}); break;
+                case 7: {  // new amplitude, same period: a wide one (dac_width widened) or a narrow
+                           // one with a dac_width chosen here
+                    const int p = static_cast<int>(host.get(rm::idx::period));
+                    if (r.chance(2)) ok = load_dds(p, static_cast<int>(r.range(40000, 131071)), 0, 0);
+                    else ok = load_dds(p, static_cast<int>(r.range(100, 2047)), 0, static_cast<int>(r.range(12, 16)));
+                    break;
+                }
+                case 8:  // read back a few registers
                     for (int j = 0; j < 4; ++j) {
                         txn x = random_timing(r, rm::kRegs[r.range(0, rm::kNumRegs - 1)].offset, 0, 0);
                         m.reads.push_back(x);
                     }
                     break;
-                case 5: ok = load_map(-600 + r.range(-100, 100), 6, 40, 60.0); break;
-                case 6: pulse(rm::idx::rehome); break;
-                case 7:  // a few clocks of an invalid pace_m (safe state, cfg_err), then a valid one
+                case 9:  // a few clocks of an invalid pace_m (safe state, cfg_err), then a valid one
                     set_regs({{rm::idx::pace_m, 1}});
                     set_regs({{rm::idx::pace_m, r.range(2, 3)}, {rm::idx::backlog_thr, r.range(100, 400)}});
                     break;
-                case 8: set_regs({{rm::idx::map_en, r.chance(3) ? 0 : 1}}); break;
+                case 11: ok = load_map(-600 + r.range(-100, 100), 6, 40, 60.0); break;
+                case 12: pulse(rm::idx::rehome); break;
                 default: ok = compensate(99000.0, 19.5, 23.0, 21.0 + static_cast<double>(r.range(0, 20)) / 10.0,
                                          static_cast<double>(r.range(0, 60))); break;
             }
@@ -518,15 +623,18 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
 
         // --- pins ---
         // sweeps between the two ends of the travel, through the switch: new speed (or a stop)
-        // now and then, a reversal in mid-travel now and then
-        if (seg_left-- <= 0) {
+        // now and then, a reversal in mid-travel now and then; neither while the host waits for
+        // the homing after a period change (a homing move: end to end through the switch, quick)
+        if (seg_left-- <= 0 || (await_home && spacing > 12)) {
             seg_left = r.range(300, 3000);
-            spacing = r.chance(12) ? 1000000 : r.range(6, 30);
-            if (r.chance(10)) dir = -dir;
+            const bool stop = r.chance(12), reverse = r.chance(10);
+            spacing = await_home ? r.range(6, 12) : stop ? 1000000 : r.range(6, 30);
+            if (reverse && !await_home) dir = -dir;
             if (wait > spacing) wait = spacing;
         }
+        reach = std::max<int64_t>(80, host.get(rm::idx::period) * 5 / 32 + 20);
         if (n > sw_pos + reach) dir = -1;
-        if (n < sw_pos - reach) dir = 1;
+        if (n < sw_pos - 80) dir = 1;
         if (wait-- <= 0) {
             n += dir;
             wait = spacing;
@@ -569,6 +677,11 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
                     o.map_delta.to_int64()});
         t.rows.push_back(row);
         homed += o.homed ? 1 : 0;
+        if (o.homed && !was_homed && n_tbl_loads > 0) {  // a homing after a table load, by period
+            if (s.img.get(rm::idx::period) == 256) ++homings_256;
+            else ++homings_640;  // the only other period of the scenario
+        }
+        was_homed = o.homed;
         corr += o.corr != 0 ? 1 : 0;
         cfg_err += o.cfg_err ? 1 : 0;
     }
@@ -583,8 +696,19 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
             return false;
         }
     }
-    std::printf("  laserax_axil: %lld writes, %lld reads, %d host steps; calls homed %lld, with a map "
-                "correction %lld, cfg_err %lld\n", m.n_writes, m.n_reads, event, homed, corr, cfg_err);
+    // the scenario covers what it claims: table loads with a period change both ways, and after
+    // them a homing with each period
+    if (n_period_changes < 2 || homings_256 == 0 || homings_640 == 0) {
+        *err = "laserax_axil: " + std::to_string(n_period_changes) + " period changes, homings after a table load "
+               "with P = 256: " + std::to_string(homings_256) + ", with P = 640: " + std::to_string(homings_640) +
+               " (want >= 2 and >= 1 each: raise --calls)";
+        return false;
+    }
+    std::printf("  laserax_axil: %lld writes, %lld reads, %d host steps (DDS table loads %d, %d of them with a "
+                "period change; stray table words %d); homings after a load with P = 256: %lld, with P = 640: "
+                "%lld; calls homed %lld, with a map correction %lld, cfg_err %lld\n",
+                m.n_writes, m.n_reads, event, n_tbl_loads, n_period_changes, n_stray, homings_256, homings_640,
+                homed, corr, cfg_err);
     return true;
 }
 
@@ -604,7 +728,7 @@ bool mkdir_p(const std::string& dir) {
 int main(int argc, char** argv) {
     std::string dir;
     uint64_t seed = 5;
-    long long calls = 40000;
+    long long calls = 50000;
     for (int i = 1; i + 1 < argc; i += 2) {
         const std::string a = argv[i];
         if (a == "--out") dir = argv[i + 1];
