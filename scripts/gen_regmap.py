@@ -1013,8 +1013,14 @@ Conventions:
 
 Cross-register rules (checked by the configuration check every clock, DESIGN §4.7):
 `tbl_period == period`, `period/4 <= mark_len <= period`, `amplitude <= 2^(dac_width-1) - 1`.
-Table load (DESIGN §4.6): while `tbl_period != period` (the chain is in the safe state) write the
-P/4 quarter-wave words through `tbl_we/tbl_addr/tbl_data`, then `tbl_period = period`.
+Table load (DESIGN §4.6, §4.7; `lxt::program_dds` writes exactly this sequence): `tbl_period` = 0
+first (the configuration is invalid from the next call on: safe state, `cfg_err`, so the DDS
+never reads a half-written table), then per word k = 0 .. P/4-1 `tbl_addr` = k, `tbl_data` =
+rha(amplitude * sin(2 pi k / P)), `tbl_we` = 1, `tbl_we` = 0, then `period`, `mark_len`,
+`dac_width`, `amplitude`, and `tbl_period` = P last (P + 6 writes). The chain is in the safe
+state from the call after the first write up to the call of the last one, one window whatever the
+old and new values, and then restarts from reset with the new period: un-homed until the next
+rising edge of the switch. The same sequence loads a new amplitude at the same period.
 Error-map reload (docs/ERROR_MAP.md §4.4): write the geometry (`map_originB`, `map_kB`,
 `map_nB`) of the bank B not selected by `bank_sel` and its words through
 `map_we/map_addr/map_data`, then flip `bank_sel`.
@@ -1027,6 +1033,9 @@ write/read by name, converts it to and from `lx::axis_regs` / `golden::axis_regs
 physical settings (air temperature, pressure, humidity, CO2, expansion coefficient, material
 temperature, thermal origin, error-map table) to register values and back; `laserax compensate`
 prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
+It also writes the bus sequences that change registers the core must not see half-updated: the
+compensation pair (`compensation_writes`), an error-map bank (`program_map`) and the DDS table
+with its period (`program_dds`, the table load above).
 
 ## RTL slave (`rtl_ref/laserax_regs.v`)
 
