@@ -208,6 +208,35 @@ BLOCKS = [
         **TBL,
     ),
     dict(
+        block="error_map",
+        module="error_map",
+        dut="error_map (2 x 2048 x 24-bit table RAM, two registered reads, interpolation stage); "
+            "the RAM has no power-up contents: both vector sets write every word before a call "
+            "that is active reads it (the golden set after the chain scenario's map: a directed tail "
+            "with flips, both table ends, invalid geometries and every spacing).",
+        fields=[
+            IN("p", 38, S),
+            IN("homed", 1),
+            IN("map_en", 1),
+            IN("bank_sel", 1),
+            IN("origin0", 38, S),
+            IN("k0", 5),
+            IN("n0", 12),
+            IN("origin1", 38, S),
+            IN("k1", 5),
+            IN("n1", 12),
+            IN("we", 1),
+            IN("addr", 11),
+            IN("data", 24, S),
+            OUT("corr", 17, S),
+            OUT("delta", 18, S),
+            OUT("active", 1),
+            OUT("in_range", 1),
+            OUT("clamped", 1),
+            OUT("cfg_err", 1),
+        ],
+    ),
+    dict(
         block="laserax_top",
         module="laserax_top",
         params=[("INIT_FILE", "TBL_FILE")],

@@ -4,8 +4,9 @@
 // * reads every CSV back and its hex twin, which must hold the same numbers;
 // * replays the laserax_top stimulus (pins, registers, table and error-map write ports) into a
 //   fresh hls axis_core and compares every output column on every row; replays the dds_sincos
-//   (table port included) and pulse_multiplier (preset included) block files into fresh hls blocks
-//   the same way (the files, not the generator, are the reference here). Columns are found by
+//   (table port included), pulse_multiplier (preset included) and error_map (its directed tail
+//   included) block files into fresh hls blocks the same way (the files, not the generator, are
+//   the reference here). Columns are found by
 //   name: a replay fails if the file has an input column it does not apply or an output column it
 //   cannot compare, so a new column cannot go unchecked;
 // * malformed files (truncated row, bad number, wrong header, wrong hex width, bad hex digit,
@@ -178,6 +179,33 @@ void replay_multiplier(tbu::result& res, const lxt::vec_table& t) {
     in.report(res);
 }
 
+void replay_error_map(tbu::result& res, const lxt::vec_table& t) {
+    lx::error_map m;
+    inputs in(t);
+    long bad = 0;
+    for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
+        in.row(t.rows[r]);
+        lx::error_map_regs regs;
+        regs.map_en = in("map_en") != 0;
+        regs.bank_sel = in("bank_sel") != 0;
+        regs.geom[0].origin = in("origin0");
+        regs.geom[0].spacing_log2 = static_cast<unsigned>(in("k0"));
+        regs.geom[0].n_points = static_cast<unsigned>(in("n0"));
+        regs.geom[1].origin = in("origin1");
+        regs.geom[1].spacing_log2 = static_cast<unsigned>(in("k1"));
+        regs.geom[1].n_points = static_cast<unsigned>(in("n1"));
+        regs.we = in("we") != 0;
+        regs.addr = static_cast<unsigned>(in("addr"));
+        regs.data = in("data");
+        const lx::error_map::out_t o = m.step(lx::pos_t(in("p")), in("homed") != 0, regs);
+        if (!check_outputs(res, t, r,
+                           {{"corr", o.corr.to_int64()}, {"delta", o.delta.to_int64()}, {"active", o.active},
+                            {"in_range", o.in_range}, {"clamped", o.clamped}, {"cfg_err", o.cfg_err}}))
+            ++bad;
+    }
+    in.report(res);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -189,14 +217,16 @@ int main(int argc, char** argv) {
     if (!res.check(std::system(cmd.c_str()) == 0, "failed: " + cmd)) return res.finish();
 
     const char* blocks[] = {"input_filter", "quad_decoder", "pulse_multiplier", "output_pacer", "rephase", "dds_sincos",
-                            "laserax_top", "pso", "encoder_counter"};
+                            "error_map", "laserax_top", "pso", "encoder_counter"};
     for (const char* b : blocks) {
         std::string text, hex, err;
         lxt::vec_table t, th;
         res.check(lxt::read_file(dir + "/" + b + ".csv", text, &err), err);
         res.check(lxt::vec_from_csv(text, t, &err), std::string(b) + ".csv: " + err);
         t.block = b;  // (the CSV reader does not set it; the replay messages name it)
-        res.check(t.rows.size() == 20000, std::string(b) + ": row count");
+        // (error_map: the scenario's calls, then its directed tail)
+        const size_t want = 20000 + (std::string(b) == "error_map" ? static_cast<size_t>(lxt::kErrorMapTailCalls) : 0);
+        res.check(t.rows.size() == want, std::string(b) + ": row count");
         res.check(lxt::read_file(dir + "/" + b + ".hex", hex, &err), err);
         res.check(lxt::vec_from_hex(hex, t, th, &err), std::string(b) + ".hex: " + err);
         res.check(th.rows == t.rows, std::string(b) + ": hex and csv differ");
@@ -206,6 +236,7 @@ int main(int argc, char** argv) {
         if (std::string(b) == "laserax_top") replay_top(res, t);
         if (std::string(b) == "dds_sincos") replay_dds(res, t);
         if (std::string(b) == "pulse_multiplier") replay_multiplier(res, t);
+        if (std::string(b) == "error_map") replay_error_map(res, t);
     }
 
     // malformed input

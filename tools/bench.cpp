@@ -122,9 +122,9 @@ int main(int argc, char** argv) {
             total_rows += t.rows.size();
         }
         const double s = secs(t0);
-        std::printf("  %-34s %12.3f M rows/s    (%zu rows over 7 files x 2 formats, %.1f MB, %.3f s)%s\n",
+        std::printf("  %-34s %12.3f M rows/s    (%zu rows over %zu files x 2 formats, %.1f MB, %.3f s)%s\n",
                     "golden vectors (build+CSV+hex)", static_cast<double>(total_rows) / s / 1e6, total_rows,
-                    static_cast<double>(bytes) / 1e6, s, err.empty() ? "" : (" ERROR: " + err).c_str());
+                    tables.size(), static_cast<double>(bytes) / 1e6, s, err.empty() ? "" : (" ERROR: " + err).c_str());
     }
     std::printf("  model state: sizeof(axis_core) = %zu bytes (of which the table RAM image %zu)\n", sizeof(lx::axis_core),
                 sizeof(lx::tbl_word_t) * lx::axis_widths::TBL_DEPTH);

@@ -20,7 +20,11 @@
 //   output_pacer_stress     large deltas, every M including 0 and 1, clears while over threshold;
 //   rephase_stress          random homing, reversals inside the window, rehome/unhome, periods and
 //                           mark lengths;
-//   dds_sincos_stress       table writes while running, every period preset up to 4096, amplitudes.
+//   dds_sincos_stress       table writes while running, every period preset up to 4096, amplitudes;
+//   error_map_stress        both banks written in full, every spacing k = 4..20 (n = 2, 2048, random),
+//                           random reloads of the inactive bank and flips, extreme words, invalid
+//                           geometries, motion over both table ends with reversals and jumps,
+//                           map_en / homed toggles (see error_map_stress below).
 // Every file has the column layout of the golden file of its block (lxt::vec_layout(), shared with
 // `laserax vectors`), so one testbench rtl_ref/tb/tb_<block>.v runs both sets. The columns the
 // golden sets hold at 0 are exercised here: pulse_multiplier `preset, preset_n` (a row with
@@ -480,6 +484,240 @@ vec_table dds_stress(rng_t& r, long long calls) {
     return t;
 }
 
+// ---- error_map ------------------------------------------------------------------------------
+// Both banks are written in full first (the RTL RAM has no power-up contents, the C++ tables start
+// at 0: no call may be active on a word that was never written), then every spacing k = 4..20 is
+// swept in turn, then random operation. Every call is one row; expected columns from hls/.
+//   A  bank 0 selected and inactive (homed 0, map_en 0 or an invalid geometry: cfg_err) while all
+//      2048 words of bank 1 are written
+//   B  bank 1 active (random valid geometry), positions sweeping across and beyond its table,
+//      while all 2048 words of bank 0 (the inactive bank) are written
+//   C  k = 4..20 in turn, alternating banks: a new geometry (n = 2, 2048 or random) for the
+//      inactive bank, a few words into it, the flip, a sweep from below the table to both ends
+//      (exactly) and beyond, and back
+//   D  random: reloads of the inactive bank (random geometry, invalid 1 in 6; table kinds: smooth
+//      walk, full-range noise, alternating extremes, constant) followed by a flip, stray writes,
+//      motion at 0 .. 4 points per call with reversals, dwells and jumps (38-bit extremes
+//      included) over both table ends, map_en and homed toggles and pulses, changes of the
+//      selected bank's origin while active
+struct map_host {
+    lx::error_map_regs r;
+    int64_t p = 0;
+    bool homed = false;
+};
+
+int64_t map_span(const lx::error_map_geom& g) {
+    return lx::error_map_geom_ok(g) ? static_cast<int64_t>(g.n_points.to_uint() - 1) << g.spacing_log2.to_uint() : 0;
+}
+
+vec_table error_map_stress(rng_t& r, long long calls) {
+    using C = lx::error_map_cfg;
+    vec_table t{"error_map_stress", lxt::vec_layout("error_map"), {}};
+    const int64_t wmax = (int64_t{1} << 23) - 1, wmin = -(int64_t{1} << 23);
+    const int64_t pmax = (int64_t{1} << 37) - 1, pmin = -(int64_t{1} << 37);
+    lx::error_map m;
+    map_host h;
+    const size_t end = static_cast<size_t>(calls);
+    // pending words for the inactive bank (one per call; a call may skip)
+    std::vector<std::pair<unsigned, int64_t>> wq;
+    size_t wq_pos = 0;
+    int skip_one_in = 0;  // 0: a word every call, else skip with probability 1/skip_one_in
+    auto call = [&]() {
+        if (t.rows.size() >= end) return;
+        lx::error_map_regs c = h.r;
+        c.we = false;
+        if (wq_pos < wq.size() && (skip_one_in == 0 || !r.chance(static_cast<uint64_t>(skip_one_in)))) {
+            c.we = true;
+            c.addr = wq[wq_pos].first;
+            c.data = wq[wq_pos].second;
+            ++wq_pos;
+        } else if (r.chance(40)) {  // a stray write into the inactive bank
+            c.we = true;
+            c.addr = static_cast<unsigned>(r.range(0, C::TBL_DEPTH - 1));
+            c.data = r.chance(8) ? (r.chance(2) ? wmax : wmin) : r.range(wmin, wmax);
+        }
+        if (h.p > pmax) h.p = pmax;
+        if (h.p < pmin) h.p = pmin;
+        const lx::error_map::out_t o = m.step(lx::pos_t(h.p), h.homed, c);
+        t.rows.push_back({h.p, i64(h.homed), i64(c.map_en), i64(c.bank_sel), c.geom[0].origin.to_int64(),
+                          static_cast<int64_t>(c.geom[0].spacing_log2.to_uint64()),
+                          static_cast<int64_t>(c.geom[0].n_points.to_uint64()), c.geom[1].origin.to_int64(),
+                          static_cast<int64_t>(c.geom[1].spacing_log2.to_uint64()),
+                          static_cast<int64_t>(c.geom[1].n_points.to_uint64()), i64(c.we),
+                          static_cast<int64_t>(c.addr.to_uint64()), c.data.to_int64(), o.corr.to_int64(),
+                          o.delta.to_int64(), i64(o.active), i64(o.in_range), i64(o.clamped), i64(o.cfg_err)});
+    };
+    auto done = [&]() { return t.rows.size() >= end; };
+    auto go = [&](int64_t target, int64_t speed) {  // lands on target exactly
+        if (target > pmax) target = pmax;
+        if (target < pmin) target = pmin;
+        while (h.p != target && !done()) {
+            const int64_t d = target - h.p;
+            h.p += d > speed ? speed : (d < -speed ? -speed : d);
+            call();
+        }
+    };
+    // table words of one kind: 0 smooth walk, 1 full-range noise, 2 alternating extremes, 3 constant
+    auto words = [&](int kind, size_t n) {
+        std::vector<int64_t> w(n);
+        const int64_t slope = int64_t{1} << r.range(2, 20);
+        int64_t v = r.range(wmin / 2, wmax / 2);
+        const bool start = r.chance(2);
+        const int64_t cst = r.range(wmin, wmax);
+        for (size_t i = 0; i < n; ++i) {
+            if (kind == 0) {
+                v += r.range(-slope, slope);
+                v = v < wmin ? wmin : (v > wmax ? wmax : v);
+                w[i] = v;
+            } else if (kind == 1) {
+                w[i] = r.range(wmin, wmax);
+            } else if (kind == 2) {
+                w[i] = ((i & 1) != 0) == start ? wmax : wmin;
+            } else {
+                w[i] = cst;
+            }
+            if (r.chance(60)) w[i] = r.chance(2) ? wmax : wmin;
+        }
+        return w;
+    };
+    auto queue_all = [&](const std::vector<int64_t>& w, size_t first) {
+        wq.clear();
+        wq_pos = 0;
+        for (size_t i = 0; i < w.size(); ++i) wq.push_back({static_cast<unsigned>(first + i), w[i]});
+    };
+    auto valid_geom = [&](int k, int n) {
+        lx::error_map_geom g;
+        g.spacing_log2 = static_cast<unsigned>(k);
+        g.n_points = static_cast<unsigned>(n);
+        g.origin = h.p + r.range(-(int64_t{1} << (k + 3)), int64_t{1} << (k + 3));
+        return g;
+    };
+    auto random_n = [&]() -> int {
+        const int64_t c = r.range(0, 7);
+        return static_cast<int>(c < 2   ? 2
+                                : c < 4 ? C::TBL_DEPTH
+                                : c < 6 ? r.range(3, 40)
+                                        : r.range(41, C::TBL_DEPTH - 1));
+    };
+    auto bad_geom = [&](lx::error_map_geom& g) {
+        switch (r.range(0, 3)) {
+            case 0: g.spacing_log2 = static_cast<unsigned>(r.range(0, C::K_MIN - 1)); break;
+            case 1: g.spacing_log2 = static_cast<unsigned>(r.range(C::K_MAX + 1, 31)); break;
+            case 2: g.n_points = static_cast<unsigned>(r.range(0, 1)); break;
+            default: g.n_points = static_cast<unsigned>(r.range(C::TBL_DEPTH + 1, 4095)); break;
+        }
+    };
+    // a sweep of the selected bank's table: from below it to both ends (exactly), beyond, back
+    auto sweep = [&](int64_t calls_per_span) {
+        const lx::error_map_geom& g = h.r.geom[h.r.bank_sel ? 1 : 0];
+        const int64_t o = g.origin.to_int64(), span = map_span(g), s = int64_t{1} << g.spacing_log2.to_uint();
+        const int64_t speed = 1 + span / calls_per_span;
+        go(o - r.range(1, 3 * s), speed);
+        go(o, speed);
+        go(o + span, speed);
+        go(o + span + r.range(1, 3 * s), speed);
+        go(o + r.range(0, span), speed);
+    };
+
+    // A: bank 0 selected and inactive while bank 1 is written in full
+    h.r.bank_sel = false;
+    queue_all(words(static_cast<int>(r.range(0, 3)), C::TBL_DEPTH), 0);
+    while (wq_pos < wq.size() && !done()) {
+        if (r.chance(150)) {  // one reason to be inactive, changed now and then
+            h.homed = r.chance(2);
+            h.r.map_en = !h.homed || r.chance(2);
+            h.r.geom[0] = valid_geom(static_cast<int>(r.range(4, 20)), random_n());
+            if (h.homed || r.chance(2)) bad_geom(h.r.geom[0]);
+            if (h.homed && h.r.map_en && lx::error_map_geom_ok(h.r.geom[0])) h.r.map_en = false;
+        }
+        h.p += r.range(-50, 50);
+        call();
+    }
+    // B: bank 1 active and swept while bank 0 is written in full
+    h.r.geom[1] = valid_geom(static_cast<int>(r.range(4, 12)), C::TBL_DEPTH);
+    h.r.geom[1].origin = h.p - 100;
+    h.r.bank_sel = true;
+    h.r.map_en = true;
+    h.homed = true;
+    queue_all(words(static_cast<int>(r.range(0, 3)), C::TBL_DEPTH), 0);
+    while (wq_pos < wq.size() && !done()) sweep(r.range(100, 600));
+    // C: every spacing, alternating banks
+    for (int k = C::K_MIN; k <= C::K_MAX && !done(); ++k) {
+        const int nb = h.r.bank_sel ? 0 : 1;  // the inactive bank
+        const int n = k % 3 == 0 ? 2 : k % 3 == 1 ? C::TBL_DEPTH : static_cast<int>(r.range(3, C::TBL_DEPTH - 1));
+        h.r.geom[nb] = valid_geom(k, n);
+        const std::vector<int64_t> w = words(static_cast<int>(r.range(0, 3)), static_cast<size_t>(r.range(2, 40)));
+        queue_all(w, static_cast<size_t>(r.range(0, n - 1)) % static_cast<size_t>(C::TBL_DEPTH - w.size()));
+        while (wq_pos < wq.size() && !done()) {
+            h.p += r.range(-20, 20);
+            call();
+        }
+        h.r.bank_sel = nb == 1;
+        call();
+        sweep(r.range(20, 80));
+        sweep(r.range(20, 80));
+    }
+    // D: random operation
+    skip_one_in = 4;
+    long long idle = r.range(50, 400), seg_left = 0, dwell = 0;
+    int64_t target = h.p, speed = 1;
+    while (!done()) {
+        // host: reload of the inactive bank, then the flip
+        if (wq_pos >= wq.size() && idle > 0 && --idle == 0) {
+            const int nb = h.r.bank_sel ? 0 : 1;
+            const int n = random_n();
+            h.r.geom[nb] = valid_geom(static_cast<int>(r.range(C::K_MIN, C::K_MAX)), n);
+            if (r.chance(6)) bad_geom(h.r.geom[nb]);
+            const size_t cnt = static_cast<size_t>(r.range(1, n < 300 ? n : 300));
+            queue_all(words(static_cast<int>(r.range(0, 3)), cnt),
+                      static_cast<size_t>(r.range(0, C::TBL_DEPTH - static_cast<int64_t>(cnt))));
+            if (r.chance(2)) wq.push_back({static_cast<unsigned>(n - 1), r.chance(2) ? wmax : wmin});  // last point
+            idle = -r.range(1, 60);  // < 0: flip that many calls after the last word
+        } else if (wq_pos >= wq.size() && idle < 0 && ++idle == 0) {
+            h.r.bank_sel = !h.r.bank_sel;
+            idle = r.range(50, 700);
+            seg_left = 0;  // new motion towards the new table
+        }
+        if (r.chance(1500)) h.r.map_en = !h.r.map_en;
+        if (!h.r.map_en && r.chance(30)) h.r.map_en = true;  // mostly enabled, short pulses
+        if (r.chance(1200)) h.homed = !h.homed;
+        if (!h.homed && r.chance(30)) h.homed = true;
+        const lx::error_map_geom& g = h.r.geom[h.r.bank_sel ? 1 : 0];
+        if (r.chance(3000) && lx::error_map_geom_ok(g))  // the selected bank's origin moves while active
+            h.r.geom[h.r.bank_sel ? 1 : 0].origin = g.origin.to_int64() + r.range(-300, 300);
+        // motion
+        if (seg_left-- <= 0) {
+            const int64_t o = g.origin.to_int64(), span = map_span(g);
+            const int64_t s = lx::error_map_geom_ok(g) ? int64_t{1} << g.spacing_log2.to_uint() : 16;
+            const int64_t kind = r.range(0, 19);
+            target = kind == 0 ? (r.chance(2) ? pmax : pmin)
+                     : kind < 3 ? (r.chance(2) ? o : o + span)
+                                : r.range(o - span / 4 - 3 * s, o + span + span / 4 + 3 * s);
+            speed = r.chance(3) ? r.range(1, 3) : r.range(1, 4 * s);
+            if (kind == 0) {
+                h.p = target;  // a jump to a 38-bit extreme
+            } else if (r.chance(60)) {
+                h.p = r.range(pmin, pmax) / (r.chance(2) ? 1 : 1024);  // a jump
+            } else if (h.p < o - 8 * (span + s) || h.p > o + 9 * (span + s)) {
+                h.p = r.range(o - 4 * s, o + span + 4 * s);  // far away after a jump: back near the table
+            }
+            seg_left = kind == 0 ? r.range(1, 8) : r.range(20, 600);
+            dwell = r.chance(5) ? r.range(1, 40) : 0;
+        }
+        if (dwell > 0) {
+            --dwell;
+            call();
+        } else if (h.p == target) {
+            call();
+        } else {
+            const int64_t d = target - h.p;
+            h.p += d > speed ? speed : (d < -speed ? -speed : d);
+            call();
+        }
+    }
+    return t;
+}
+
 bool mkdir_p(const std::string& dir) {
     std::string acc;
     for (size_t i = 0; i <= dir.size(); ++i) {
@@ -526,6 +764,7 @@ int main(int argc, char** argv) {
     tables.push_back(rephase_stress(r, calls));
     tables.push_back(dds_stress(r, calls));
     tables.push_back(top_stress(r, 3 * calls));
+    tables.push_back(error_map_stress(r, calls));
     for (const vec_table& t : tables) {
         std::string err;
         if (!lxt::vec_check(t, &err)) {

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "golden/dds_sincos.h"
+#include "golden/error_map.h"
 #include "golden/input_filter.h"
 #include "golden/output_pacer.h"
 #include "golden/pulse_multiplier.h"
@@ -299,6 +300,14 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 out("a_pos", W::W_POS, true), out("b_pos", W::W_POS, true), out("c_pos", W::W_POS, true),
                 out("z_pos", W::W_POS, true), out("rep_mark", 1), out("map_cfg_err", 1), out("corr", EM::W_C, true),
                 out("map_delta", EM::W_CDELTA, true)};
+    // the map block at its own ports (hls/error_map.h, rtl_ref/error_map.v): position p (the
+    // multiplier's comp), homed, the map registers of both banks and the table write port
+    if (block == "error_map")
+        return {in("p", W::W_POS, true), in("homed", 1), in("map_en", 1), in("bank_sel", 1),
+                in("origin0", W::W_POS, true), in("k0", EM::W_K), in("n0", EM::W_N), in("origin1", W::W_POS, true),
+                in("k1", EM::W_K), in("n1", EM::W_N), in("we", 1), in("addr", EM::W_ADDR), in("data", EM::W_CORR, true),
+                out("corr", EM::W_C, true), out("delta", EM::W_CDELTA, true), out("active", 1), out("in_range", 1),
+                out("clamped", 1), out("cfg_err", 1)};
     return {};
 }
 
@@ -321,6 +330,253 @@ bool vec_check(const vec_table& t, std::string* err) {
     return true;
 }
 
+namespace {
+
+// The map block alone, golden and hls side by side: one call, one row of error_map.{csv,hex}.
+struct map_pair {
+    golden::error_map g;
+    lx::error_map h;
+
+    static lx::error_map_regs hls_regs(const golden::error_map_regs& r) {
+        lx::error_map_regs x;
+        x.map_en = r.map_en;
+        x.bank_sel = r.bank_sel;
+        for (int b = 0; b < 2; ++b) {
+            x.geom[b].origin = lx::pos_t(r.geom[b].origin);
+            x.geom[b].spacing_log2 = lx::error_map_cfg::k_t(r.geom[b].spacing_log2);
+            x.geom[b].n_points = lx::error_map_cfg::n_t(r.geom[b].n_points);
+        }
+        x.we = r.we;
+        x.addr = lx::error_map_cfg::addr_t(r.addr);
+        x.data = lx::error_map_cfg::word_t(r.data);
+        return x;
+    }
+
+    // false (and err) if hls and golden differ
+    bool step(int64_t p, bool homed, const golden::error_map_regs& r, vec_table& t, std::string* err) {
+        const golden::error_map::out o = g.step(p, homed, r);
+        const lx::error_map::out_t ho = h.step(lx::pos_t(p), homed, hls_regs(r));
+        if (o.corr != ho.corr.to_int64() || o.delta != ho.delta.to_int64() || o.active != ho.active ||
+            o.in_range != ho.in_range || o.clamped != ho.clamped || o.cfg_err != ho.cfg_err) {
+            if (err) *err = "error_map hls/golden mismatch at call " + std::to_string(t.rows.size());
+            return false;
+        }
+        t.rows.push_back({p, homed, r.map_en, r.bank_sel, r.geom[0].origin, r.geom[0].spacing_log2, r.geom[0].n_points,
+                          r.geom[1].origin, r.geom[1].spacing_log2, r.geom[1].n_points, r.we, r.addr, r.data, o.corr,
+                          o.delta, o.active, o.in_range, o.clamped, o.cfg_err});
+        return true;
+    }
+};
+
+// The directed tail of error_map.{csv,hex}: kErrorMapTailCalls more calls of the same two map
+// instances after the scenario (one stream, row k = call k), for what the scenario's map never
+// does (it stays inside one 64-point table of bank 1). Every word read while active is written
+// first (the RTL RAM has no power-up contents), and the RTL sees the same inputs.
+//   0  bank 0 selected with an invalid geometry while enabled (cfg_err): bank 1 reloaded, 64 words
+//      (extremes, exact half-count ties, noise), one per call
+//   1  bank 1 (origin 0, k 8, n 64) active: sweep from below the table to beyond it and back,
+//      landing on both ends exactly; meanwhile bank 0 (inactive) gets 48 words with extremes
+//   2  flip to bank 0 (origin 9001, k 5, n 48) below its table; sweep across it; meanwhile 2048
+//      words into bank 1 (the inactive bank); extreme positions and origins (39-bit offset)
+//   3  invalid geometries of the selected bank while enabled (k 3, 21, 31; n 0, 1, 2049, 4095),
+//      each followed by recovery; an invalid one with map_en = 0 (no cfg_err)
+//   4  homed and map_en toggles, single-call pulses included
+//   5  every spacing k = 4 .. 20 in bank 1 (n = 2, 64 or 2048 by turns): flip to it below the
+//      table, travel to both ends exactly and beyond, reverse, flip back
+//   6  a flip every 1..5 calls while moving across both tables; then a random walk with random
+//      flips and toggles up to the tail length
+bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint64_t seed, vec_table& t,
+              std::string* err) {
+    constexpr int32_t kMax = (1 << 23) - 1, kMin = -(1 << 23);
+    std::mt19937_64 rng(seed ^ 0x656d61705f7461ULL);
+    auto urange = [&rng](int64_t lo, int64_t hi) {
+        return lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
+    };
+    const size_t end = t.rows.size() + static_cast<size_t>(kErrorMapTailCalls);
+    std::vector<std::pair<int, int32_t>> wq;  // words to write, one per call, into bank !bank_sel
+    size_t wq_pos = 0;
+    bool ok = true;
+    auto call = [&]() {
+        if (!ok || t.rows.size() >= end) return;
+        golden::error_map_regs c = r;
+        c.we = wq_pos < wq.size();
+        c.addr = c.we ? wq[wq_pos].first : 0;
+        c.data = c.we ? wq[wq_pos].second : 0;
+        if (c.we) ++wq_pos;
+        ok = m.step(p, homed, c, t, err);
+    };
+    auto go = [&](int64_t target, int64_t speed) {  // lands on target exactly
+        while (ok && p != target && t.rows.size() < end) {
+            const int64_t d = target - p;
+            p += d > speed ? speed : (d < -speed ? -speed : d);
+            call();
+        }
+    };
+    auto dwell = [&](int n) {
+        for (int i = 0; i < n; ++i) call();
+    };
+    auto queue = [&](const std::vector<int32_t>& words) {
+        wq.clear();
+        wq_pos = 0;
+        for (size_t a = 0; a < words.size(); ++a) wq.push_back({static_cast<int>(a), words[a]});
+    };
+
+    // 0: reload bank 1 while bank 0 is selected with an invalid geometry (enabled: cfg_err)
+    r.map_en = true;
+    r.bank_sel = false;
+    r.geom[0] = {0, 0, 2048};
+    r.geom[1] = {0, 8, 64};
+    std::vector<int32_t> t1(64);
+    for (int i = 0; i < 64; ++i)
+        t1[static_cast<size_t>(i)] = i < 4 ? ((i & 1) ? kMin : kMax)
+                                           : i < 16 ? (2 * (i - 10) + 1) * 128  // exact half counts
+                                                    : static_cast<int32_t>(urange(-(1 << 20), 1 << 20));
+    queue(t1);
+    homed = true;
+    for (int i = 0; i < 64; ++i) {
+        p += (i & 8) ? 3 : -3;
+        call();
+    }
+
+    // 1: bank 1 active; both ends exactly, beyond, reversals; bank 0 written meanwhile
+    r.bank_sel = true;
+    r.geom[0] = {9001, 5, 48};
+    std::vector<int32_t> t0(48);
+    for (int i = 0; i < 48; ++i)
+        t0[static_cast<size_t>(i)] = i % 6 == 0 ? kMax : i % 6 == 3 ? kMin : static_cast<int32_t>(urange(kMin, kMax));
+    queue(t0);
+    go(-700, 53);
+    dwell(3);
+    go(0, 50);
+    dwell(2);
+    go(63 * 256, 37);
+    dwell(2);
+    go(63 * 256 + 900, 61);
+    go(8000, 200);
+    for (int j = 0; j < 6; ++j) go(8000 + ((j & 1) ? 1 : -1) * (300 + 17 * j), 3);
+
+    // 2: flip to bank 0 (p below its table); 2048 words into bank 1 meanwhile
+    std::vector<int32_t> tb(2048);
+    {
+        int64_t v = urange(kMin / 2, kMax / 2);
+        for (size_t a = 0; a < tb.size(); ++a) {
+            v += urange(-(1 << 14), 1 << 14);
+            v = v < kMin ? kMin : (v > kMax ? kMax : v);
+            tb[a] = static_cast<int32_t>(a % 97 == 5 ? kMax : a % 97 == 50 ? kMin : v);
+        }
+        tb[0] = kMin;
+        tb[2047] = kMax;
+    }
+    queue(tb);
+    r.bank_sel = false;
+    dwell(2);
+    go(9001, 7);
+    go(9001 + 47 * 32, 3);
+    go(9001 + 47 * 32 + 200, 5);
+    go(9400, 11);
+    const int64_t pmax = (int64_t(1) << 37) - 1, pmin = -(int64_t(1) << 37);
+    p = pmin;
+    dwell(2);
+    p = pmax;
+    dwell(2);
+    r.geom[0].origin = pmax;
+    p = pmin;
+    dwell(2);
+    r.geom[0].origin = pmin;
+    p = pmax;
+    dwell(2);
+    r.geom[0].origin = 9001;
+    p = 9500;
+    dwell(2);
+
+    // 3: invalid geometries of the selected bank while enabled, each followed by recovery
+    const golden::error_map_geom g0 = r.geom[0];
+    const int bad_k[] = {3, 21, 31}, bad_n[] = {0, 1, 2049, 4095};
+    for (int k : bad_k) {
+        r.geom[0].spacing_log2 = k;
+        go(p + 20, 3);
+        r.geom[0] = g0;
+        go(p - 17, 3);
+    }
+    for (int n : bad_n) {
+        r.geom[0].n_points = n;
+        go(p + 20, 3);
+        r.geom[0] = g0;
+        go(p - 17, 3);
+    }
+    r.map_en = false;
+    r.geom[0].spacing_log2 = 3;
+    dwell(6);
+    r.geom[0] = g0;
+    dwell(3);
+    r.map_en = true;
+
+    // 4: homed and map_en toggles while moving
+    const int pulse[] = {5, 1, 3, 1, 2};
+    for (int w : pulse) {
+        homed = false;
+        go(p + 3 * w, 3);
+        homed = true;
+        go(p + 7, 1);
+        r.map_en = false;
+        go(p - 2 * w, 2);
+        r.map_en = true;
+        go(p - 5, 1);
+    }
+    homed = false;
+    r.map_en = false;
+    dwell(2);
+    homed = true;
+    r.map_en = true;
+    dwell(2);
+
+    // 5: every spacing in bank 1 (written above: drain the queue first)
+    while (ok && wq_pos < wq.size() && t.rows.size() < end) {
+        p += urange(-9, 9);
+        p = p < 8500 ? 8500 : (p > 10700 ? 10700 : p);
+        call();
+    }
+    for (int k = 4; k <= 20; ++k) {
+        const int n = k % 3 == 0 ? 2 : (k % 3 == 1 ? 2048 : 64);
+        const int64_t span = int64_t(n - 1) << k;
+        const int64_t speed = 1 + span / 40;
+        r.geom[1] = {p + 100 + k, k, n};
+        const int64_t o = r.geom[1].origin;
+        r.bank_sel = true;
+        dwell(1);
+        go(o, speed);
+        go(o + span, speed);
+        go(o + span + (int64_t(1) << k) + 33, speed);
+        go(o + span / 3 + 5, speed);
+        r.bank_sel = false;
+        dwell(2);
+    }
+
+    // 6: rapid flips between the two tables, then a random walk to the tail length
+    r.geom[1] = {-3000, 6, 2048};
+    p = 8000;
+    long long next_flip = 0;
+    while (ok && p < 11000 && t.rows.size() < end) {
+        if (next_flip-- <= 0) {
+            r.bank_sel = !r.bank_sel;
+            next_flip = urange(0, 4);
+        }
+        p += 9;
+        call();
+    }
+    while (ok && t.rows.size() < end) {
+        if (rng() % 200 == 0) r.bank_sel = !r.bank_sel;
+        if (rng() % 300 == 0) homed = !homed;
+        if (rng() % 300 == 0) r.map_en = !r.map_en;
+        p += urange(-40, 40);
+        p = p < 7000 ? 7000 : (p > 12000 ? 12000 : p);
+        call();
+    }
+    return ok;
+}
+
+}  // namespace
+
 bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
     std::mt19937_64 rng(seed);
     axis_settings s;
@@ -340,6 +596,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     vec_table pac{"output_pacer", vec_layout("output_pacer"), {}};
     vec_table rep{"rephase", vec_layout("rephase"), {}};
     vec_table dds{"dds_sincos", vec_layout("dds_sincos"), {}};
+    vec_table emp{"error_map", vec_layout("error_map"), {}};
 
     // standalone blocks, golden and hls, fed with the chain's inter-block signals
     golden::input_filter g_flt, g_swf;
@@ -354,6 +611,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     lx::rephase h_rep;
     golden::dds_sincos g_dds;
     lx::dds_sincos h_dds;
+    map_pair emap;
     g_flt.reset();
     g_swf.reset();
     g_dec.reset();
@@ -368,6 +626,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     int prev_step = 0, prev_pstep = 0, prev_ostep = 0;
     int64_t prev_delta = 0;
     bool prev_lerr = false;
+    int64_t prev_comp = 0;
+    bool prev_homed = false;
     golden::input_filter::out prev_sw{false, false, false};
 
     int64_t n = 0;
@@ -516,14 +776,21 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
                             ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
         dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, 0, 0, 0, so.sin, so.cos});
+        // the map reads the multiplier's comp and the rephase homed of the previous call (the
+        // registered outputs, as hls/axis_core.h) with the map registers of this call
+        if (!emap.step(prev_comp, prev_homed, gr.emap, emp, err)) return false;
         prev_step = dq.step;
         prev_delta = mo.delta;
         prev_pstep = po.pstep;
         prev_ostep = ro.ostep;
         prev_lerr = dq.lerr;
         prev_sw = swo;
+        prev_comp = mo.comp;
+        prev_homed = ro.homed;
     }
-    tables = {flt, dec, mul, pac, rep, dds, top};
+    // error_map.{csv,hex} only: the same map instances continue with a directed tail
+    if (!map_tail(emap, prev_comp, prev_homed, to_golden(ax.settings()).emap, seed, emp, err)) return false;
+    tables = {flt, dec, mul, pac, rep, dds, emp, top};
     return true;
 }
 
