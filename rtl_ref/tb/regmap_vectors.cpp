@@ -39,21 +39,18 @@
 //        DIR/laserax_axil.hex (--calls: rows of laserax_axil, default 50000 as in scripts/rtl_sim.sh;
 //        with much fewer, e.g. 15000, there is no room for two period changes and a homing with
 //        each period after them, and the program fails saying so)
-#include <sys/stat.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
 #include <deque>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "hls/axis_core.h"
+#include "rtl_ref/tb/vecgen.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/regmap.h"
 #include "tools/common/vectors.h"
@@ -63,21 +60,13 @@ namespace {
 namespace rm = lxt::regmap;
 using lxt::vec_column;
 using lxt::vec_table;
+using vecgen::rng_t;
 
 constexpr int kAddrW = 12;  // ADDR_W of the slave in the testbenches
 constexpr uint32_t kAddrMask = (1u << kAddrW) - 1;
 
 int64_t i64(bool b) { return b ? 1 : 0; }
 
-struct rng_t {
-    std::mt19937_64 g;
-    explicit rng_t(uint64_t seed) : g(seed) {}
-    uint64_t u() { return g(); }
-    int64_t range(int64_t lo, int64_t hi) {  // uniform in [lo, hi]
-        return lo + static_cast<int64_t>(g() % static_cast<uint64_t>(hi - lo + 1));
-    }
-    bool chance(uint64_t one_in) { return g() % one_in == 0; }
-};
 
 // ---- the bus ---------------------------------------------------------------------------------
 
@@ -712,64 +701,13 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
     return true;
 }
 
-bool mkdir_p(const std::string& dir) {
-    std::string acc;
-    for (size_t i = 0; i <= dir.size(); ++i) {
-        if (i == dir.size() || dir[i] == '/') {
-            if (!acc.empty() && mkdir(acc.c_str(), 0755) != 0 && errno != EEXIST) return false;
-        }
-        if (i < dir.size()) acc += dir[i];
-    }
-    return true;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string dir;
-    uint64_t seed = 5;
-    long long calls = 50000;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string a = argv[i];
-        if (a == "--out") dir = argv[i + 1];
-        else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 0);
-        else if (a == "--calls") calls = std::strtoll(argv[i + 1], nullptr, 0);
-        else {
-            std::fprintf(stderr, "regmap_vectors: unknown option %s\n", a.c_str());
-            return 2;
-        }
-    }
-    if (dir.empty() || argc % 2 == 0 || calls < 1000 || calls > 10000000) {
-        std::fprintf(stderr, "usage: regmap_vectors --out DIR [--seed N] [--calls 1000..1e7]\n");
-        return 2;
-    }
-    if (!mkdir_p(dir)) {
-        std::fprintf(stderr, "regmap_vectors: cannot create %s: %s\n", dir.c_str(), std::strerror(errno));
-        return 1;
-    }
-    const std::string command = "regmap_vectors --out " + dir + " --seed " + std::to_string(seed) + " --calls " +
-                                std::to_string(calls) + " (expected columns from lxt::reg_image and hls/)";
-    rng_t r(seed);
-    std::vector<vec_table> tables(2);
-    std::string err;
-    if (!regs_set(r, tables[0], &err) || !axil_set(r, calls, tables[1], &err)) {
-        std::fprintf(stderr, "regmap_vectors: %s\n", err.c_str());
-        return 1;
-    }
-    for (const vec_table& t : tables) {
-        if (!lxt::vec_check(t, &err)) {
-            std::fprintf(stderr, "regmap_vectors: %s\n", err.c_str());
-            return 1;
-        }
-        const std::string path = dir + "/" + t.block + ".hex";
-        std::ofstream f(path);
-        f << lxt::vec_to_hex(t, command);
-        if (!f) {
-            std::fprintf(stderr, "regmap_vectors: cannot write %s\n", path.c_str());
-            return 1;
-        }
-        std::printf("  %-24s %8zu calls, %2zu fields -> %s\n", t.block.c_str(), t.rows.size(), t.cols.size(),
-                    path.c_str());
-    }
-    return 0;
+    return vecgen::run(argc, argv, "regmap_vectors", 5, 50000, "lxt::reg_image and hls/",
+                       [](rng_t& r, long long calls, std::vector<vec_table>* tables, std::string* err) {
+                           tables->resize(2);
+                           return regs_set(r, (*tables)[0], err) && axil_set(r, calls, (*tables)[1], err);
+                       });
 }

@@ -32,38 +32,26 @@
 // the table port `tbl_we, tbl_addr, tbl_data` of dds_sincos and laserax_top.
 //
 // Usage: rtl_stress_vectors --out DIR [--seed N] [--calls N]   writes DIR/<block>_stress.hex
-#include <sys/stat.h>
 
-#include <cerrno>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
-#include <cstring>
-#include <fstream>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "hls/axis_core.h"
+#include "rtl_ref/tb/vecgen.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/vectors.h"
 
 namespace {
 
 using lxt::vec_table;
+using vecgen::rng_t;
 
 int64_t i64(bool b) { return b ? 1 : 0; }
 
-struct rng_t {
-    std::mt19937_64 g;
-    explicit rng_t(uint64_t seed) : g(seed) {}
-    uint64_t u() { return g(); }
-    // uniform in [lo, hi]
-    int64_t range(int64_t lo, int64_t hi) {
-        return lo + static_cast<int64_t>(g() % static_cast<uint64_t>(hi - lo + 1));
-    }
-    bool chance(uint64_t one_in) { return g() % one_in == 0; }
-};
 
 const int kPresets[] = {256, 320, 512, 640, 1280, 4096, 8, 64, 1024};
 
@@ -718,68 +706,20 @@ vec_table error_map_stress(rng_t& r, long long calls) {
     return t;
 }
 
-bool mkdir_p(const std::string& dir) {
-    std::string acc;
-    for (size_t i = 0; i <= dir.size(); ++i) {
-        if (i == dir.size() || dir[i] == '/') {
-            if (!acc.empty() && mkdir(acc.c_str(), 0755) != 0 && errno != EEXIST) return false;
-        }
-        if (i < dir.size()) acc += dir[i];
-    }
-    return true;
-}
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    std::string dir;
-    uint64_t seed = 4;
-    long long calls = 30000;
-    for (int i = 1; i + 1 < argc; i += 2) {
-        const std::string a = argv[i];
-        if (a == "--out") dir = argv[i + 1];
-        else if (a == "--seed") seed = std::strtoull(argv[i + 1], nullptr, 0);
-        else if (a == "--calls") calls = std::strtoll(argv[i + 1], nullptr, 0);
-        else {
-            std::fprintf(stderr, "rtl_stress_vectors: unknown option %s\n", a.c_str());
-            return 2;
-        }
-    }
-    if (dir.empty() || argc % 2 == 0 || calls < 1000 || calls > 10000000) {
-        std::fprintf(stderr, "usage: rtl_stress_vectors --out DIR [--seed N] [--calls 1000..1e7]\n");
-        return 2;
-    }
-    if (!mkdir_p(dir)) {
-        std::fprintf(stderr, "rtl_stress_vectors: cannot create %s: %s\n", dir.c_str(), std::strerror(errno));
-        return 1;
-    }
-    const std::string command = "rtl_stress_vectors --out " + dir + " --seed " + std::to_string(seed) +
-                                " --calls " + std::to_string(calls) + " (expected columns from hls/)";
-    rng_t r(seed);
-    std::vector<vec_table> tables;
-    tables.push_back(filter_stress(r, calls));
-    tables.push_back(decoder_stress(r, calls));
-    tables.push_back(multiplier_stress(r, calls));
-    tables.push_back(pacer_stress(r, calls));
-    tables.push_back(rephase_stress(r, calls));
-    tables.push_back(dds_stress(r, calls));
-    tables.push_back(top_stress(r, 3 * calls));
-    tables.push_back(error_map_stress(r, calls));
-    for (const vec_table& t : tables) {
-        std::string err;
-        if (!lxt::vec_check(t, &err)) {
-            std::fprintf(stderr, "rtl_stress_vectors: %s\n", err.c_str());
-            return 1;
-        }
-        const std::string path = dir + "/" + t.block + ".hex";
-        std::ofstream f(path);
-        f << lxt::vec_to_hex(t, command);
-        if (!f) {
-            std::fprintf(stderr, "rtl_stress_vectors: cannot write %s\n", path.c_str());
-            return 1;
-        }
-        std::printf("  %-24s %8zu calls, %2zu fields -> %s\n", t.block.c_str(), t.rows.size(), t.cols.size(),
-                    path.c_str());
-    }
-    return 0;
+    return vecgen::run(argc, argv, "rtl_stress_vectors", 4, 30000, "hls/",
+                       [](rng_t& r, long long calls, std::vector<vec_table>* tables, std::string*) {
+                           tables->push_back(filter_stress(r, calls));
+                           tables->push_back(decoder_stress(r, calls));
+                           tables->push_back(multiplier_stress(r, calls));
+                           tables->push_back(pacer_stress(r, calls));
+                           tables->push_back(rephase_stress(r, calls));
+                           tables->push_back(dds_stress(r, calls));
+                           tables->push_back(top_stress(r, 3 * calls));
+                           tables->push_back(error_map_stress(r, calls));
+                           return true;
+                       });
 }
