@@ -1,18 +1,21 @@
-// pulse_multiplier.h — raw laser counts to compensated output counts.
+// pulse_multiplier.h — raw laser counts to compensated output counts, by addition.
 //
-// DESIGN §4.3. After every call comp = floor((N * R + OFF) / 2^R_FRAC), a pure function of the
-// current raw count N, ratio R and offset OFF (the comp_offset register, Q32.32 output counts:
-// the thermal origin term -K168 * K169 * 1e-5). The accumulator acc holds N*R exactly and is
-// updated with one multiply and one add per call ("multiplication and addition"):
-//     acc' = acc + (N' - N) * R' + N * (R' - R)            (= N' * R')
-// where N' - N is the step, or the step minus sign*2^W_RAW when the raw counter wraps (that term
-// is a shift, not a multiply). The offset is added after the accumulator (one more adder, no
-// state). A ratio or offset change therefore re-bases the position exactly and the jump leaves
-// as `delta`, to be paced out by the output_pacer; nothing depends on the path.
+// DESIGN §4.3 (normative; the golden model follows its Definition, this file its Hardware form).
+// The exact value V = N * R + OFF (Q.32 output counts) is kept as V = acc + T (mod 2^70):
+//   acc  the step accumulator: +-R per raw count (a 32-bit fraction adder `lo` with a registered
+//        carry into the 38-bit integer part `hi` one call later) — no multiplier in the loop;
+//   T    the base: the offset plus the re-base products N0 * (R' - R), changed only by the
+//        re-base sequencer.
+// A ratio / offset change starts a re-base: steps count at the new ratio from the start call on,
+// and a serial shift-and-add multiplier (one bit of N0 per call, 39-bit adder) forms N0 * dR over
+// 32 calls; X = T + dOFF and T_new = X + P follow in 18-bit quarters; T is replaced K_REBASE = 40 calls after
+// the start, from when V = N * R' + OFF' exactly again (the re-base theorem, DESIGN §4.3).
+// Output pipeline: stage 2 hi += inc + c, carry of lo + T_lo; stage 3 comp_int = hi + T_hi + c2;
+// stage 4 comp and delta = comp_int - comp. comp/delta of call t are those of the step of call
+// t - L_MUL (L_MUL = 3).
 //
-// Widths: N 32 signed, R 37 unsigned (Q5.32), R'-R 38 signed, acc 70 signed, OFF 64 signed,
-// comp 38 signed: |N*R| < 2^68 and |OFF| <= 2^63, so acc + OFF < 2^69 fits W_ACC and the comp
-// (< 2^37) fits W_POS. Latency: 1 call (step in, comp/delta out).
+// Widths (pulse_multiplier_cfg): N 32, R 37 unsigned, dR 38 signed, acc/T/P 70, lo 32, hi 38,
+// serial partial product 39, dOFF 65 (two 33-bit halves), T additions in 18-bit quarters.
 #ifndef LASERAX_HLS_PULSE_MULTIPLIER_H
 #define LASERAX_HLS_PULSE_MULTIPLIER_H
 
@@ -21,22 +24,52 @@
 namespace lx {
 
 struct pulse_multiplier_cfg {
-    static constexpr int W_RAW = axis_widths::W_RAW;
-    static constexpr int R_FRAC = axis_widths::R_FRAC;
-    static constexpr int W_RATIO = axis_widths::W_RATIO;
-    static constexpr int W_DRATIO = W_RATIO + 1;  // R' - R, signed
-    static constexpr int W_ACC = axis_widths::W_ACC;
-    static constexpr int W_OFFSET = axis_widths::W_OFFSET;
+    static constexpr int W_RAW = axis_widths::W_RAW;          // 32
+    static constexpr int R_FRAC = axis_widths::R_FRAC;        // 32
+    static constexpr int W_RATIO = axis_widths::W_RATIO;      // 37
+    static constexpr int R_INT = axis_widths::R_INT;          // 5
+    static constexpr int W_ACC = axis_widths::W_ACC;          // 70
+    static constexpr int W_OFFSET = axis_widths::W_OFFSET;    // 64
+    static constexpr int W_POS = axis_widths::W_POS;          // 38
+    static constexpr int W_HI = W_ACC - R_FRAC;               // 38, integer part of acc and T
+    static constexpr int W_DRATIO = W_RATIO + 1;              // 38, R' - R, signed
+    static constexpr int W_PP = W_DRATIO + 1;                 // 39, serial partial product
+    static constexpr int W_DOFF = W_OFFSET + 1;               // 65, OFF' - OFF, signed
+    static constexpr int W_DOFF_H = (W_DOFF + 1) / 2;         // 33, halves of the dOFF subtraction
+    static constexpr int N_TQ = 4;                            // T additions in four quarters
+    static constexpr int W_TQ = (W_ACC + N_TQ - 1) / N_TQ;    // 18 bits (the last 16)
+    static constexpr int W_INC = W_HI + 1;                    // 39, increment of hi per call
+    static constexpr int K_REBASE = 40;                       // calls from a start to the new T
+    static constexpr int L_MUL = 3;                           // extra calls of output latency
+    static constexpr int MUL_STEPS = W_RAW;                   // 32 serial multiply calls
+    static constexpr int C_DOFF0 = 1, C_DOFF1 = 2;            // sequencer call numbers (cnt)
+    static constexpr int C_MUL0 = 2;                          // first multiply call (the RTL
+                                                              // registers its addend in call 1)
+    static constexpr int C_X0 = C_DOFF1 + 1;                  // 3..6: X = T + dOFF, by quarters
+    static constexpr int C_ADD0 = C_MUL0 + MUL_STEPS;         // 34..37: T_new = X + P, by quarters
+    static constexpr int C_ADD3 = C_ADD0 + N_TQ - 1;          // 37
+    static constexpr int W_CNT = clog2p1(K_REBASE);           // 6
+    static constexpr long long N_MAX = (1LL << (W_RAW - 1)) - 1;  // ends of the raw count
+    static constexpr long long N_MIN = -(1LL << (W_RAW - 1));
+
+    using lo_t = uint<R_FRAC>;
+    using hi_t = sint<W_HI>;
+    using inc_t = sint<W_INC>;
     using dratio_t = sint<W_DRATIO>;
-    using nwide_t = sint<W_RAW + 1>;  // N + step before the wrap
+    using pp_t = sint<W_PP>;
+    using doffh_t = uint<W_DOFF_H>;
+    using tq_t = uint<W_TQ>;
+    using cnt_t = uint<W_CNT>;
+    using nwide_t = sint<W_RAW + 1>;   // N + step before the wrap
+    using carry_t = uint<1>;
 };
-// |acc| <= 2^(W_RAW-1) * (2^W_RATIO - 1) < 2^(W_RAW+W_RATIO-1) and |OFF| <= 2^(W_OFFSET-1):
-// their sum must fit W_ACC, and the comp (sum >> R_FRAC) must fit W_POS.
 static_assert(pulse_multiplier_cfg::W_OFFSET < pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO - 1 &&
                   pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO + 1 <= pulse_multiplier_cfg::W_ACC,
-              "acc + offset must fit the accumulator width");
-static_assert(pulse_multiplier_cfg::W_ACC - pulse_multiplier_cfg::R_FRAC <= axis_widths::W_POS,
-              "comp must fit W_POS");
+              "N*R + OFF must fit the accumulator width");
+static_assert(pulse_multiplier_cfg::W_HI == pulse_multiplier_cfg::W_POS, "comp is the integer part");
+static_assert(pulse_multiplier_cfg::C_ADD3 < pulse_multiplier_cfg::K_REBASE, "T_new ready before it is applied");
+static_assert(pulse_multiplier_cfg::C_X0 + pulse_multiplier_cfg::N_TQ <= pulse_multiplier_cfg::C_ADD0,
+              "X = T + dOFF done before X + P starts");
 
 class pulse_multiplier {
 public:
@@ -50,49 +83,234 @@ public:
 
     void reset() {
         n_ = 0;
-        r_ = 0;
-        acc_ = 0;
+        r_use_ = 0;
+        off_tgt_ = 0;
+        lo_ = 0;
+        c_ = 0;
+        inc_ = 0;
+        load_wrap_increments();  // of R = 0
+        hi_ = 0;
+        c2_ = 0;
+        ci_ = 0;
         comp_ = 0;
+        t_lo_ = 0;
+        t_hi_ = 0;
+        t_hi_d_ = 0;
+        busy_ = false;
+        pend_ = false;
+        cnt_ = 0;
+        n0_ = 0;
+        dr_ = 0;
+        pp_ = 0;
+        pl_ = 0;
+        off_old_ = 0;
+        doff_lo_ = 0;
+        doff_hi_ = 0;
+        dcy_ = 0;
+        x_ = 0;
+        y_ = 0;
+        acy_ = 0;
     }
 
-    // Preset port (position load, also used by the testbenches to reach the 32-bit wrap without
-    // 2^31 calls): N and R are loaded and acc = N * R is formed with the same multiplier; comp is
-    // formed with the offset given (the next call's delta is measured from it).
+    // Preset port (testbench aid, not in the RTL): N and the pair (R, OFF) are loaded, the
+    // sequencer is idle, acc = N * R and T = OFF (formed here with a multiply: not hardware), and
+    // every pipeline stage holds comp_int of the preset value, so the next call's delta is
+    // measured from it.
     void preset(raw_t n, ratio_t ratio, offset_t offset = 0) {
+        reset();
         n_ = n;
-        r_ = ratio;
-        acc_ = acc_t(n) * ratio;
-        comp_ = acc_t(acc_ + acc_t(offset)) >> cfg::R_FRAC;
+        r_use_ = ratio;
+        load_wrap_increments();
+        off_tgt_ = offset;
+        const acc_t acc = acc_t(n) * acc_t(ratio);
+        lo_ = cfg::lo_t(acc);
+        hi_ = cfg::hi_t(acc >> cfg::R_FRAC);
+        const acc_t t = acc_t(offset);
+        t_lo_ = cfg::lo_t(t);
+        t_hi_ = cfg::hi_t(t >> cfg::R_FRAC);
+        t_hi_d_ = t_hi_;
+        const acc_t v = acc_t(acc + t);
+        ci_ = pos_t(v >> cfg::R_FRAC);
+        c2_ = carry32(lo_, t_lo_);
+        comp_ = ci_;
     }
 
     out_t step(step_t step, ratio_t ratio, offset_t offset) {
+        // ---- stage 4: outputs (comp_int of three calls ago) --------------------------------
+        const delta_t delta_next = delta_t(ci_) - delta_t(comp_);
+        const pos_t comp_next = ci_;
+        // ---- stage 3: comp_int = hi + T_hi + carry(lo + T_lo), both halves of T of the same call
+        const pos_t ci_next = pos_t(hi_ + t_hi_d_ + c2_);
+        // ---- stage 2: integer part of acc, carry of the fraction plus T_lo (lo_ still holds
+        //      the fraction of the previous call: {hi_next, lo_} is acc of that call) ----------
+        const cfg::hi_t hi_next = cfg::hi_t(hi_ + inc_ + c_);
+        const cfg::carry_t c2_next = carry32(lo_, t_lo_);
+
+        // ---- stage 1: the step at the ratio in use (the target ratio before this call) --------
         const cfg::nwide_t n_sum = cfg::nwide_t(n_) + step;
         const raw_t n_next = n_sum;  // wraps at W_RAW bits
-        const cfg::dratio_t dr = cfg::dratio_t(ratio) - cfg::dratio_t(r_);
-        acc_t acc = acc_ + acc_t(n_) * dr;  // the one multiplier: re-base to the updated ratio
-        if (step > 0) acc = acc + acc_t(ratio);
-        if (step < 0) acc = acc - acc_t(ratio);
-        if (n_sum != cfg::nwide_t(n_next)) {
-            // Raw counter wrapped: N' = N + step -/+ 2^W_RAW, so subtract/add R' << W_RAW.
-            const acc_t wrap_term = acc_t(ratio) << cfg::W_RAW;
-            acc = (step > 0) ? acc_t(acc - wrap_term) : acc_t(acc + wrap_term);
+        // N wraps when it steps past an end: an equality test of N, not the carry of the adder
+        const bool wrap = (step > 0 && n_ == raw_t(cfg::N_MAX)) || (step < 0 && n_ == raw_t(cfg::N_MIN));
+        const cfg::lo_t r_frac = cfg::lo_t(r_use_);
+        const cfg::inc_t r_int = cfg::inc_t(r_use_ >> cfg::R_FRAC);  // -R_int - 1 is ~R_int: no adder
+        cfg::lo_t lo_next = lo_;
+        cfg::carry_t c_next = 0;
+        cfg::inc_t inc_next = 0;
+        if (step > 0) {
+            const uint<cfg::R_FRAC + 1> s = uint<cfg::R_FRAC + 1>(lo_) + r_frac;
+            lo_next = cfg::lo_t(s);
+            c_next = cfg::carry_t(s >> cfg::R_FRAC);
+            inc_next = r_int;
+        } else if (step < 0) {
+            const uint<cfg::R_FRAC + 1> s = uint<cfg::R_FRAC + 1>(lo_) + cfg::lo_t(~r_frac) + 1;
+            lo_next = cfg::lo_t(s);
+            c_next = cfg::carry_t(s >> cfg::R_FRAC);
+            inc_next = cfg::inc_t(-r_int - 1);
         }
-        const pos_t comp_next = acc_t(acc + acc_t(offset)) >> cfg::R_FRAC;  // floor: arithmetic shift
+        if (wrap) {
+            // N' = N + step -/+ 2^32: the integer part moves by -/+ R more (R << 32 in Q.32); the
+            // two increments were formed when the ratio was loaded, so this is a mux
+            inc_next = (step > 0) ? inc_wp_ : inc_wn_;
+        }
+
+        // ---- re-base sequencer: a running one (T applied in its last call), then a start -----
+        //      (pend_: the pair of the previous call differed from the target, registered compare)
+        cfg::lo_t t_lo_next = t_lo_;
+        cfg::hi_t t_hi_next = t_hi_;
+        if (busy_) sequencer_step(t_lo_next, t_hi_next);
+        const bool start = !busy_ && pend_;
+        if (start) {
+            n0_ = n_next;  // N after this call's step, which still counted at the old ratio
+            dr_ = cfg::dratio_t(cfg::dratio_t(ratio) - cfg::dratio_t(r_use_));
+            off_old_ = off_tgt_;
+            pp_ = 0;
+            pl_ = 0;
+            r_use_ = ratio;
+            load_wrap_increments();
+            off_tgt_ = offset;
+            busy_ = true;
+            cnt_ = 1;
+        }
+        pend_ = !start && (ratio != r_use_ || offset != off_tgt_);
+
+        // ---- register update --------------------------------------------------------------
         out_t o;
         o.comp = comp_next;
-        o.delta = delta_t(comp_next) - delta_t(comp_);
-        n_ = n_next;
-        r_ = ratio;
-        acc_ = acc;
+        o.delta = delta_next;
         comp_ = comp_next;
+        ci_ = ci_next;
+        hi_ = hi_next;
+        c2_ = c2_next;
+        t_hi_d_ = t_hi_;
+        t_lo_ = t_lo_next;
+        t_hi_ = t_hi_next;
+        n_ = n_next;
+        lo_ = lo_next;
+        c_ = c_next;
+        inc_ = inc_next;
         return o;
     }
 
 private:
+    // R_int - R and ~R_int + R: the increments of the integer part at a wrap of N (step +1 / -1)
+    void load_wrap_increments() {
+        const cfg::inc_t r_int = cfg::inc_t(r_use_ >> cfg::R_FRAC);
+        const cfg::inc_t r_all = cfg::inc_t(r_use_);
+        inc_wp_ = cfg::inc_t(r_int - r_all);
+        inc_wn_ = cfg::inc_t(cfg::inc_t(-r_int - 1) + r_all);
+    }
+
+    // Quarter q of a + b (18 bits, carry in from quarter q - 1, carry out registered) into dst.
+    uint<cfg::W_ACC> add_quarter(uint<cfg::W_ACC> dst, uint<cfg::W_ACC> a, uint<cfg::W_ACC> b, int q) {
+        const int sh = q * cfg::W_TQ;
+        const uint<cfg::W_TQ + 1> sum =
+            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? cfg::carry_t(0) : acy_);
+        acy_ = cfg::carry_t(sum >> cfg::W_TQ);
+        const uint<cfg::W_ACC> mask = uint<cfg::W_ACC>(cfg::tq_t(~cfg::tq_t(0))) << sh;
+        return (dst & ~mask) | ((uint<cfg::W_ACC>(cfg::tq_t(sum)) << sh) & mask);
+    }
+
+    static cfg::carry_t carry32(cfg::lo_t a, cfg::lo_t b) {
+        const uint<cfg::R_FRAC + 1> s = uint<cfg::R_FRAC + 1>(a) + b;
+        return cfg::carry_t(s >> cfg::R_FRAC);
+    }
+
+    // One call of a running re-base (cnt_ = calls since the start call, 1..K_REBASE).
+    void sequencer_step(cfg::lo_t& t_lo_next, cfg::hi_t& t_hi_next) {
+        const int cnt = cnt_.to_int();
+        using doffw_t = uint<cfg::W_DOFF_H + 1>;
+        // dOFF = OFF_new - OFF_old (65 bits) in two 33-bit halves: low half (+1 of the negation),
+        // then high half with the registered carry.
+        const acc_t off_new_x = acc_t(off_tgt_);  // the new target (no start while busy)
+        const acc_t off_old_x = acc_t(off_old_);
+        if (cnt == cfg::C_DOFF0) {
+            const doffw_t s = doffw_t(cfg::doffh_t(off_new_x)) + cfg::doffh_t(~cfg::doffh_t(off_old_x)) + 1;
+            doff_lo_ = cfg::doffh_t(s);
+            dcy_ = cfg::carry_t(s >> cfg::W_DOFF_H);
+        } else if (cnt == cfg::C_DOFF1) {
+            const cfg::doffh_t a = cfg::doffh_t(off_new_x >> cfg::W_DOFF_H);
+            const cfg::doffh_t b = cfg::doffh_t(~cfg::doffh_t(off_old_x >> cfg::W_DOFF_H));
+            doff_hi_ = cfg::doffh_t(doffw_t(a) + b + dcy_);
+        }
+        // serial signed multiply P = N0 * dR: bit i of N0 per call, the sign bit subtracts
+        if (cnt >= cfg::C_MUL0 && cnt < cfg::C_MUL0 + cfg::MUL_STEPS) {
+            const int i = cnt - cfg::C_MUL0;
+            const bool bit = (n0_ & 1) != 0;  // N0 shifts right: bit i of the snapshot
+            n0_ = raw_t(n0_ >> 1);
+            cfg::pp_t add = 0;
+            if (bit) add = (i == cfg::MUL_STEPS - 1) ? cfg::pp_t(-cfg::pp_t(dr_)) : cfg::pp_t(dr_);
+            const cfg::pp_t sum = cfg::pp_t(pp_ + add);
+            pl_ = cfg::lo_t((pl_ >> 1) | (cfg::lo_t(sum & 1) << (cfg::R_FRAC - 1)));
+            pp_ = cfg::pp_t(sum >> 1);  // arithmetic shift
+        }
+        // (compositions in an unsigned W_ACC: two's complement bit patterns, no signed shifts)
+        using uacc_t = uint<cfg::W_ACC>;
+        const uacc_t t_x = (uacc_t(t_hi_) << cfg::R_FRAC) | uacc_t(t_lo_);
+        const uacc_t p_x = (uacc_t(pp_) << cfg::R_FRAC) | uacc_t(pl_);
+        const uacc_t d_x = (uacc_t(sint<cfg::W_DOFF_H>(doff_hi_)) << cfg::W_DOFF_H) | uacc_t(doff_lo_);
+        // X = T + dOFF (calls C_X0..), then T_new = X + P (calls C_ADD0..), one 18-bit quarter
+        // per call with a registered carry
+        if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ) x_ = add_quarter(x_, t_x, d_x, cnt - cfg::C_X0);
+        if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3) y_ = add_quarter(y_, x_, p_x, cnt - cfg::C_ADD0);
+        if (cnt == cfg::K_REBASE) {
+            const uacc_t tn = y_;
+            t_lo_next = cfg::lo_t(tn);
+            t_hi_next = cfg::hi_t(tn >> cfg::R_FRAC);
+            busy_ = false;
+            cnt_ = 0;
+        } else {
+            cnt_ = cnt_ + 1;
+        }
+    }
+
+    // stage 1
     raw_t n_;
-    ratio_t r_;
-    acc_t acc_;
+    ratio_t r_use_;
+    offset_t off_tgt_;
+    cfg::lo_t lo_;
+    cfg::carry_t c_;
+    cfg::inc_t inc_;
+    cfg::inc_t inc_wp_, inc_wn_;  // increments at a wrap of N, formed when the ratio is loaded
+    // stages 2..4
+    cfg::hi_t hi_;
+    cfg::carry_t c2_;
+    pos_t ci_;
     pos_t comp_;
+    // base T (two halves) and the delayed high half used by stage 3
+    cfg::lo_t t_lo_;
+    cfg::hi_t t_hi_, t_hi_d_;
+    // re-base sequencer
+    bool busy_, pend_;
+    cfg::cnt_t cnt_;
+    raw_t n0_;
+    cfg::dratio_t dr_;
+    cfg::pp_t pp_;
+    cfg::lo_t pl_;
+    offset_t off_old_;
+    cfg::doffh_t doff_lo_, doff_hi_;
+    cfg::carry_t dcy_;
+    uint<cfg::W_ACC> x_, y_;  // T + dOFF, then T_new (built a quarter per call)
+    cfg::carry_t acy_;
 };
 
 }  // namespace lx

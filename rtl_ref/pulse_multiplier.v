@@ -1,16 +1,23 @@
-// pulse_multiplier.v — raw laser counts to compensated output counts.
+// pulse_multiplier.v — raw laser counts to compensated output counts, by addition.
 //
-// Reference RTL of hls/pulse_multiplier.h (DESIGN §4.3). One rising clock edge = one call of
-// pulse_multiplier::step(); o_comp / o_delta are registers holding the out_t of that call.
-// Synchronous active-high reset = pulse_multiplier::reset() (all zero).
+// Reference RTL of hls/pulse_multiplier.h (DESIGN §4.3, "Hardware form"). One rising clock edge =
+// one call of pulse_multiplier::step(); o_comp / o_delta are registers holding the out_t of that
+// call. Synchronous active-high reset = pulse_multiplier::reset() (all zero).
 //
-// After every call comp = floor((N * R + OFF) / 2^32) for the register values N, R after the call
-// and the comp_offset input OFF (Q32.32 output counts, signed). The accumulator holds N*R exactly
-// and is updated with one multiply and one add per call:
-//     acc' = acc + N * (R' - R) + step * R'  [- sign(step) * (R' << 32) when N wraps]  (= N' * R')
-// and the offset is added after it (comp' = (acc' + OFF) >> 32; one adder, no state).
-// Widths: N 32 signed, R 37 unsigned (Q5.32), R'-R 38 signed, acc 70 signed, OFF 64 signed,
-// comp 38 signed, delta 39 signed. Latency: 1 call.
+// V = N * R + OFF (Q.32 output counts) is kept as acc + T (mod 2^70):
+//   stage 1  lo += +-R[31:0] (32-bit adder, carry registered), inc = +-R[36:32] (or the wrap
+//            term), N += step;                       -- the only loop-carried adder besides hi
+//   stage 2  hi += inc + c (38 bits), c2 = carry(lo + T[31:0])
+//   stage 3  ci = hi + T_hi_d + c2   (= floor(V / 2^32) of the step three calls back)
+//   stage 4  comp = ci, delta = ci - comp
+// A ratio / offset change is seen by a registered 101-bit compare (pend); the next idle call
+// starts a re-base: the target pair is loaded (steps from then on count at the new ratio),
+// N0 = N' and dR = R' - R are snapshot, a serial shift-and-add multiplier forms P = N0 * dR over
+// 32 calls (39-bit adder, addend registered a call ahead), dOFF = OFF' - OFF in two 33-bit
+// halves, X = T + dOFF and T_new = X + P in 18-bit quarters, and T = T_new K_REBASE = 40 calls
+// after the start.
+// No multiplier and no adder wider than 39 bits anywhere. Latency: comp/delta of call t are
+// those of the step of call t - 3.
 // (The preset port of the C++ model is a testbench aid and is not part of this RTL.)
 `timescale 1ns / 1ps
 `default_nettype none
@@ -19,70 +26,243 @@ module pulse_multiplier (
     input  wire               i_clk,
     input  wire               i_rst,    // synchronous, active high: pulse_multiplier::reset()
     input  wire signed [1:0]  i_step,   // raw count step from the decoder: -1, 0, +1
-    input  wire [36:0]        i_ratio,  // ratio register R' (Q5.32, unsigned)
-    input  wire signed [63:0] i_comp_offset,  // offset register OFF (Q32.32 output counts)
-    output wire signed [37:0] o_comp,   // floor((N' * R' + OFF) / 2^32)
+    input  wire [36:0]        i_ratio,  // ratio in force R (Q5.32, unsigned)
+    input  wire signed [63:0] i_comp_offset,  // offset in force OFF (Q32.32 output counts)
+    output wire signed [37:0] o_comp,   // floor(V / 2^32) of the step of three calls back
     output wire signed [38:0] o_delta   // comp' - comp
 );
 
-    // ---- fixed widths (hls: pulse_multiplier_cfg, axis_widths) -------------------------------
-    localparam integer W_RAW    = 32;                    // raw count N, signed, wraps
-    localparam integer R_FRAC   = 32;                    // ratio fraction bits
-    localparam integer W_RATIO  = 37;                    // R_INT + R_FRAC, unsigned
-    localparam integer W_DRATIO = W_RATIO + 1;           // R' - R, signed
-    localparam integer W_ACC    = W_RAW + W_RATIO + 1;   // 70, exact N*R, signed (and N*R + OFF)
-    localparam integer W_OFFSET = 64;                    // comp offset, Q32.32, signed
-    localparam integer W_POS    = W_ACC - R_FRAC;        // 38
-    localparam integer W_DELTA  = W_POS + 1;             // 39
+    // ---- widths (hls: pulse_multiplier_cfg) ---------------------------------------------------
+    localparam integer W_RAW    = 32;
+    localparam integer R_FRAC   = 32;
+    localparam integer W_RATIO  = 37;
+    localparam integer R_INT    = W_RATIO - R_FRAC;      // 5
+    localparam integer W_ACC    = 70;
+    localparam integer W_OFFSET = 64;
+    localparam integer W_HI     = W_ACC - R_FRAC;        // 38 (= W_POS)
+    localparam integer W_DRATIO = W_RATIO + 1;           // 38
+    localparam integer W_PP     = W_DRATIO + 1;          // 39
+    localparam integer W_DOFF_H = 33;                    // halves of the 65-bit dOFF
+    localparam integer W_TQ     = 18;                    // quarters of the T additions
+    localparam integer W_INC    = W_HI + 1;              // 39
+    localparam integer K_REBASE = 40;
+    localparam integer C_DOFF0  = 1, C_DOFF1 = 2;
+    localparam integer C_MUL0   = 2, MUL_STEPS = W_RAW;  // call 1 registers the first addend
+    localparam integer C_ADD0   = C_MUL0 + MUL_STEPS;    // 34..37: T_new = X + P
+    localparam integer C_X0     = C_DOFF1 + 1;           // 3..6: X = T + dOFF
+    localparam integer W_CNT    = 6;
 
-    // ---- registers ---------------------------------------------------------------------------
-    reg signed [W_RAW-1:0]   n_q;
-    reg        [W_RATIO-1:0] r_q;
-    reg signed [W_ACC-1:0]   acc_q;
-    reg signed [W_POS-1:0]   comp_q;
-    reg signed [W_DELTA-1:0] delta_q;
+    // ---- registers ----------------------------------------------------------------------------
+    // stage 1
+    reg signed [W_RAW-1:0]    n_q;
+    reg        [W_RATIO-1:0]  r_use_q;     // target ratio (used by the steps)
+    reg signed [W_OFFSET-1:0] off_tgt_q;   // target offset
+    reg        [R_FRAC-1:0]   lo_q;
+    reg                       c_q;
+    reg signed [W_INC-1:0]    inc_q;
+    reg signed [W_INC-1:0]    wrap_pos_q, wrap_neg_q;  // R_int - R and ~R_int + R of the target ratio
+    // stages 2..4
+    reg signed [W_HI-1:0]     hi_q;
+    reg                       c2_q;
+    reg signed [W_HI-1:0]     ci_q;
+    reg signed [W_HI-1:0]     comp_q;
+    reg signed [W_HI:0]       delta_q;
+    // base T and the delayed high half
+    reg        [R_FRAC-1:0]   t_lo_q;
+    reg signed [W_HI-1:0]     t_hi_q, t_hi_d_q;
+    // re-base sequencer
+    reg                       busy_q, pend_q;
+    reg        [W_CNT-1:0]    cnt_q;
+    reg                       f_doff0_q, f_doff1_q, f_pre0_q, f_mul_q, f_mul_pre_q;  // cnt decoded
+    reg        [W_PP-1:0]     addend_q;    // addend of the next multiply step
+    reg                       cin_q;
+    reg        [3:0]          f_x_q, f_y_q;   // quarter of X = T + dOFF / of T_new = X + P
+    reg                       f_last_q;
+    reg        [W_RAW-1:0]    n0_q;        // shifts right, one bit per multiply call
+    reg signed [W_DRATIO-1:0] dr_q;
+    reg signed [W_PP-1:0]     pp_q;
+    reg        [R_FRAC-1:0]   pl_q;
+    reg signed [W_OFFSET-1:0] off_old_q;
+    reg        [W_DOFF_H-1:0] doff_lo_q, doff_hi_q;
+    reg                       dcy_q;
+    reg        [W_ACC-1:0]    x_q, y_q;
+    reg        [2:0]          xc_q, yc_q;  // carry out of each quarter, its own flip-flop
 
-    // ---- next state --------------------------------------------------------------------------
-    wire signed [W_RAW:0]    n_sum  = {n_q[W_RAW-1], n_q} + {{(W_RAW-1){i_step[1]}}, i_step};
-    wire signed [W_RAW-1:0]  n_next = n_sum[W_RAW-1:0];          // wraps at W_RAW bits
-    wire                     n_wrap = n_sum[W_RAW] != n_sum[W_RAW-1];
-    wire signed [W_DRATIO-1:0] dr   = $signed({1'b0, i_ratio}) - $signed({1'b0, r_q});
-    // the one multiplier: re-base the accumulator to the new ratio (exact in W_ACC bits)
-    wire signed [W_ACC-1:0]  prod   = n_q * dr;
-    wire signed [W_ACC-1:0]  ratio_x = $signed({{(W_ACC-W_RATIO){1'b0}}, i_ratio});
-    // R' << W_RAW in W_ACC bits (the wrap term is a shift, not a multiply)
-    wire signed [W_ACC-1:0]  wrap_term = $signed({1'b0, i_ratio, {W_RAW{1'b0}}});
+    // 39-bit sum a + b + cin as carry-select (two 20/19-bit chains in parallel and a mux): used
+    // where a 39-bit result feeds more logic in the same call
+    function [38:0] add39_cs;
+        input [38:0] a, b;
+        input        cin;
+        reg   [20:0] lo;
+        reg   [18:0] h0, h1;
+        begin
+            lo = {1'b0, a[19:0]} + {1'b0, b[19:0]} + {20'd0, cin};
+            h0 = a[38:20] + b[38:20];
+            h1 = a[38:20] + b[38:20] + 19'd1;
+            add39_cs = {lo[20] ? h1 : h0, lo[19:0]};
+        end
+    endfunction
 
-    wire                     step_pos = !i_step[1] && i_step[0];   // step > 0
-    wire                     step_neg = i_step[1];                 // step < 0
+    // ---- stage 1: the step at the target ratio before this call ----------------------------------
+    wire step_pos = !i_step[1] && i_step[0];
+    wire step_neg = i_step[1];
+    // N + step (wraps), carry-select over two 16-bit halves
+    wire [16:0]             n_sum_l  = {1'b0, n_q[15:0]} + {1'b0, {14{i_step[1]}}, i_step};
+    wire [15:0]             n_sum_h0 = n_q[31:16] + {16{i_step[1]}};          // + sign extension
+    wire [15:0]             n_sum_h1 = n_q[31:16] + {16{i_step[1]}} + 16'd1;
+    wire signed [W_RAW-1:0] n_next = {n_sum_l[16] ? n_sum_h1 : n_sum_h0, n_sum_l[15:0]};
+    // N wraps when it steps past an end: an equality test of n_q (no carry chain in the path)
+    wire                    n_wrap = (step_pos && n_q == {1'b0, {(W_RAW-1){1'b1}}}) ||
+                                     (step_neg && n_q == {1'b1, {(W_RAW-1){1'b0}}});
+    wire [R_FRAC-1:0] r_frac = r_use_q[R_FRAC-1:0];
+    wire [R_FRAC-1:0] lo_add = step_pos ? r_frac : step_neg ? ~r_frac : {R_FRAC{1'b0}};
+    // 32-bit fraction adder as carry-select: the low half, and the high half for both carries
+    wire [16:0]       lo_sum_l  = {1'b0, lo_q[15:0]} + {1'b0, lo_add[15:0]} + {16'd0, step_neg};
+    wire [16:0]       lo_sum_h0 = {1'b0, lo_q[31:16]} + {1'b0, lo_add[31:16]};
+    wire [16:0]       lo_sum_h1 = {1'b0, lo_q[31:16]} + {1'b0, lo_add[31:16]} + 17'd1;
+    wire [R_FRAC:0]   lo_sum = {lo_sum_l[16] ? lo_sum_h1 : lo_sum_h0, lo_sum_l[15:0]};
+    // increment of the integer part: R_int, -R_int - 1 = ~R_int, and with a wrap of N the two
+    // values precomputed when the ratio was loaded (R_int - R, ~R_int + R): a mux, no adder
+    wire signed [W_INC-1:0] r_int_x = $signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]});
+    wire signed [W_INC-1:0] inc_d = step_pos ? (n_wrap ? wrap_pos_q : r_int_x) :
+                                    step_neg ? (n_wrap ? wrap_neg_q : ~r_int_x) : {W_INC{1'b0}};
+    wire signed [W_INC-1:0] in_int_x = $signed({{(W_INC-R_INT){1'b0}}, i_ratio[W_RATIO-1:R_FRAC]});
+    wire signed [W_INC-1:0] in_all_x = $signed({{(W_INC-W_RATIO){1'b0}}, i_ratio});
 
-    reg signed [W_ACC-1:0]   acc_d;
-    always @* begin
-        acc_d = acc_q + prod;
-        if (step_pos) acc_d = acc_d + ratio_x;
-        if (step_neg) acc_d = acc_d - ratio_x;
-        // raw counter wrapped: N' = N + step -/+ 2^W_RAW, so subtract/add R' << W_RAW
-        if (n_wrap) acc_d = step_pos ? acc_d - wrap_term : acc_d + wrap_term;
-    end
+    // ---- stages 2..4 ----------------------------------------------------------------------------
+    // (every adder below is split: carry-select halves of at most 20 bits)
+    wire [38:0]            hi_sum = add39_cs({inc_q[W_HI-1], inc_q[W_HI-1:0]}, {hi_q[W_HI-1], hi_q}, c_q);
+    wire signed [W_HI-1:0] hi_d = hi_sum[W_HI-1:0];
+    wire [16:0]            c2_l  = {1'b0, lo_q[15:0]} + {1'b0, t_lo_q[15:0]};
+    wire [16:0]            c2_h0 = {1'b0, lo_q[31:16]} + {1'b0, t_lo_q[31:16]};
+    wire [16:0]            c2_h1 = {1'b0, lo_q[31:16]} + {1'b0, t_lo_q[31:16]} + 17'd1;
+    wire                   c2_d  = c2_l[16] ? c2_h1[16] : c2_h0[16];   // carry of lo + T[31:0]
+    wire [38:0]            ci_sum = add39_cs({hi_q[W_HI-1], hi_q}, {t_hi_d_q[W_HI-1], t_hi_d_q}, c2_q);
+    wire signed [W_HI-1:0] ci_d = ci_sum[W_HI-1:0];
+    wire signed [W_HI:0]   delta_d = add39_cs({ci_q[W_HI-1], ci_q}, ~{comp_q[W_HI-1], comp_q}, 1'b1);
 
-    // N*R + OFF: |N*R| < 2^68, |OFF| <= 2^63, fits W_ACC
-    wire signed [W_ACC-1:0]   sum_d   = acc_d + {{(W_ACC-W_OFFSET){i_comp_offset[W_OFFSET-1]}}, i_comp_offset};
-    wire signed [W_POS-1:0]   comp_d  = sum_d[W_ACC-1:R_FRAC];   // floor: arithmetic shift
-    wire signed [W_DELTA-1:0] delta_d = {comp_d[W_POS-1], comp_d} - {comp_q[W_POS-1], comp_q};
+    // ---- re-base sequencer ----------------------------------------------------------------------
+    // Control: cnt (calls since the start) and its decoded values are registers computed from
+    // the next count, so every mux select below comes straight from a flip-flop.
+    wire last  = f_last_q;                                  // cnt == K_REBASE: T applied
+    wire start = (!busy_q || last) && pend_q;
+    wire pend_d = !start && ((i_ratio != r_use_q) || (i_comp_offset != off_tgt_q));
+    wire             busy_d = start || (busy_q && !last);
+    wire [W_CNT-1:0] cnt_d  = start ? {{(W_CNT-1){1'b0}}, 1'b1} : (busy_q && !last) ? cnt_q + 1'b1 : {W_CNT{1'b0}};
+    wire mul_on = f_mul_q;
+    // The addend of multiply step i (bit i of N0 times dR; the sign bit subtracts: + ~dR + 1) is
+    // registered one call ahead (addend_q, cin_q), so the 39-bit adder has flip-flop operands.
+    wire signed [W_PP-1:0] dr_x = {dr_q[W_DRATIO-1], dr_q};
+    wire [38:0] dr_sum = add39_cs({2'b00, i_ratio}, ~{2'b00, r_use_q}, 1'b1);  // R_in - R_tgt
+    wire signed [W_DRATIO-1:0] dr_d = dr_sum[W_DRATIO-1:0];
+    wire        [W_PP-1:0] addend_next = !n0_q[1] ? {W_PP{1'b0}} : f_mul_pre_q ? ~dr_x : dr_x;
+    wire signed [W_PP-1:0] pp_sum = pp_q + addend_q + {{(W_PP-1){1'b0}}, cin_q};
+    // dOFF = OFF_tgt - OFF_old (65 bits as 66) in two halves
+    wire [69:0] off_new_x = {{6{off_tgt_q[W_OFFSET-1]}}, off_tgt_q};
+    wire [69:0] off_old_x = {{6{off_old_q[W_OFFSET-1]}}, off_old_q};
+    wire [38:0] doff0_x = add39_cs({6'd0, off_new_x[W_DOFF_H-1:0]}, {6'd0, ~off_old_x[W_DOFF_H-1:0]}, 1'b1);
+    wire [38:0] doff1_x = add39_cs({6'd0, off_new_x[2*W_DOFF_H-1:W_DOFF_H]}, {6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, dcy_q);
+    wire [W_DOFF_H:0]   doff0_sum = doff0_x[W_DOFF_H:0];
+    wire [W_DOFF_H-1:0] doff1_sum = doff1_x[W_DOFF_H-1:0];
+    // X = T + dOFF (calls 3..6), then T_new = X + P (calls 34..37): one 18-bit quarter per call,
+    // each quarter its own adder (operands straight from flip-flops), carry registered
+    wire [W_ACC-1:0] t_x = {t_hi_q, t_lo_q};
+    wire [W_ACC-1:0] p_x = {pp_q[W_HI-1:0], pl_q};
+    wire [W_ACC-1:0] d_x = {{(W_ACC-2*W_DOFF_H){doff_hi_q[W_DOFF_H-1]}}, doff_hi_q, doff_lo_q};
+    wire [W_TQ:0]    xs0 = {1'b0, t_x[17:0]}  + {1'b0, d_x[17:0]};
+    wire [W_TQ:0]    xs1 = {1'b0, t_x[35:18]} + {1'b0, d_x[35:18]} + {{W_TQ{1'b0}}, xc_q[0]};
+    wire [W_TQ:0]    xs2 = {1'b0, t_x[53:36]} + {1'b0, d_x[53:36]} + {{W_TQ{1'b0}}, xc_q[1]};
+    wire [15:0]      xs3 = t_x[69:54] + d_x[69:54] + {15'd0, xc_q[2]};
+    wire [W_TQ:0]    ys0 = {1'b0, x_q[17:0]}  + {1'b0, p_x[17:0]};
+    wire [W_TQ:0]    ys1 = {1'b0, x_q[35:18]} + {1'b0, p_x[35:18]} + {{W_TQ{1'b0}}, yc_q[0]};
+    wire [W_TQ:0]    ys2 = {1'b0, x_q[53:36]} + {1'b0, p_x[53:36]} + {{W_TQ{1'b0}}, yc_q[1]};
+    wire [15:0]      ys3 = x_q[69:54] + p_x[69:54] + {15'd0, yc_q[2]};
 
     always @(posedge i_clk) begin
         if (i_rst) begin
-            n_q     <= {W_RAW{1'b0}};
-            r_q     <= {W_RATIO{1'b0}};
-            acc_q   <= {W_ACC{1'b0}};
-            comp_q  <= {W_POS{1'b0}};
-            delta_q <= {W_DELTA{1'b0}};
+            n_q <= 0; r_use_q <= 0; off_tgt_q <= 0; lo_q <= 0; c_q <= 1'b0; inc_q <= 0;
+            wrap_pos_q <= 0; wrap_neg_q <= {W_INC{1'b1}};  // the values for R = 0
+            hi_q <= 0; c2_q <= 1'b0; ci_q <= 0; comp_q <= 0; delta_q <= 0;
+            t_lo_q <= 0; t_hi_q <= 0; t_hi_d_q <= 0;
+            busy_q <= 1'b0; pend_q <= 1'b0; cnt_q <= 0;
+            f_doff0_q <= 1'b0; f_doff1_q <= 1'b0; f_mul_q <= 1'b0; f_mul_pre_q <= 1'b0; f_pre0_q <= 1'b0;
+            addend_q <= 0; cin_q <= 1'b0;
+            f_x_q <= 4'd0; f_y_q <= 4'd0; f_last_q <= 1'b0; n0_q <= 0; dr_q <= 0; pp_q <= 0; pl_q <= 0;
+            off_old_q <= 0; doff_lo_q <= 0; doff_hi_q <= 0; dcy_q <= 1'b0;
+            x_q <= 0; y_q <= 0; xc_q <= 3'd0; yc_q <= 3'd0;
         end else begin
-            n_q     <= n_next;
-            r_q     <= i_ratio;
-            acc_q   <= acc_d;
-            comp_q  <= comp_d;
-            delta_q <= delta_d;
+            // stage 4, 3, 2
+            comp_q   <= ci_q;
+            delta_q  <= delta_d;
+            ci_q     <= ci_d;
+            hi_q     <= hi_d;
+            c2_q     <= c2_d;
+            t_hi_d_q <= t_hi_q;
+            // stage 1
+            n_q   <= n_next;
+            lo_q  <= lo_sum[R_FRAC-1:0];
+            c_q   <= lo_sum[R_FRAC] & (step_pos | step_neg);
+            inc_q <= inc_d;
+            // running re-base
+            if (busy_q) begin
+                if (f_doff0_q) begin
+                    doff_lo_q <= doff0_sum[W_DOFF_H-1:0];
+                    dcy_q     <= doff0_sum[W_DOFF_H];
+                end
+                if (f_doff1_q) doff_hi_q <= doff1_sum;
+                if (f_pre0_q) begin  // addend of step 0 (bit 0 of N0 is never the sign bit)
+                    addend_q <= n0_q[0] ? dr_x : {W_PP{1'b0}};
+                    cin_q    <= 1'b0;
+                end
+                if (mul_on) begin
+                    addend_q <= addend_next;
+                    cin_q    <= n0_q[1] & f_mul_pre_q;
+                    pp_q <= pp_sum >>> 1;
+                    pl_q <= {pp_sum[0], pl_q[R_FRAC-1:1]};
+                    n0_q <= n0_q >> 1;
+                end
+                if (f_x_q[0]) begin x_q[17:0]  <= xs0[W_TQ-1:0]; xc_q[0] <= xs0[W_TQ]; end
+                if (f_x_q[1]) begin x_q[35:18] <= xs1[W_TQ-1:0]; xc_q[1] <= xs1[W_TQ]; end
+                if (f_x_q[2]) begin x_q[53:36] <= xs2[W_TQ-1:0]; xc_q[2] <= xs2[W_TQ]; end
+                if (f_x_q[3])       x_q[69:54] <= xs3;
+                if (f_y_q[0]) begin y_q[17:0]  <= ys0[W_TQ-1:0]; yc_q[0] <= ys0[W_TQ]; end
+                if (f_y_q[1]) begin y_q[35:18] <= ys1[W_TQ-1:0]; yc_q[1] <= ys1[W_TQ]; end
+                if (f_y_q[2]) begin y_q[53:36] <= ys2[W_TQ-1:0]; yc_q[2] <= ys2[W_TQ]; end
+                if (f_y_q[3])       y_q[69:54] <= ys3;
+                if (last) begin
+                    t_lo_q <= y_q[R_FRAC-1:0];
+                    t_hi_q <= y_q[W_ACC-1:R_FRAC];
+                end
+            end
+            busy_q       <= busy_d;
+            cnt_q        <= cnt_d;
+            f_doff0_q    <= busy_d && cnt_d == C_DOFF0;
+            f_doff1_q    <= busy_d && cnt_d == C_DOFF1;
+            f_pre0_q     <= busy_d && cnt_d == C_MUL0 - 1;
+            f_mul_q      <= busy_d && cnt_d >= C_MUL0 && cnt_d < C_MUL0 + MUL_STEPS;
+            f_mul_pre_q  <= busy_d && cnt_d == C_MUL0 + MUL_STEPS - 2;  // next step is the sign bit
+            f_x_q[0]     <= busy_d && cnt_d == C_X0;
+            f_x_q[1]     <= busy_d && cnt_d == C_X0 + 1;
+            f_x_q[2]     <= busy_d && cnt_d == C_X0 + 2;
+            f_x_q[3]     <= busy_d && cnt_d == C_X0 + 3;
+            f_y_q[0]     <= busy_d && cnt_d == C_ADD0;
+            f_y_q[1]     <= busy_d && cnt_d == C_ADD0 + 1;
+            f_y_q[2]     <= busy_d && cnt_d == C_ADD0 + 2;
+            f_y_q[3]     <= busy_d && cnt_d == C_ADD0 + 3;
+            f_last_q     <= busy_d && cnt_d == K_REBASE;
+            // start (after the running one: a start in its last call reloads the sequencer)
+            if (start) begin
+                n0_q      <= n_next;
+                dr_q      <= dr_d;
+                off_old_q <= off_tgt_q;
+                pp_q      <= 0;
+                pl_q      <= 0;
+                r_use_q   <= i_ratio;
+                wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b1);   // R_int - R
+                wrap_neg_q <= add39_cs(~in_int_x, in_all_x, 1'b0);   // ~R_int + R
+                off_tgt_q <= i_comp_offset;
+            end
+            pend_q <= pend_d;
         end
     end
 

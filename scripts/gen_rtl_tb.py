@@ -133,17 +133,32 @@ BLOCKS = [
         ],
         extra=dict(
             decls="""\
-    // pulse_multiplier::preset(N, R, OFF): N and R loaded, acc = N * R, comp = (acc + OFF) >> 32
-    reg signed [69:0] preset_acc, preset_sum;
+    // pulse_multiplier::preset(N, R, OFF): reset, then N, the target pair, acc = N * R, T = OFF and
+    // every pipeline stage holding floor((N * R + OFF) / 2^32)
+    reg signed [69:0] preset_acc, preset_t, preset_sum;
 """,
             apply="""\
             if (@preset@) begin
                 preset_acc = $signed(@preset_n@) * $signed({1'b0, @ratio@});
-                dut.n_q    = @preset_n@;
-                dut.r_q    = @ratio@;
-                dut.acc_q  = preset_acc;
-                preset_sum = preset_acc + {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
-                dut.comp_q = preset_sum[69:32];
+                preset_t   = {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
+                preset_sum = preset_acc + preset_t;
+                dut.busy_q = 1'b0; dut.pend_q = 1'b0; dut.cnt_q = 0;
+                dut.f_doff0_q = 1'b0; dut.f_doff1_q = 1'b0; dut.f_mul_q = 1'b0; dut.f_mul_pre_q = 1'b0; dut.f_pre0_q = 1'b0;
+                dut.f_x_q = 4'd0; dut.f_y_q = 4'd0; dut.f_last_q = 1'b0;
+                dut.c_q = 1'b0; dut.inc_q = 0;
+                dut.n_q       = @preset_n@;
+                dut.r_use_q   = @ratio@;
+                dut.wrap_pos_q = $signed({34'd0, i_ratio[36:32]}) - $signed({2'd0, i_ratio});
+                dut.wrap_neg_q = ~$signed({34'd0, i_ratio[36:32]}) + $signed({2'd0, i_ratio});
+                dut.off_tgt_q = @comp_offset@;
+                dut.lo_q      = preset_acc[31:0];
+                dut.hi_q      = preset_acc[69:32];
+                dut.t_lo_q    = preset_t[31:0];
+                dut.t_hi_q    = preset_t[69:32];
+                dut.t_hi_d_q  = preset_t[69:32];
+                dut.c2_q      = ({1'b0, preset_acc[31:0]} + {1'b0, preset_t[31:0]}) >> 32;
+                dut.ci_q      = preset_sum[69:32];
+                dut.comp_q    = preset_sum[69:32];
             end
 """),
     ),

@@ -277,14 +277,20 @@ int main(int argc, char** argv) {
                 golden::pulse_multiplier pm;
                 pm.reset();
                 int64_t n = 0;
+                constexpr int L = golden::pulse_multiplier::L_MUL;  // comp is L_MUL calls late (DESIGN 4.3)
+                int64_t nh[L + 1] = {};
                 int dir = (c % 2) ? 1 : -1;
                 bool ok = true;
                 for (int t = 0; t < 200000 && ok; ++t) {
                     int st = (rng() % 5 == 0) ? -dir : dir;
                     if (rng() % 7 == 0) st = 0;
                     n += st;
+                    for (int i = L; i > 0; --i) nh[i] = nh[i - 1];
+                    nh[0] = n;
                     const golden::pulse_multiplier::out o = pm.step(st, co.ratio, 0);  // offset: section 3b
-                    ok = o.comp == mult_out(n, co.ratio);
+                    // from reset the ratio is taken by the re-base that the first call triggers
+                    // (DESIGN 4.3): exact from call 1 + K_REBASE + L_MUL on
+                    if (t >= 1 + golden::pulse_multiplier::K_REBASE + L) ok = o.comp == mult_out(nh[L], co.ratio);
                 }
                 res.check(ok, "golden pulse_multiplier differs from floor(N R / 2^32)");
             }
@@ -336,8 +342,11 @@ int main(int argc, char** argv) {
             const int64_t hw = floor_div(i128(n) * i128(r) + off, i128(1) << 32);
             golden::pulse_multiplier pm;
             pm.reset();
-            // one golden call from N = 0 (exact range: |N| = 1)
-            res.check(pm.step(1, r, off).comp == floor_div(i128(r) + off, i128(1) << 32), "golden multiplier with offset");
+            // one golden step from N = 0 (exact range: |N| = 1), then the re-base of the reset pair
+            // settles: 1 + K_REBASE + L_MUL calls (DESIGN 4.3)
+            golden::pulse_multiplier::out pmo = pm.step(1, r, off);
+            for (int i = 0; i < 1 + golden::pulse_multiplier::K_REBASE + golden::pulse_multiplier::L_MUL; ++i) pmo = pm.step(0, r, off);
+            res.check(pmo.comp == floor_div(i128(r) + off, i128(1) << 32), "golden multiplier with offset");
             // distance of the exact value y = x + (x - origin) g from the nearest integer, in units of 1/den
             const i128 ynum = i128(x) * den + (i128(x) - origin) * es.k169_e7;
             const i128 frac = ynum - i128(floor_div(ynum, den)) * den;  // 0 .. den-1

@@ -172,6 +172,7 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     g_ = gold_.step(gp, gr_);
     ++calls_;
     if (!s_.comp_sync || s_.comp_commit) {
+        if (eff_ratio_ != s_.ratio || eff_offset_ != s_.comp_offset) settled_ = 0;
         eff_ratio_ = s_.ratio;
         eff_offset_ = s_.comp_offset;
     }
@@ -199,11 +200,13 @@ std::string dual_axis::integrity() {
         // (re)start: the chain is in reset; the controller re-synchronises at position 0
         dec_.reset(static_cast<int>(s_.period), 0);
         hist_n_ = 0;
+        settled_ = 0;
     } else {
         __extension__ typedef __int128 i128;
         const int64_t want_comp = static_cast<int64_t>(
-            (static_cast<i128>(prev_raw_) * static_cast<i128>(eff_ratio_) + static_cast<i128>(eff_offset_)) >> 32);
-        if (g_.comp_pos != want_comp)
+            (static_cast<i128>(raw_hist_[L_MUL]) * static_cast<i128>(eff_ratio_) + static_cast<i128>(eff_offset_)) >> 32);
+        ++settled_;
+        if (settled_ > 2 * golden::pulse_multiplier::K_REBASE + L_MUL && g_.comp_pos != want_comp)
             m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor((N*R + OFF) / 2^32) " + std::to_string(want_comp);
         else if (g_.paced_pos + g_.backlog != prev_comp_ + prev_corr_)
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
@@ -223,7 +226,8 @@ std::string dual_axis::integrity() {
     }
     prev_cfg_err_ = g_.cfg_err;
     prev_comp_ = g_.cfg_err ? 0 : g_.comp_pos;
-    prev_raw_ = g_.cfg_err ? 0 : g_.raw_count;
+    for (int i = L_MUL; i > 0; --i) raw_hist_[i] = raw_hist_[i - 1];
+    raw_hist_[0] = g_.cfg_err ? 0 : g_.raw_count;
     prev_corr_ = g_.cfg_err ? 0 : g_.corr;
     return m;
 }

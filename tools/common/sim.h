@@ -105,7 +105,11 @@ private:
 //     than one count (sin/cos decoding is skipped when amp * 2pi / P < 8 codes per count);
 //   * golden paced + backlog == golden comp_pos + corr of the previous call (the pacer loses
 //     nothing; corr is the error-map correction, 0 while the map is disabled);
-//   * golden comp_pos == floor(N * R / 2^32) with N the previous call's raw count (128-bit);
+//   * golden comp_pos == floor((N * R + OFF) / 2^32) with N the raw count of call t - 1 - L_MUL
+//     (128-bit), on every call once the pair (R, OFF) in force has been unchanged for
+//     2 * K_REBASE + L_MUL calls since its last change or the last restart (DESIGN 4.3: an update
+//     is taken at once or, during a re-base, at most K_REBASE calls later, and settles K_REBASE +
+//     L_MUL calls after it is taken);
 // so once the pacer has drained, what a controller decodes equals the compensated position plus
 // the error-map correction plus the rephase adjustment, exactly.
 class dual_axis {
@@ -137,7 +141,10 @@ private:
     int64_t out_hist_[2] = {0, 0};  // golden out_pos of calls t-1 and t-2
     int hist_n_ = 0;
     bool prev_cfg_err_ = true;
-    int64_t prev_comp_ = 0, prev_raw_ = 0, prev_corr_ = 0;
+    int64_t prev_comp_ = 0, prev_corr_ = 0;
+    static constexpr int L_MUL = golden::pulse_multiplier::L_MUL;
+    int64_t raw_hist_[L_MUL + 1] = {};  // golden raw_count of calls t-1 .. t-1-L_MUL
+    long long settled_ = 0;             // calls since the pair in force last changed (or restart)
     // ratio / comp_offset in force (DESIGN 4.7: loaded every call without comp_sync, else on comp_commit)
     uint64_t eff_ratio_ = golden::default_ratio();
     int64_t eff_offset_ = 0;
