@@ -16,7 +16,11 @@ For every block of rtl_ref/ and for the top (laserax_top):
     does not fail for it.
 
 Usage: synth_report.py --build BUILD_DIR [--out DIR] [--device hx8k|up5k] [--freq MHZ]
-                       [--jobs N] [--modules a,b,...] [--no-pnr] [--seed N]
+                       [--jobs N] [--modules a,b,...] [--no-pnr] [--seed N] [--limits FILE]
+With --limits (the CTest `synth_check`, label synth): after the table, every module named in FILE
+(rtl_ref/synth_limits.csv) is checked against its limits — synthesis must succeed, SB_LUT4 and
+block RAM at most the limit, and the P&R fmax at least the limit (where one is given) — and the
+script exits 1 on any violation. Static timing of a fixed seed is deterministic.
 The table table is printed and written to DIR/synth_report.md; logs and netlists stay in DIR.
 The table RAM image (P = 256, amp = 32767) is written by BUILD_DIR/lutgen into DIR.
 """
@@ -114,12 +118,16 @@ def do_module(m, a):
     dev = DEVICES[a.device]
     r = {"module": m}
     # generic
+    if a.no_generic:
+        r["g_lut"] = r["g_ff"] = "-"
     gjson = os.path.join(out, f"{m}.generic.json")
     script = (f"{read_verilog_cmd()}; hierarchy -check -top {m}; "
               f"synth -flatten -top {m} -run begin:fine; opt -fast -full; techmap; opt -fast; "
               f"abc -lut 4; opt -fast; check -assert; write_json {gjson}")
-    rc, _ = run(["yosys", "-q", "-p", script], out, os.path.join(out, f"{m}.generic.log"))
-    if rc == 0:
+    rc = 0 if a.no_generic else run(["yosys", "-q", "-p", script], out, os.path.join(out, f"{m}.generic.log"))[0]
+    if a.no_generic:
+        pass
+    elif rc == 0:
         _, c = cell_counts(gjson, m)
         r["g_lut"] = c.get("$lut", 0)
         r["g_ff"] = sum(n for t, n in c.items() if re.match(r"^\$_(S?DFF|DFFE|SDFFE|SDFFCE|ALDFF|DFFSR)", t))
@@ -189,6 +197,8 @@ def main():
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--modules", default=",".join(MODULES))
     ap.add_argument("--no-pnr", action="store_true", help="synthesis only")
+    ap.add_argument("--no-generic", action="store_true", help="skip the generic (technology-free) synthesis")
+    ap.add_argument("--limits", help="CSV of limits per module (rtl_ref/synth_limits.csv); exit 1 on a violation")
     ap.add_argument("--keep-taps", action="store_true",
                     help="connect the debug taps of laserax_top to the P&R harness too")
     a = ap.parse_args()
@@ -247,6 +257,63 @@ def main():
     print(text)
     with open(os.path.join(a.out, "synth_report.md"), "w") as f:
         f.write(text + "\n")
+    if a.limits:
+        sys.exit(check_limits(a.limits, results))
+
+
+def read_limits(path):
+    """{module: (max_lut, min_fmax or None, max_bram)} from a CSV with # comments."""
+    lim = {}
+    with open(path) as f:
+        for ln, line in enumerate(f, 1):
+            line = line.split("#", 1)[0].strip()
+            if not line:
+                continue
+            cols = [c.strip() for c in line.split(",")]
+            if len(cols) != 4:
+                sys.exit(f"{path}:{ln}: expected 'module, max_lut, min_fmax|-, max_bram'")
+            try:
+                lim[cols[0]] = (int(cols[1]), None if cols[2] == "-" else float(cols[2]), int(cols[3]))
+            except ValueError:
+                sys.exit(f"{path}:{ln}: bad number in '{line}'")
+    return lim
+
+
+def check_limits(path, results):
+    """Prints one line per checked module; returns the exit code (0 all within limits)."""
+    lim = read_limits(path)
+    bad = 0
+    print()
+    for m, (max_lut, min_fmax, max_bram) in lim.items():
+        r = results.get(m)
+        why = []
+        if r is None:
+            why.append("not run")
+        elif "i_err" in r or "g_err" in r:
+            why.append(r.get("i_err") or r.get("g_err"))
+        else:
+            if r["lut"] > max_lut:
+                why.append(f"SB_LUT4 {r['lut']} > {max_lut}")
+            if r["bram"] > max_bram:
+                why.append(f"BRAM {r['bram']} > {max_bram}")
+            if min_fmax is not None:
+                try:
+                    fm = float(r.get("fmax", ""))
+                except ValueError:
+                    fm = None
+                if fm is None:
+                    why.append(f"no fmax ({r.get('fmax', 'not run')})")
+                elif fm < min_fmax:
+                    why.append(f"fmax {fm:.1f} MHz < {min_fmax:g}")
+        if why:
+            bad += 1
+            print(f"synth_check: FAIL {m}: " + "; ".join(why))
+        else:
+            f = r.get("fmax", "-")
+            print(f"synth_check: ok   {m}: SB_LUT4 {r['lut']} <= {max_lut}, BRAM {r['bram']} <= {max_bram}" +
+                  (f", fmax {f} >= {min_fmax:g} MHz" if min_fmax is not None else f" (fmax {f}, not limited)"))
+    print(f"synth_check: {len(lim) - bad} passed, {bad} failed")
+    return 1 if bad else 0
 
 
 if __name__ == "__main__":
