@@ -32,7 +32,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl_ref")
 MODULES = ["input_filter", "quad_decoder", "pulse_multiplier", "output_pacer", "rephase",
-           "dds_sincos", "laserax_top"]
+           "dds_sincos", "laserax_top", "encoder_counter"]
 SOURCES = [os.path.join(RTL, m + ".v") for m in MODULES]
 DEVICES = {
     "hx8k": {"nextpnr": ["--hx8k", "--package", "ct256"], "synth": [], "lcs": 7680},
