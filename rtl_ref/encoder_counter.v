@@ -14,8 +14,8 @@
 //   do_rst = (rst_req && !rst_on_trig) || (pending && trig);  pending' = (rst_req && rst_on_trig) || (pending && !trig)
 //   cnt'   = do_rst ? 0 : load ? load_val : cnt + st   (32-bit wrap; a reset also clears ph', sc')
 // Wait (two register stages: a counter that passes the value in call t gives reached in t + 2):
-//   f_neg' = s32(cnt_ch - val) < 0, f_pos' = s32(cnt_ch - val) > 0, f_ok' = !wait_arm
-//   reached = waiting && f_ok && (down ? f_neg : f_pos);  waiting' = wait_arm || (waiting && !reached)
+//   f_c' = parts of s32(cnt_c - val) (c = 0, 1: borrow, signs, equal), f_ok' = !wait_arm
+//   reached = waiting && f_ok && (down ? s32(..)_ch < 0 : s32(..)_ch > 0) from f_ch;  waiting' = wait_arm || (waiting && !reached)
 //   ch, val, down latched by wait_arm.
 // Correction: sample = timer + 1 >= corr_period (timer' = sample ? 0 : timer + 1). While the
 //   product unit is idle (or in its last call) it loads hi = 2^23, lo = cnt (before the call),
@@ -27,7 +27,8 @@
 //
 // Timing (100 MHz on iCE40 HX8K): no multiplier, no add after an add in one clock. The
 // simulation carry is registered before it counts (the 33-bit phase add ends in a register);
-// the counter's next value is one carry-select add of operands chosen before it; the wait compares registers only, into flag registers (carry-select); the
+// the counter's next value is a 4:1 select of cnt + 1, cnt - 1, cnt - 2 (carry-select adds of
+// the register) and the no-move value; the wait compares registers only, into flag registers (carry-select); the
 // sample decision (a 17-bit compare of an input) drives only k and the timer, never the
 // enables of the product registers; the configuration check has no carry chain.
 //
@@ -111,7 +112,8 @@ module encoder_counter (
     reg                      busy_q, done_q;   //   k_q in 1..32, k_q == 33
     reg        [W_PER-1:0]   timer_q;
     reg                      waiting_q, w_ch_q, w_down_q;
-    reg                      f_neg_q, f_pos_q, f_ok_q;  // wait flags of the previous call
+    reg        [3:0]         f0_q, f1_q;       // wait: parts of cnt_c - val of the previous call
+    reg                      f_ok_q;           //   no arm in the previous call
     reg signed [W_CNT-1:0]   w_val_q;
     reg signed [1:0]         step0_q, step1_q;
     reg                      rst_done0_q, rst_done1_q, tick_q, reached_q, cfg_err_q;
@@ -140,6 +142,21 @@ module encoder_counter (
         end
     endfunction
 
+    // the same for the W_CORR-bit add of the position (20 + 20 bits)
+    localparam integer LC = W_CORR / 2;
+    function [W_CORR-1:0] csel_add40;
+        input [W_CORR-1:0] a, b;
+        reg [LC:0]           lo;
+        reg [W_CORR-LC-1:0]  hi0;
+        reg [W_CORR-LC:0]    hi1;
+        begin
+            lo  = {1'b0, a[LC-1:0]} + {1'b0, b[LC-1:0]};
+            hi0 = a[W_CORR-1:LC] + b[W_CORR-1:LC];
+            hi1 = {a[W_CORR-1:LC], 1'b1} + {b[W_CORR-1:LC], 1'b1};
+            csel_add40 = {lo[LC] ? hi1[W_CORR-LC:1] : hi0, lo[LC-1:0]};
+        end
+    endfunction
+
     // ---- counting ----------------------------------------------------------------------------
     wire [W_INC:0] ph0_sum = {1'b0, ph0_q} + {1'b0, i_sim_inc0};
     wire [W_INC:0] ph1_sum = {1'b0, ph1_q} + {1'b0, i_sim_inc1};
@@ -152,17 +169,33 @@ module encoder_counter (
     wire pend0_d = (i_rst_req0 && i_rst_on_trig) || (pend0_q && !i_trig);
     wire pend1_d = (i_rst_req1 && i_rst_on_trig) || (pend1_q && !i_trig);
 
-    // cnt' as one add whose operands are chosen first: do_rst ? 0 + 0 : load ? load_val + 0 :
-    // cnt + st (st, do_rst and load come from inputs and registers without carry chains; the
-    // add is carry-select, so its longest chain is 17 bits)
-    wire [W_CNT-1:0] a0 = do_rst0 ? {W_CNT{1'b0}} : i_load0 ? i_load_val0 : cnt0_q;
-    wire [W_CNT-1:0] a1 = do_rst1 ? {W_CNT{1'b0}} : i_load1 ? i_load_val1 : cnt1_q;
-    wire [W_CNT-1:0] b0 = (do_rst0 || i_load0) ? {W_CNT{1'b0}} : {{(W_CNT-2){st0[1]}}, st0};
-    wire [W_CNT-1:0] b1 = (do_rst1 || i_load1) ? {W_CNT{1'b0}} : {{(W_CNT-2){st1[1]}}, st1};
-    wire [W_ACC-1:0] cs0 = csel_add({1'b0, a0}, {1'b0, b0});   // carry-select (see below)
-    wire [W_ACC-1:0] cs1 = csel_add({1'b0, a1}, {1'b0, b1});
-    wire [W_CNT-1:0] cnt0_d = cs0[W_CNT-1:0];                  // 32-bit wrap
-    wire [W_CNT-1:0] cnt1_d = cs1[W_CNT-1:0];
+    // cnt': the three moves cnt + 1, cnt - 1, cnt - 2 are carry-select adds of the register
+    // alone; the value without a move (reset 0, preset load_val or cnt) and a 2-bit code are
+    // formed beside them from the inputs, and one 4:1 select follows
+    wire [W_ACC-1:0] p0 = csel_add({1'b0, cnt0_q}, {W_ACC{1'b0}} + 33'd1);
+    wire [W_ACC-1:0] n0 = csel_add({1'b0, cnt0_q}, {W_ACC{1'b1}});          // - 1
+    wire [W_ACC-1:0] t0 = csel_add({1'b0, cnt0_q}, {{(W_ACC-1){1'b1}}, 1'b0}); // - 2
+    wire [W_ACC-1:0] p1 = csel_add({1'b0, cnt1_q}, {W_ACC{1'b0}} + 33'd1);
+    wire [W_ACC-1:0] n1 = csel_add({1'b0, cnt1_q}, {W_ACC{1'b1}});
+    wire [W_ACC-1:0] t1 = csel_add({1'b0, cnt1_q}, {{(W_ACC-1){1'b1}}, 1'b0});
+    wire [W_CNT-1:0] e0 = do_rst0 ? {W_CNT{1'b0}} : i_load0 ? i_load_val0 : cnt0_q;
+    wire [W_CNT-1:0] e1 = do_rst1 ? {W_CNT{1'b0}} : i_load1 ? i_load_val1 : cnt1_q;
+    wire             mv0 = !do_rst0 && !i_load0;   // the step applies
+    wire             mv1 = !do_rst1 && !i_load1;
+    // code: 0 no move (e), 1 +1, 2 -2, 3 -1 (= st when the step applies)
+    wire [1:0]       code0 = mv0 ? st0 : 2'b00;
+    wire [1:0]       code1 = mv1 ? st1 : 2'b00;
+    // 4:1 select as AND-OR (a mux with the register as one leaf would become a flip-flop enable)
+    function [W_CNT-1:0] sel4;
+        input [1:0] code;
+        input [W_CNT-1:0] e, p, t, n;
+        begin
+            sel4 = (e & {W_CNT{code == 2'b00}}) | (p & {W_CNT{code == 2'b01}}) |
+                   (t & {W_CNT{code == 2'b10}}) | (n & {W_CNT{code == 2'b11}});
+        end
+    endfunction
+    wire [W_CNT-1:0] cnt0_d = sel4(code0, e0, p0[W_CNT-1:0], t0[W_CNT-1:0], n0[W_CNT-1:0]);
+    wire [W_CNT-1:0] cnt1_d = sel4(code1, e1, p1[W_CNT-1:0], t1[W_CNT-1:0], n1[W_CNT-1:0]);
     // (do_rst ? 0 : sum, as a mask: a LUT after the chain, not a second synchronous reset net
     // behind the configuration check)
     wire [W_INC-1:0] ph0_d  = ph0_sum[W_INC-1:0] & {W_INC{!do_rst0}};
@@ -171,19 +204,28 @@ module encoder_counter (
     wire signed [1:0] step1_d = (do_rst1 || i_load1) ? 2'sd0 : st1;
 
     // ---- wait-for-encoder: two register stages --------------------------------------------
-    // stage 1: flags of s32(cnt_ch - val) from the registers (carry-select: the low half's borrow
-    // picks one of two upper-half differences; the zero test beside the carry chains)
+    // stage 1, per channel, from the registers: the parts of s32(cnt_c - val) as a carry-select
+    // subtract (low-half borrow, upper-half sign without and with borrow-in) and cnt_c == val
     localparam integer H = W_CNT / 2;
-    wire [W_CNT-1:0] cw  = w_ch_q ? cnt1_q : cnt0_q;
-    wire [H:0]       dlo = {1'b0, cw[H-1:0]} - {1'b0, w_val_q[H-1:0]};      // [H]: borrow
-    wire [H-1:0]     dh0 = cw[W_CNT-1:H] - w_val_q[W_CNT-1:H];              // no borrow in
-    wire [H-1:0]     dh1 = cw[W_CNT-1:H] + ~w_val_q[W_CNT-1:H];             // borrow in
-    wire             neg = dlo[H] ? dh1[H-1] : dh0[H-1];                    // cw - val < 0
-    wire             eqw = (cw == w_val_q);
-    // stage 2: the flags of the previous call decide (unless an arm came between)
-    wire reached_d = waiting_q && f_ok_q && (w_down_q ? f_neg_q : f_pos_q);
+    function [3:0] wparts;   // {borrow, sign without borrow, sign with borrow, equal}
+        input [W_CNT-1:0] c, v;
+        reg [H:0]   dlo;
+        reg [H-1:0] dh0, dh1;
+        begin
+            dlo = {1'b0, c[H-1:0]} - {1'b0, v[H-1:0]};          // [H]: borrow
+            dh0 = c[W_CNT-1:H] - v[W_CNT-1:H];                  // no borrow in
+            dh1 = c[W_CNT-1:H] + ~v[W_CNT-1:H];                 // borrow in
+            wparts = {dlo[H], dh0[H-1], dh1[H-1], c == v};
+        end
+    endfunction
+    wire [3:0] fp0 = wparts(cnt0_q, w_val_q);
+    wire [3:0] fp1 = wparts(cnt1_q, w_val_q);
+    // stage 2: the parts of the previous call decide (unless an arm came between)
+    wire [3:0] fw   = w_ch_q ? f1_q : f0_q;
+    wire       fneg = fw[3] ? fw[1] : fw[2];        // s32(cnt_ch - val) < 0
+    wire       fpos = !fneg && !fw[0];              // s32(cnt_ch - val) > 0
+    wire reached_d = waiting_q && f_ok_q && (w_down_q ? fneg : fpos);
     wire waiting_d = i_wait_arm || (waiting_q && !reached_d);
-
 
     // ---- correction: sequenced product ---------------------------------------------------------
     wire sample = ({1'b0, timer_q} + 17'd1) >= {1'b0, i_corr_period};
@@ -203,8 +245,8 @@ module encoder_counter (
     // done: {hi, lo} >> 24, low 40 bits, + p
     wire signed [W_CORR-1:0] q0 = {hi0_q[W_CNT-1:0], lo0_q[W_CNT-1:S_FRAC]};
     wire signed [W_CORR-1:0] q1 = {hi1_q[W_CNT-1:0], lo1_q[W_CNT-1:S_FRAC]};
-    wire signed [W_CORR-1:0] corr0_d = q0 + {{(W_CORR-W_CNT){p0_q[W_CNT-1]}}, p0_q};
-    wire signed [W_CORR-1:0] corr1_d = q1 + {{(W_CORR-W_CNT){p1_q[W_CNT-1]}}, p1_q};
+    wire signed [W_CORR-1:0] corr0_d = csel_add40(q0, {{(W_CORR-W_CNT){p0_q[W_CNT-1]}}, p0_q});
+    wire signed [W_CORR-1:0] corr1_d = csel_add40(q1, {{(W_CORR-W_CNT){p1_q[W_CNT-1]}}, p1_q});
     // done ? corr_d : corr, written as data (not as a flip-flop enable, which the synchronous
     // reset of an invalid configuration would have to pass through)
     wire [W_CORR-1:0] corr0_hold = corr0_q ^ ((corr0_q ^ corr0_d) & {W_CORR{done}});
@@ -231,8 +273,8 @@ module encoder_counter (
             done_q <= 1'b0;
             timer_q <= {W_PER{1'b0}};
             waiting_q <= 1'b0;
-            f_neg_q <= 1'b0;
-            f_pos_q <= 1'b0;
+            f0_q <= 4'd0;
+            f1_q <= 4'd0;
             f_ok_q <= 1'b0;
             step0_q <= 2'sd0;
             step1_q <= 2'sd0;
@@ -257,8 +299,8 @@ module encoder_counter (
             done_q <= done_d;
             timer_q <= timer_d;
             waiting_q <= waiting_d;
-            f_neg_q <= neg;
-            f_pos_q <= !neg && !eqw;
+            f0_q <= fp0;
+            f1_q <= fp1;
             f_ok_q <= !i_wait_arm;
             step0_q <= step0_d;
             step1_q <= step1_d;
