@@ -721,7 +721,8 @@ vec_table error_map_stress(rng_t& r, long long calls) {
 // source, rate or period). Per call: quadrature steps (random walk with a per-channel probability, -2 one call in
 // 2000), triggers, reset requests, presets next to the wrap or anywhere, wait arms (value behind,
 // ahead, across the wrap, equal, 2^31 away), live corr_period changes, random positions. The first
-// 8 calls are directed: a wait reached by a -2 step.
+// 16 calls are directed: a wait reached by a -2 step; on each channel a reset in the call of a
+// simulation carry.
 vec_table encoder_counter_stress(rng_t& r, long long calls) {
     using C = lx::encoder_counter_cfg;
     vec_table t{"encoder_counter_stress", lxt::vec_layout("encoder_counter"), {}};
@@ -832,6 +833,17 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
             x.wait_val = 8;
             x.wait_down = true;
             in.qstep[0] = (n >= 2 && n < 5) ? -2 : 0;  // 11 -> 9 -> 7 (reached) -> 5
+            // channel 1 simulated at 2^30 (a carry every 4 calls): a reset in the carry call (3)
+            // drops that carry (no count in call 4)
+            x.src[1] = 1;
+            x.sim_inc[1] = C::SIM_INC_MAX;
+            x.rst_req[1] = n == 3;
+        } else if (n < 16) {  // the same on channel 0: reset in call 8 (phase 0), carry call 12
+            x = lx::encoder_counter_regs{};
+            in = lx::encoder_counter_in{};
+            x.src[0] = 1;
+            x.sim_inc[0] = C::SIM_INC_MAX;
+            x.rst_req[0] = n == 8 || n == 12;
         }
         const lx::encoder_counter::out_t o = m.step(in, x);
         cnt[0] = o.cnt[0].to_int64();
