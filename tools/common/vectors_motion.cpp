@@ -105,8 +105,9 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
 
     // ---- encoder_counter (columns: lxt::vec_layout, every port): channel 0 from a quadrature
     //      step stream crossing the +2^31 wrap, channel 1 simulated at 1 MHz (up, then down),
-    //      reset on trigger, waits on channel 0 (up, then down, both across the wrap), correction ticks every 1000 calls, then every 33
-    //      calls (the period lowered live, a product restarted), 50 calls with an invalid source
+    //      reset on trigger, waits on channel 0 (up, then down, both across the wrap),
+    //      correction ticks every 1000 calls, then every 33 calls (the period lowered live),
+    //      50 calls with an invalid source
     vec_table enc{"encoder_counter", vec_layout("encoder_counter"), {}};
     {
         lx::encoder_counter h;
@@ -122,8 +123,8 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
             const bool trig = t % 9000 == 8999;
             const bool rst_req1 = t == calls / 3 || t == calls * 2 / 3;
             const bool rst_on_trig = t < calls / 2;
-            // (40000 calls: the first wait is reached up across the wrap near call 24521, the
-            // second down across the wrap back near call 29700)
+            // (40000 calls: the first wait is reached up across the wrap in call 24522, the
+            // second down across the wrap back in call 29702)
             const bool wait_arm = t == 100 || t == calls * 5 / 8;
             const int64_t wait_val = t < calls * 5 / 8 ? -2147483647LL + 500 : 2147483647LL - 100;
             const bool wait_down = t >= calls * 5 / 8;
