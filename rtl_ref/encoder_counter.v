@@ -4,18 +4,20 @@
 // Reference RTL of hls/encoder_counter.h (docs/PSO_COUNTERS.md §3). One rising clock edge = one
 // call of encoder_counter::step(); every output is a register holding the out_t of that call.
 // Synchronous active-high reset = encoder_counter::reset() (all zero). A call with an invalid
-// configuration (src 2/3, simulation rate above 2^30 on a simulated channel, corr_period < 32)
+// configuration (src 2/3, simulation rate above 2^30 on a simulated channel, corr_period < 33)
 // resets every register and raises cfg_err for that call.
 //
 // Per channel c (registers before the edge; primes after it):
 //   {carry, ph'} = ph + sim_inc;  sc' = carry      simulation phase, free running; the carry
 //                                                  counts in the next call (sc, registered)
 //   st     = src == 1 ? (sc ? (sim_down ? -1 : +1) : 0) : qstep
-//   do_rst = (rst_req && !rst_on_trig) || (pending && trig);  pending' = (rst_req && rst_on_trig) || (pending && !trig)
+//   do_rst = (rst_req && !rst_on_trig) || (pending && trig)
+//   pending' = (rst_req && rst_on_trig) || (pending && !trig)
 //   cnt'   = do_rst ? 0 : load ? load_val : cnt + st   (32-bit wrap; a reset also clears ph', sc')
 // Wait (two register stages: a counter that passes the value in call t gives reached in t + 2):
 //   f_c' = parts of s32(cnt_c - val) (c = 0, 1: borrow, signs, equal), f_ok' = !wait_arm
-//   reached = waiting && f_ok && (down ? s32(..)_ch < 0 : s32(..)_ch > 0) from f_ch;  waiting' = wait_arm || (waiting && !reached)
+//   reached = waiting && f_ok && (down ? s32(..)_ch < 0 : s32(..)_ch > 0), from f_ch
+//   waiting' = wait_arm || (waiting && !reached)
 //   ch, val, down latched by wait_arm.
 // Correction: sample = timer + 1 >= corr_period (timer' = sample ? 0 : timer + 1). While the
 //   product unit is idle (or in its last call) it loads hi = 2^23, lo = cnt (before the call),
@@ -28,7 +30,8 @@
 // Timing (100 MHz on iCE40 HX8K): no multiplier, no add after an add in one clock. The
 // simulation carry is registered before it counts (the 33-bit phase add ends in a register);
 // the counter's next value is a 4:1 select of cnt + 1, cnt - 1, cnt - 2 (carry-select adds of
-// the register) and the no-move value; the wait compares registers only, into flag registers (carry-select); the
+// the register) and the no-move value; the wait compares registers only, into flag registers
+// (carry-select); the 33-bit shift-add and the 40-bit position add are carry-select; the
 // sample decision (a 17-bit compare of an input) drives only k and the timer, never the
 // enables of the product registers; the configuration check has no carry chain.
 //
