@@ -21,7 +21,7 @@ int64_t wrap_s32(int64_t v) {
 int64_t counter_diff(int64_t a, int64_t b) { return wrap_s32(b - a); }
 
 bool encoder_counter::config_ok(const encoder_counter_regs& r) {
-    bool ok = r.corr_period >= 1;
+    bool ok = r.corr_period >= kEncoderCorrLatency;
     for (int c = 0; c < 2; ++c) {
         ok = ok && (r.src[c] == 0 || r.src[c] == 1);
         // simulation counting rate at most 25 MHz (0.25 count per clock)
@@ -39,21 +39,42 @@ encoder_counter::out encoder_counter::step(const encoder_counter_in& in, const e
         o.cfg_err = true;
         return o;
     }
-    // tick: corr_period calls after the previous tick (the first at call corr_period - 1)
-    o.tick = t_ - last_tick_ >= r.corr_period;
-    if (o.tick) {
+    // sample: corr_period calls after the previous sample (the first at call corr_period - 1);
+    // the value is shown, with tick, kEncoderCorrLatency calls after its sample call
+    if (t_ == due_) {
+        o.tick = true;
+        corr_[0] = pend_[0];
+        corr_[1] = pend_[1];
+        due_ = -1;
+    }
+    // (a sample while an earlier one is not yet shown is dropped: the earlier one is shown)
+    if (t_ - last_tick_ >= r.corr_period) {
         last_tick_ = t_;
-        for (int c = 0; c < 2; ++c) {
-            const long double prod = static_cast<long double>(r.scale[c]) * static_cast<long double>(wrap_s32(u_[c]));
-            corr_[c] = in.pos[c] + static_cast<int64_t>(floorl(prod / 16777216.0L + 0.5L));  // round half up
+        if (due_ < 0) {
+            due_ = t_ + kEncoderCorrLatency;
+            for (int c = 0; c < 2; ++c) {
+                const long double prod = static_cast<long double>(r.scale[c]) * static_cast<long double>(wrap_s32(u_[c]));
+                pend_[c] = in.pos[c] + static_cast<int64_t>(floorl(prod / 16777216.0L + 0.5L));  // round half up
+            }
         }
     }
     ++t_;
+    // wait: reported two calls after the counter passes the value. The judgement of this call
+    // is about the counter as it was after call t-2 against the value latched before call t-1
+    // (none if an arm came in call t-1): judged_ holds it, computed in the previous call.
+    if (waiting_ && judged_ok_) {
+        o.reached = w_down_ ? judged_diff_ < 0 : judged_diff_ > 0;
+        if (o.reached) waiting_ = false;
+    }
+    judged_diff_ = counter_diff(w_val_, wrap_s32(u_[w_ch_]));  // counter after the previous call
+    judged_ok_ = !r.wait_arm;
     for (int c = 0; c < 2; ++c) {
-        // simulation: one count per integer crossed by the commanded count
+        // simulation: one count per integer crossed by the commanded count, in the call after
+        // the crossing
+        const int sim = sim_due_[c] ? (r.sim_down[c] ? -1 : 1) : 0;
         const long double before = floorl(phi_[c]);
         phi_[c] += static_cast<long double>(r.sim_inc[c]) / kQ;
-        const int sim = floorl(phi_[c]) > before ? (r.sim_down[c] ? -1 : 1) : 0;
+        sim_due_[c] = floorl(phi_[c]) > before;
         int st = r.src[c] == 1 ? sim : in.qstep[c];
         // reset now, or at the first start trigger after the request
         const bool now = r.rst_req[c] && !r.rst_on_trig;
@@ -63,6 +84,7 @@ encoder_counter::out encoder_counter::step(const encoder_counter_in& in, const e
         if (now || at_trig) {
             u_[c] = 0;
             phi_[c] = 0;
+            sim_due_[c] = false;
             st = 0;
         } else if (r.load[c]) {
             u_[c] = r.load_val[c];
@@ -75,11 +97,6 @@ encoder_counter::out encoder_counter::step(const encoder_counter_in& in, const e
         o.rst_pending[c] = pending_[c];
         o.cnt[c] = wrap_s32(u_[c]);
         o.corr[c] = corr_[c];
-    }
-    if (waiting_) {
-        const int64_t d = counter_diff(w_val_, o.cnt[w_ch_]);
-        o.reached = w_down_ ? d < 0 : d > 0;
-        if (o.reached) waiting_ = false;
     }
     if (r.wait_arm) {
         waiting_ = true;

@@ -37,6 +37,10 @@ struct encoder_counter_in {
     int64_t pos[2] = {0, 0};
 };
 
+// The correction is visible this many calls after its sample call (docs/PSO_COUNTERS.md §3.2);
+// corr_period must be at least this.
+constexpr int kEncoderCorrLatency = 33;
+
 class encoder_counter {
 public:
     struct out {
@@ -58,11 +62,16 @@ public:
 private:
     int64_t u_[2] = {0, 0};          // unwrapped count
     long double phi_[2] = {0, 0};    // simulation: commanded count since the last reset
+    bool sim_due_[2] = {false, false};  // an integer was crossed in the previous call
     bool pending_[2] = {false, false};
     int64_t corr_[2] = {0, 0};
     int64_t t_ = 0;                  // calls since the run started
-    int64_t last_tick_ = -1;
+    int64_t last_tick_ = -1;         // last sample call
+    int64_t due_ = -1;               // call that shows the sampled correction (-1: none)
+    int64_t pend_[2] = {0, 0};       // the sampled correction
     bool waiting_ = false;
+    int64_t judged_diff_ = 0;        // wait: s32(counter after call t-2 - value), for call t
+    bool judged_ok_ = false;         //   no arm in call t-1
     int w_ch_ = 0;
     int64_t w_val_ = 0;
     bool w_down_ = false;

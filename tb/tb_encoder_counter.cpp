@@ -9,15 +9,16 @@
 //            periods, scales (full 32-bit range), positions, wait-for-encoder on either channel in
 //            either direction with values on both sides of the wrap, short invalid configurations.
 // wrap:      max + 1 -> min and min - 1 -> max, counted by quadrature steps and by the simulation,
-//            both directions; wait-for-encoder reached exactly when the counter passes a value
-//            across the boundary (up and down); a value 2^31 or more ahead is seen behind.
+//            both directions; wait-for-encoder reached exactly two calls after the counter passes
+//            a value across the boundary (up and down); a value 2^31 or more ahead is seen behind.
 // reset:     immediate reset in the request call; reset-on-trigger in the trigger call (not a
-//            trigger in the request call); simulation phase restarts: first count 100 calls
-//            after the reset at 1 MHz.
-// correction: ticks exactly every corr_period calls; value = pos + floor(scale * cnt / 2^24 + 1/2)
-//            from the counter before the tick call, including ties, negative values and the
-//            largest product.
-// config:    source 2/3, period 0, simulation above 25 MHz: cfg_err, outputs held at zero.
+//            trigger in the request call); simulation phase restarts: first count 101 calls
+//            after the reset at 1 MHz (carry in the 100th call, counted in the next).
+// correction: ticks exactly every corr_period calls, the first at corr_period - 1 + 33 (the
+//            sequenced product's latency); value = pos + floor(scale * cnt / 2^24 + 1/2) from the
+//            counter before the sample call (33 calls before the tick) and that call's position,
+//            including ties, negative values, the largest product and corr_period = 33.
+// config:    source 2/3, period 0 and 32, simulation above 25 MHz: cfg_err, outputs held at zero.
 // calibration: increments from start/end readings across the wrap, least squares over wrapped
 //            readings, Scale = K / i and K * v / rate, signs for both directions, Q8.24.
 // command:   `laserax counters` (cmd_counters) returns 0 (bit-exact, wrap seen, reset at trigger).
@@ -94,7 +95,7 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long long* ca
             if (rng() % 2) r.scale[c] >>= (rng() % 24);
             prob[c] = static_cast<double>(rng() % 1000) / 1000.0;
         }
-        r.corr_period = rng() % 2 ? 1000 : 1 + static_cast<int>(rng() % 2000);
+        r.corr_period = rng() % 2 ? 1000 : rng() % 4 == 0 ? golden::kEncoderCorrLatency : golden::kEncoderCorrLatency + static_cast<int>(rng() % 2000);
         r.rst_on_trig = rng() % 2 == 0;
         std::uniform_real_distribution<double> u01(0, 1);
         bool ok = true;
@@ -211,12 +212,14 @@ void test_wrap(tbu::result& res) {
                 at = o.cnt[1];
             }
         }
-        // counts: 3 steps reach the value, the 4th passes it (across the boundary)
-        res.check(reached == 4 && at == (down ? kMax : kMin),
+        // counts: 3 steps reach the value, the 4th passes it (across the boundary); reported two
+        // calls later (the 6th step is in that call's counter)
+        res.check(reached == 6 && at == (down ? kMax - 2 : kMin + 2),
                   std::string("wait-for-encoder across the boundary (") + (down ? "down" : "up") + "): reached at call " +
                       std::to_string(reached) + ", counter " + std::to_string(at));
     }
-    // a value already passed is reached in the next call; a value 2^31 ahead is 'behind'
+    // a value already passed is reached in the second call after the arm; a value 2^31 ahead is
+    // 'behind'
     {
         pair_run p{{}, {}, &res, "wait levels"};
         golden::encoder_counter_regs r = quad_regs();
@@ -228,7 +231,8 @@ void test_wrap(tbu::result& res) {
         r.wait_val = 50;
         p.step(qin(0, 0), r);
         r.wait_arm = false;
-        res.check(p.step(qin(0, 0), r).reached, "wait for a value already passed");
+        const bool first = p.step(qin(0, 0), r).reached;
+        res.check(!first && p.step(qin(0, 0), r).reached, "wait for a value already passed");
         r.wait_arm = true;
         r.wait_val = golden::wrap_s32(100 + kMax + 1);  // exactly 2^31 away: counts as ahead? no
         p.step(qin(0, 0), r);
@@ -273,10 +277,12 @@ void test_reset(tbu::result& res) {
         }
         res.check(pending_ok && reset_call == 170 && !o.rst_pending[0],
                   "reset-on-trigger: reset at call " + std::to_string(reset_call) + ", want 170");
-        // 1 MHz = 42949673 / 2^32 count per call: the 100th call after the reset carries
-        res.check(first_count == 270, "simulation after the reset: first count at call " + std::to_string(first_count) +
-                                          ", want 270");
-        res.check(o.cnt[1] == 4 && o.cnt[0] == 2, "counter values after reset-on-trigger: " + std::to_string(o.cnt[0]) +
+        // 1 MHz = 42949673 / 2^32 count per call: the 100th call after the reset carries, the
+        // 101st counts
+        res.check(first_count == 271, "simulation after the reset: first count at call " + std::to_string(first_count) +
+                                          ", want 271");
+        // counter 1 (never reset): carries in calls 99, 199, 299, 399, the last counted in call 400
+        res.check(o.cnt[1] == 3 && o.cnt[0] == 2, "counter values after reset-on-trigger: " + std::to_string(o.cnt[0]) +
                                                       " / " + std::to_string(o.cnt[1]));
     }
 }
@@ -291,26 +297,37 @@ void test_correction(tbu::result& res) {
     in.pos[1] = -7;
     int ticks = 0;
     bool spacing_ok = true, value_ok = true;
+    const int lat = golden::kEncoderCorrLatency;
     long long last_tick = -1;
+    std::vector<int64_t> cnt_before[2];  // counter register before call t
+    std::vector<int64_t> pos_at[2];      // position input of call t
     int64_t prev_cnt[2] = {0, 0};
-    for (int t = 0; t < 5000; ++t) {
+    for (int t = 0; t < 5100; ++t) {
+        in.pos[0] = 1000 + t / 7;
+        in.pos[1] = -7 - t / 3;
+        for (int c = 0; c < 2; ++c) {
+            cnt_before[c].push_back(prev_cnt[c]);
+            pos_at[c].push_back(in.pos[c]);
+        }
         const golden::encoder_counter::out o = p.step(in, r);
         if (o.tick) {
             ++ticks;
-            spacing_ok = spacing_ok && t - last_tick == 1000;
+            spacing_ok = spacing_ok && (last_tick < 0 ? t == 999 + lat : t - last_tick == 1000);
             last_tick = t;
             for (int c = 0; c < 2; ++c) {
-                const int64_t num = r.scale[c] * prev_cnt[c] + (1LL << 23);
+                const int64_t num = r.scale[c] * cnt_before[c][static_cast<size_t>(t - lat)] + (1LL << 23);
                 const int64_t q = num >= 0 ? num / (1LL << 24) : -((-num + (1LL << 24) - 1) / (1LL << 24));
-                value_ok = value_ok && o.corr[c] == in.pos[c] + q;
+                value_ok = value_ok && o.corr[c] == pos_at[c][static_cast<size_t>(t - lat)] + q;
             }
         }
         prev_cnt[0] = o.cnt[0];
         prev_cnt[1] = o.cnt[1];
     }
-    res.check(ticks == 5 && spacing_ok, "correction ticks: " + std::to_string(ticks) + " in 5000 calls");
-    res.check(value_ok, "correction value pos + round(scale * counter)");
-    // largest product: scale -2^31 (-128 bits/count) times counter -2^31
+    res.check(ticks == 5 && spacing_ok, "correction ticks: " + std::to_string(ticks) + " in 5100 calls");
+    res.check(value_ok, "correction value pos + round(scale * counter), sampled 33 calls before the tick");
+    // largest product: scale -2^31 (-128 bits/count) times counter -2^31; shortest period (33):
+    // loaded in call 0, sampled in calls 32 and 65, shown in calls 65 and 98 (a sample and a
+    // tick in the same call)
     pair_run q{{}, {}, &res, "correction extreme"};
     golden::encoder_counter_regs x = quad_regs();
     x.scale[0] = kMin;
@@ -319,15 +336,25 @@ void test_correction(tbu::result& res) {
     x.load_val[0] = kMin;
     x.load[1] = true;
     x.load_val[1] = kMin;
-    x.corr_period = 2;
+    x.corr_period = lat;
     golden::encoder_counter_in xi;
     xi.pos[0] = kMax;
     xi.pos[1] = kMin;
     q.step(xi, x);
     x.load[0] = x.load[1] = false;
-    const golden::encoder_counter::out o = q.step(xi, x);
-    res.check(o.tick && o.corr[0] == (1LL << 38) + kMax && o.corr[1] == kMin - (1LL << 38) + 128,
-              "largest correction product: " + std::to_string(o.corr[0]) + " / " + std::to_string(o.corr[1]));
+    int xt = 0;
+    bool ext_ok = true;
+    golden::encoder_counter::out o;
+    for (int t = 1; t < 3 * lat + 1; ++t) {
+        o = q.step(xi, x);
+        if (o.tick) {
+            ++xt;
+            ext_ok = ext_ok && (t == 2 * lat - 1 || t == 3 * lat - 1) && o.corr[0] == (1LL << 38) + kMax &&
+                     o.corr[1] == kMin - (1LL << 38) + 128;
+        }
+    }
+    res.check(xt == 2 && ext_ok, "largest correction product: " + std::to_string(o.corr[0]) + " / " +
+                                     std::to_string(o.corr[1]) + ", ticks " + std::to_string(xt));
 }
 
 void test_config(tbu::result& res) {
@@ -339,6 +366,7 @@ void test_config(tbu::result& res) {
         {"source 2", [](golden::encoder_counter_regs& r) { r.src[0] = 2; }},
         {"source 3", [](golden::encoder_counter_regs& r) { r.src[1] = 3; }},
         {"correction period 0", [](golden::encoder_counter_regs& r) { r.corr_period = 0; }},
+        {"correction period 32", [](golden::encoder_counter_regs& r) { r.corr_period = golden::kEncoderCorrLatency - 1; }},
         {"simulation above 25 MHz", [](golden::encoder_counter_regs& r) { r.sim_inc[1] = (1ULL << 30) + 1; }},
     };
     for (const bad& b : bads) {
@@ -401,8 +429,9 @@ void test_calibration(tbu::result& res, std::mt19937_64& rng) {
         r.scale[0] = golden::encoder_scale_to_q(scale, &ok);
         r.sim_inc[0] = golden::encoder_sim_inc(1e6);
         golden::encoder_counter::out o;
-        for (int t = 0; t < 100000; ++t) o = p.step(qin(0, 0), r);
-        // the tick at call 99999 uses the counter after call 99998: 999 counts
+        for (int t = 0; t < 100000 + golden::kEncoderCorrLatency; ++t) o = p.step(qin(0, 0), r);
+        // the tick at call 100032 shows the sample of call 99999: the counter after call 99998,
+        // 999 counts
         res.check(ok && o.tick && o.cnt[0] == 1000 && o.corr[0] == std::llround(scale * 999),
                   "constant-speed correction: counter " + std::to_string(o.cnt[0]) + ", corr " + std::to_string(o.corr[0]));
         res.check(std::fabs(static_cast<double>(o.corr[0]) - k * 0.1) <= scale + 0.5, "correction equals K * travel");

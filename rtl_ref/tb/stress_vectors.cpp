@@ -24,7 +24,14 @@
 //   error_map_stress        both banks written in full, every spacing k = 4..20 (n = 2, 2048, random),
 //                           random reloads of the inactive bank and flips, extreme words, invalid
 //                           geometries, motion over both table ends with reversals and jumps,
-//                           map_en / homed toggles (see error_map_stress below).
+//                           map_en / homed toggles (see error_map_stress below);
+//   encoder_counter_stress  segments with every register re-drawn: quadrature or simulated counting
+//                           at up to the 25 MHz limit, presets next to +-2^31 (wraps both ways),
+//                           resets now and at a trigger (trigger in the request call too), waits on
+//                           either channel either way with values across the wrap, scales and
+//                           counters at the extremes (largest product), corr_period 32..65535
+//                           changed live (a product restarted), qstep = -2, invalid sources, rates
+//                           and periods (see encoder_counter_stress below).
 // Every file has the column layout of the golden file of its block (lxt::vec_layout(), shared with
 // `laserax vectors`), so one testbench rtl_ref/tb/tb_<block>.v runs both sets. The columns the
 // golden sets hold at 0 are exercised here: pulse_multiplier `preset, preset_n` (a row with
@@ -41,6 +48,7 @@
 #include <vector>
 
 #include "hls/axis_core.h"
+#include "hls/encoder_counter.h"
 #include "rtl_ref/tb/vecgen.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/vectors.h"
@@ -707,6 +715,154 @@ vec_table error_map_stress(rng_t& r, long long calls) {
 }
 
 
+// ---- encoder_counter ------------------------------------------------------------------------
+// Segments of 50..1500 calls; at each segment start every register is re-drawn (sources, rates,
+// directions, scales, rst_on_trig, corr_period; one segment in 6 is short and has an invalid
+// source, rate or period). Per call: quadrature steps (random walk with a per-channel probability, -2 one call in
+// 2000), triggers, reset requests, presets next to the wrap or anywhere, wait arms (value behind,
+// ahead, across the wrap, equal, 2^31 away), live corr_period changes, random positions. The first
+// 16 calls are directed: a wait reached by a -2 step; on each channel a reset in the call of a
+// simulation carry.
+vec_table encoder_counter_stress(rng_t& r, long long calls) {
+    using C = lx::encoder_counter_cfg;
+    vec_table t{"encoder_counter_stress", lxt::vec_layout("encoder_counter"), {}};
+    const int64_t kMax = 2147483647LL, kMin = -2147483648LL;
+    lx::encoder_counter m;
+    lx::encoder_counter_regs g;  // segment registers (pulses cleared)
+    double prob[2] = {0.5, 0.5};
+    int dir[2] = {1, -1};
+    long long seg_end = 0;
+    int64_t cnt[2] = {0, 0};  // outputs of the previous call
+    auto wrap32 = [](int64_t v) { return static_cast<int64_t>(static_cast<int32_t>(static_cast<uint32_t>(v))); };
+    auto draw_scale = [&]() -> int64_t {
+        switch (r.range(0, 5)) {
+            case 0: return kMin;
+            case 1: return kMax;
+            case 2: return 0;
+            case 3: return r.range(-(int64_t{1} << 24), int64_t{1} << 24);
+            default: return wrap32(static_cast<int64_t>(r.u())) >> r.range(0, 24);
+        }
+    };
+    auto draw_period = [&]() -> int64_t {
+        switch (r.range(0, 5)) {
+            case 0: return C::CORR_LAT;
+            case 1: return C::CORR_LAT + r.range(1, 3);
+            case 2: return 1000;
+            case 3: return r.range(C::CORR_LAT, 200);
+            case 4: return r.chance(4) ? 65535 : r.range(C::CORR_LAT, 5000);
+            default: return r.range(C::CORR_LAT, 100);
+        }
+    };
+    for (long long n = 0; n < calls; ++n) {
+        if (n >= seg_end) {
+            seg_end = n + r.range(50, 1500);
+            for (int c = 0; c < 2; ++c) {
+                g.src[c] = r.chance(2) ? 1 : 0;
+                switch (r.range(0, 4)) {
+                    case 0: g.sim_inc[c] = C::SIM_INC_DEFAULT; break;
+                    case 1: g.sim_inc[c] = C::SIM_INC_MAX; break;
+                    case 2: g.sim_inc[c] = static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::SIM_INC_MAX))); break;
+                    case 3: g.sim_inc[c] = C::SIM_INC_MAX + 1 + r.u() % 3000000000ULL; break;  // legal on src 0 only
+                    default: g.sim_inc[c] = static_cast<uint64_t>(r.range(0, 1 << 24)); break;
+                }
+                if (g.src[c] == 1 && g.sim_inc[c] > C::SIM_INC_MAX) g.sim_inc[c] = C::SIM_INC_MAX - r.range(0, 5);
+                g.sim_down[c] = r.chance(2);
+                g.scale[c] = draw_scale();
+                prob[c] = r.chance(3) ? 1.0 : static_cast<double>(r.range(0, 1000)) / 1000.0;
+            }
+            g.rst_on_trig = r.chance(2);
+            g.corr_period = static_cast<uint64_t>(draw_period());
+            if (r.chance(6)) {  // an invalid segment, short
+                seg_end = n + r.range(1, 60);
+                switch (r.range(0, 3)) {
+                    case 0: g.src[r.range(0, 1)] = static_cast<uint64_t>(r.range(2, 3)); break;
+                    case 1: {
+                        const int c = static_cast<int>(r.range(0, 1));
+                        g.src[c] = 1;
+                        g.sim_inc[c] = C::SIM_INC_MAX + 1 + (r.chance(2) ? 0 : r.u() % 1000000ULL);
+                        break;
+                    }
+                    case 2: g.corr_period = static_cast<uint64_t>(r.range(0, C::CORR_LAT - 1)); break;
+                    default: g.corr_period = 0; break;
+                }
+            }
+        }
+        lx::encoder_counter_regs x = g;
+        lx::encoder_counter_in in{};
+        for (int c = 0; c < 2; ++c) {
+            if (r.chance(3000)) dir[c] = -dir[c];
+            const bool stepping = static_cast<double>(r.u() % 1000000) < prob[c] * 1000000.0;
+            in.qstep[c] = r.chance(2000) ? -2 : stepping ? dir[c] : 0;
+            in.pos[c] = r.chance(8) ? (r.chance(2) ? kMax : kMin) : wrap32(static_cast<int64_t>(r.u()));
+            x.rst_req[c] = r.chance(700);
+            x.load[c] = r.chance(500);
+            if (x.load[c]) {
+                switch (r.range(0, 3)) {
+                    case 0: x.load_val[c] = kMax - r.range(0, 60); break;
+                    case 1: x.load_val[c] = kMin + r.range(0, 60); break;
+                    case 2: x.load_val[c] = r.chance(2) ? kMax : kMin; break;
+                    default: x.load_val[c] = wrap32(static_cast<int64_t>(r.u())); break;
+                }
+            } else {
+                x.load_val[c] = r.chance(4) ? wrap32(static_cast<int64_t>(r.u())) : 0;
+            }
+        }
+        in.trig = r.chance(120);
+        if (r.chance(400)) x.rst_on_trig = !g.rst_on_trig;  // a one-call change
+        if (r.chance(1500)) g.corr_period = static_cast<uint64_t>(draw_period());  // live change
+        x.corr_period = g.corr_period;
+        x.wait_arm = r.chance(150);
+        x.wait_ch = r.chance(2);
+        x.wait_down = r.chance(2);
+        const int64_t cw = cnt[x.wait_ch ? 1 : 0];
+        switch (r.range(0, 6)) {
+            case 0: x.wait_val = wrap32(cw + r.range(-50, 50)); break;
+            case 1: x.wait_val = wrap32(cw + (x.wait_down ? -1 : 1) * r.range(1, 3000)); break;
+            case 2: x.wait_val = r.chance(2) ? kMax - r.range(0, 300) : kMin + r.range(0, 300); break;
+            case 3: x.wait_val = cw; break;
+            case 4: x.wait_val = wrap32(cw + (int64_t{1} << 31)); break;
+            case 5: x.wait_val = r.chance(2) ? kMax : kMin; break;
+            default: x.wait_val = wrap32(static_cast<int64_t>(r.u())); break;
+        }
+        if (n < 8) {  // directed prologue: a -2 step onto val + 1 then past val (wait down)
+            x = lx::encoder_counter_regs{};
+            in = lx::encoder_counter_in{};
+            x.load[0] = n == 0;
+            x.load_val[0] = 11;
+            x.wait_arm = n == 1;
+            x.wait_val = 8;
+            x.wait_down = true;
+            in.qstep[0] = (n >= 2 && n < 5) ? -2 : 0;  // 11 -> 9 -> 7 (reached) -> 5
+            // channel 1 simulated at 2^30 (a carry every 4 calls): a reset in the carry call (3)
+            // drops that carry (no count in call 4)
+            x.src[1] = 1;
+            x.sim_inc[1] = C::SIM_INC_MAX;
+            x.rst_req[1] = n == 3;
+        } else if (n < 16) {  // the same on channel 0: reset in call 8 (phase 0), carry call 12
+            x = lx::encoder_counter_regs{};
+            in = lx::encoder_counter_in{};
+            x.src[0] = 1;
+            x.sim_inc[0] = C::SIM_INC_MAX;
+            x.rst_req[0] = n == 8 || n == 12;
+        }
+        const lx::encoder_counter::out_t o = m.step(in, x);
+        cnt[0] = o.cnt[0].to_int64();
+        cnt[1] = o.cnt[1].to_int64();
+        t.rows.push_back({in.qstep[0].to_int64(), in.qstep[1].to_int64(), i64(in.trig), in.pos[0].to_int64(),
+                          in.pos[1].to_int64(), static_cast<int64_t>(x.src[0].to_uint64()),
+                          static_cast<int64_t>(x.src[1].to_uint64()), static_cast<int64_t>(x.sim_inc[0].to_uint64()),
+                          static_cast<int64_t>(x.sim_inc[1].to_uint64()), i64(x.sim_down[0]), i64(x.sim_down[1]),
+                          x.scale[0].to_int64(), x.scale[1].to_int64(), i64(x.rst_req[0]), i64(x.rst_req[1]),
+                          i64(x.load[0]), i64(x.load[1]), x.load_val[0].to_int64(), x.load_val[1].to_int64(),
+                          i64(x.rst_on_trig), static_cast<int64_t>(x.corr_period.to_uint64()), i64(x.wait_arm),
+                          i64(x.wait_ch), x.wait_val.to_int64(), i64(x.wait_down), o.cnt[0].to_int64(),
+                          o.cnt[1].to_int64(), o.step[0].to_int64(), o.step[1].to_int64(), i64(o.rst_done[0]),
+                          i64(o.rst_done[1]), i64(o.rst_pending[0]), i64(o.rst_pending[1]), o.corr[0].to_int64(),
+                          o.corr[1].to_int64(), i64(o.tick), i64(o.waiting), i64(o.reached), i64(o.cfg_err)});
+    }
+    return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -720,6 +876,7 @@ int main(int argc, char** argv) {
                            tables->push_back(dds_stress(r, calls));
                            tables->push_back(top_stress(r, 3 * calls));
                            tables->push_back(error_map_stress(r, calls));
+                           tables->push_back(encoder_counter_stress(r, calls));
                            return true;
                        });
 }

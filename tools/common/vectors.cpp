@@ -19,6 +19,7 @@
 #include "golden/quad_decoder.h"
 #include "golden/rephase.h"
 #include "hls/axis_core.h"
+#include "hls/encoder_counter.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/sim.h"
 
@@ -308,6 +309,21 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 in("k1", EM::W_K), in("n1", EM::W_N), in("we", 1), in("addr", EM::W_ADDR), in("data", EM::W_CORR, true),
                 out("corr", EM::W_C, true), out("delta", EM::W_CDELTA, true), out("active", 1), out("in_range", 1),
                 out("clamped", 1), out("cfg_err", 1)};
+    // the encoder counter block at its ports (hls/encoder_counter.h, rtl_ref/encoder_counter.v):
+    // every input and every output, channels 0 and 1
+    if (block == "encoder_counter") {
+        using EC = lx::encoder_counter_cfg;
+        return {in("qstep0", 2, true), in("qstep1", 2, true), in("trig", 1), in("pos0", EC::W_POSIN, true),
+                in("pos1", EC::W_POSIN, true), in("src0", 2), in("src1", 2), in("sim_inc0", EC::W_INC),
+                in("sim_inc1", EC::W_INC), in("sim_down0", 1), in("sim_down1", 1), in("scale0", EC::W_SCALE, true),
+                in("scale1", EC::W_SCALE, true), in("rst_req0", 1), in("rst_req1", 1), in("load0", 1), in("load1", 1),
+                in("load_val0", EC::W_CNT, true), in("load_val1", EC::W_CNT, true), in("rst_on_trig", 1),
+                in("corr_period", EC::W_PER), in("wait_arm", 1), in("wait_ch", 1), in("wait_val", EC::W_CNT, true),
+                in("wait_down", 1), out("cnt0", EC::W_CNT, true), out("cnt1", EC::W_CNT, true), out("step0", 2, true),
+                out("step1", 2, true), out("rst_done0", 1), out("rst_done1", 1), out("rst_pending0", 1),
+                out("rst_pending1", 1), out("corr0", EC::W_CORR, true), out("corr1", EC::W_CORR, true), out("tick", 1),
+                out("waiting", 1), out("reached", 1), out("cfg_err", 1)};
+    }
     return {};
 }
 

@@ -20,7 +20,6 @@ vec_column vout(const char* n, int bits, bool s = false) { return vec_column{n, 
 
 bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
     using PC = lx::pso_cfg;
-    using EC = lx::encoder_counter_cfg;
     const int WP = lx::axis_widths::W_POS;
     std::mt19937_64 rng(seed ^ 0x5a5aULL);
 
@@ -104,24 +103,18 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
         }
     }
 
-    // ---- encoder_counter: channel 0 from a quadrature step stream crossing the +2^31 wrap,
-    //      channel 1 simulated at 1 MHz, reset on trigger, a wait on channel 0, correction ticks
-    vec_table enc{"encoder_counter",
-                  {vin("qstep0", 2, true), vin("trig", 1), vin("pos0", EC::W_POSIN, true), vin("pos1", EC::W_POSIN, true),
-                   vin("src1", 2), vin("sim_down1", 1), vin("scale0", EC::W_SCALE, true), vin("scale1", EC::W_SCALE, true),
-                   vin("rst_req1", 1), vin("load0", 1), vin("load_val0", EC::W_CNT, true), vin("rst_on_trig", 1),
-                   vin("wait_arm", 1), vin("wait_val", EC::W_CNT, true), vin("wait_down", 1),
-                   vout("cnt0", EC::W_CNT, true), vout("cnt1", EC::W_CNT, true), vout("corr0", EC::W_CORR, true),
-                   vout("corr1", EC::W_CORR, true), vout("tick", 1), vout("waiting", 1), vout("reached", 1),
-                   vout("rst_pending1", 1), vout("cfg_err", 1)},
-                  {}};
+    // ---- encoder_counter (columns: lxt::vec_layout, every port): channel 0 from a quadrature
+    //      step stream crossing the +2^31 wrap, channel 1 simulated at 1 MHz (up, then down),
+    //      reset on trigger, waits on channel 0 (up, then down, both across the wrap),
+    //      correction ticks every 1000 calls, then every 33 calls (the period lowered live),
+    //      50 calls with an invalid source
+    vec_table enc{"encoder_counter", vec_layout("encoder_counter"), {}};
     {
         lx::encoder_counter h;
         golden::encoder_counter g;
         g.reset();
         int dir = 1;
         for (long long t = 0; t < calls; ++t) {
-            lx::encoder_counter_regs hr;
             golden::encoder_counter_regs gr;
             const bool load0 = t == 3;
             const int64_t load_val0 = 2147483647LL - 3000;
@@ -130,51 +123,70 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
             const bool trig = t % 9000 == 8999;
             const bool rst_req1 = t == calls / 3 || t == calls * 2 / 3;
             const bool rst_on_trig = t < calls / 2;
-            const bool wait_arm = t == 100 || t == calls / 2;
-            const int64_t wait_val = t < calls / 2 ? -2147483647LL + 500 : 2147483647LL - 2500;
-            const bool wait_down = t >= calls / 2;
+            // (40000 calls: the first wait is reached up across the wrap in call 24522, the
+            // second down across the wrap back in call 29702)
+            const bool wait_arm = t == 100 || t == calls * 5 / 8;
+            const int64_t wait_val = t < calls * 5 / 8 ? -2147483647LL + 500 : 2147483647LL - 100;
+            const bool wait_down = t >= calls * 5 / 8;
             const int64_t scale0 = 3 << 23, scale1 = -(1 << 24);
-            hr.src[1] = 1;
+            gr.src[0] = (t >= calls * 3 / 4 && t < calls * 3 / 4 + 50) ? 2 : 0;
             gr.src[1] = 1;
-            hr.sim_down[1] = gr.sim_down[1] = (t / 40000) % 2 == 1;
-            hr.scale[0] = scale0;
+            gr.sim_down[1] = (t / 40000) % 2 == 1;
             gr.scale[0] = scale0;
-            hr.scale[1] = scale1;
             gr.scale[1] = scale1;
-            hr.rst_req[1] = gr.rst_req[1] = rst_req1;
-            hr.load[0] = gr.load[0] = load0;
-            hr.load_val[0] = load_val0;
+            gr.rst_req[1] = rst_req1;
+            gr.load[0] = load0;
             gr.load_val[0] = load_val0;
-            hr.rst_on_trig = gr.rst_on_trig = rst_on_trig;
-            hr.wait_arm = gr.wait_arm = wait_arm;
-            hr.wait_ch = false;
+            gr.rst_on_trig = rst_on_trig;
+            gr.corr_period = t >= calls * 5 / 6 ? golden::kEncoderCorrLatency : 1000;
+            gr.wait_arm = wait_arm;
             gr.wait_ch = 0;
-            hr.wait_val = wait_val;
             gr.wait_val = wait_val;
-            hr.wait_down = gr.wait_down = wait_down;
-            lx::encoder_counter_in hi{};
+            gr.wait_down = wait_down;
             golden::encoder_counter_in gi;
-            hi.qstep[0] = qstep;
-            hi.qstep[1] = 0;
             gi.qstep[0] = qstep;
-            hi.trig = gi.trig = trig;
-            const int64_t pos0 = 1000 + t / 10, pos1 = -5000;
-            hi.pos[0] = pos0;
-            hi.pos[1] = pos1;
-            gi.pos[0] = pos0;
-            gi.pos[1] = pos1;
+            gi.trig = trig;
+            gi.pos[0] = 1000 + t / 10;
+            gi.pos[1] = -5000;
+            lx::encoder_counter_regs hr;
+            lx::encoder_counter_in hi{};
+            for (int c = 0; c < 2; ++c) {
+                hr.src[c] = gr.src[c];
+                hr.sim_inc[c] = gr.sim_inc[c];
+                hr.sim_down[c] = gr.sim_down[c];
+                hr.scale[c] = gr.scale[c];
+                hr.rst_req[c] = gr.rst_req[c];
+                hr.load[c] = gr.load[c];
+                hr.load_val[c] = gr.load_val[c];
+                hi.qstep[c] = gi.qstep[c];
+                hi.pos[c] = gi.pos[c];
+            }
+            hr.rst_on_trig = gr.rst_on_trig;
+            hr.corr_period = gr.corr_period;
+            hr.wait_arm = gr.wait_arm;
+            hr.wait_ch = gr.wait_ch != 0;
+            hr.wait_val = gr.wait_val;
+            hr.wait_down = gr.wait_down;
+            hi.trig = gi.trig;
             const lx::encoder_counter::out_t ho = h.step(hi, hr);
             const golden::encoder_counter::out go = g.step(gi, gr);
-            if (ho.cnt[0].to_int64() != go.cnt[0] || ho.cnt[1].to_int64() != go.cnt[1] ||
-                ho.corr[0].to_int64() != go.corr[0] || ho.corr[1].to_int64() != go.corr[1] || ho.tick != go.tick ||
-                ho.waiting != go.waiting || ho.reached != go.reached || ho.rst_pending[1] != go.rst_pending[1] ||
-                ho.cfg_err != go.cfg_err) {
+            bool same = ho.tick == go.tick && ho.waiting == go.waiting && ho.reached == go.reached &&
+                        ho.cfg_err == go.cfg_err;
+            for (int c = 0; c < 2; ++c)
+                same = same && ho.cnt[c].to_int64() == go.cnt[c] && ho.step[c].to_int64() == go.step[c] &&
+                       ho.rst_done[c] == go.rst_done[c] && ho.rst_pending[c] == go.rst_pending[c] &&
+                       ho.corr[c].to_int64() == go.corr[c];
+            if (!same) {
                 if (err) *err = "encoder_counter: hls/golden mismatch at call " + std::to_string(t);
                 return false;
             }
-            enc.rows.push_back({qstep, trig, pos0, pos1, 1, gr.sim_down[1], scale0, scale1, rst_req1, load0, load_val0,
-                                rst_on_trig, wait_arm, wait_val, wait_down, go.cnt[0], go.cnt[1], go.corr[0], go.corr[1],
-                                go.tick, go.waiting, go.reached, go.rst_pending[1], go.cfg_err});
+            enc.rows.push_back({gi.qstep[0], gi.qstep[1], gi.trig, gi.pos[0], gi.pos[1], gr.src[0], gr.src[1],
+                                static_cast<int64_t>(gr.sim_inc[0]), static_cast<int64_t>(gr.sim_inc[1]), gr.sim_down[0],
+                                gr.sim_down[1], gr.scale[0], gr.scale[1], gr.rst_req[0], gr.rst_req[1], gr.load[0],
+                                gr.load[1], gr.load_val[0], gr.load_val[1], gr.rst_on_trig, gr.corr_period, gr.wait_arm,
+                                gr.wait_ch, gr.wait_val, gr.wait_down, go.cnt[0], go.cnt[1], go.step[0], go.step[1],
+                                go.rst_done[0], go.rst_done[1], go.rst_pending[0], go.rst_pending[1], go.corr[0],
+                                go.corr[1], go.tick, go.waiting, go.reached, go.cfg_err});
         }
     }
     tables.push_back(pso);
