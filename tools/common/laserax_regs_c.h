@@ -46,24 +46,28 @@
 #define LASERAX_REG_COMP_OFFSET_WORDS 2
 #define LASERAX_REG_COMP_OFFSET_SIGNED 1
 #define LASERAX_REG_COMP_OFFSET_RESET 0LL
-/* glitch_n: glitch filter length of the A/B/LERR inputs (0 and 1 = pass after one clock) */
+/* glitch_n: glitch filter length N of the A/B/LERR inputs (0 and 1 = pass after one clock); shorter pulses are suppressed and set glitch_st. Bad value: N >= min_spacing puts the chain in the safe state (cfg_err), since a pulse the filter passes could then lose 4 counts silently (DESIGN 4.2) */
 #define LASERAX_REG_GLITCH_N_OFFSET 0x40u
 #define LASERAX_REG_GLITCH_N_WIDTH 8
 #define LASERAX_REG_GLITCH_N_WORDS 1
 #define LASERAX_REG_GLITCH_N_SIGNED 0
 #define LASERAX_REG_GLITCH_N_RESET 2LL
+#define LASERAX_REG_GLITCH_N_MIN 0LL
+#define LASERAX_REG_GLITCH_N_MAX 255LL
 /* sw_debounce: debounce length of the reference switch input */
 #define LASERAX_REG_SW_DEBOUNCE_OFFSET 0x48u
 #define LASERAX_REG_SW_DEBOUNCE_WIDTH 16
 #define LASERAX_REG_SW_DEBOUNCE_WORDS 1
 #define LASERAX_REG_SW_DEBOUNCE_SIGNED 0
 #define LASERAX_REG_SW_DEBOUNCE_RESET 16LL
-/* min_spacing: minimum spacing of counted A/B edges; closer edges set ovs_edge_st (0 = off) */
+/* min_spacing: minimum spacing of counted A/B edges; closer edges set ovs_edge_st. Every filter-passing pulse shorter than 2 * min_spacing that changes the count is flagged; set it below the shortest real edge spacing (reset 8 = 80 ns at 100 MHz). Bad value: min_spacing <= max(glitch_n, 1) puts the chain in the safe state (cfg_err); too large a value flags real motion with ovs_edge_st */
 #define LASERAX_REG_MIN_SPACING_OFFSET 0x50u
 #define LASERAX_REG_MIN_SPACING_WIDTH 16
 #define LASERAX_REG_MIN_SPACING_WORDS 1
 #define LASERAX_REG_MIN_SPACING_SIGNED 0
-#define LASERAX_REG_MIN_SPACING_RESET 0LL
+#define LASERAX_REG_MIN_SPACING_RESET 8LL
+#define LASERAX_REG_MIN_SPACING_MIN 2LL
+#define LASERAX_REG_MIN_SPACING_MAX 65535LL
 /* pace_m: output pacer: consecutive output counts at least M clocks apart */
 #define LASERAX_REG_PACE_M_OFFSET 0x58u
 #define LASERAX_REG_PACE_M_WIDTH 16
@@ -86,7 +90,7 @@
 #define LASERAX_REG_MARK_LEN_RESET 64LL
 #define LASERAX_REG_MARK_LEN_MIN 2LL
 #define LASERAX_REG_MARK_LEN_MAX 4096LL
-/* dac_width: width of the sin/cos DAC codes; limits the amplitude */
+/* dac_width: width of the sin/cos DAC codes; limits the amplitude. Bad value: outside 12..18 -> cfg_err; a table in use that does not fit (dac_width lowered without reloading the table) -> sin/cos clamped to +-(2^(dac_width-1)-1) and sticky dac_clip_st (part of alarm) */
 #define LASERAX_REG_DAC_WIDTH_OFFSET 0x70u
 #define LASERAX_REG_DAC_WIDTH_WIDTH 5
 #define LASERAX_REG_DAC_WIDTH_WORDS 1
@@ -94,7 +98,7 @@
 #define LASERAX_REG_DAC_WIDTH_RESET 16LL
 #define LASERAX_REG_DAC_WIDTH_MIN 12LL
 #define LASERAX_REG_DAC_WIDTH_MAX 18LL
-/* amplitude: sin/cos amplitude (the table value at a quarter period) */
+/* amplitude: sin/cos amplitude (the table value at a quarter period). Bad value: 0 or above 2^(dac_width-1)-1 -> cfg_err; a value that differs from the amplitude the table was computed for is not seen by the check: reload the table (lxt::program_dds); table words above the DAC range are clamped and flagged (dac_clip_st) */
 #define LASERAX_REG_AMPLITUDE_OFFSET 0x78u
 #define LASERAX_REG_AMPLITUDE_WIDTH 18
 #define LASERAX_REG_AMPLITUDE_WORDS 1
@@ -227,7 +231,7 @@
     X(COMP_OFFSET, 0x30u, 64, 1, 0LL) \
     X(GLITCH_N, 0x40u, 8, 0, 2LL) \
     X(SW_DEBOUNCE, 0x48u, 16, 0, 16LL) \
-    X(MIN_SPACING, 0x50u, 16, 0, 0LL) \
+    X(MIN_SPACING, 0x50u, 16, 0, 8LL) \
     X(PACE_M, 0x58u, 16, 0, 4LL) \
     X(BACKLOG_THR, 0x60u, 32, 0, 4096LL) \
     X(MARK_LEN, 0x68u, 13, 0, 64LL) \
