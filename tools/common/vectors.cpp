@@ -798,25 +798,18 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
     std::string dir = "out/vectors";
     uint64_t seed = 1;
     long long calls = 40000;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (i + 1 >= args.size()) {
-            std::fprintf(stderr, "laserax vectors: %s needs a value\n", a.c_str());
-            return 2;
-        }
-        const std::string& v = args[++i];
-        if (a == "--out") dir = v;
-        else if (a == "--seed") seed = std::strtoull(v.c_str(), nullptr, 0);
-        else if (a == "--calls") calls = std::strtoll(v.c_str(), nullptr, 0);
-        else {
-            std::fprintf(stderr, "laserax vectors: unknown option %s\n", a.c_str());
-            return 2;
-        }
+    cli c("laserax vectors", args, first,
+          "usage: laserax vectors [--out DIR] [--seed N] [--calls N]\n"
+          "  --out DIR    output folder, non-empty (default out/vectors)\n"
+          "  --seed N     random seed, 0..2^64-1 (default 1)\n"
+          "  --calls N    calls of the random part of each file, 100..100000000 (default 40000)\n");
+    while (c.next()) {
+        if (c.is("--out")) c.get_text(&dir);
+        else if (c.is("--seed")) c.get_u64(0, UINT64_MAX, &seed);
+        else if (c.is("--calls")) c.get_int(100, 100000000, &calls);
+        else c.unknown();
     }
-    if (calls < 100 || calls > 100000000) {
-        std::fprintf(stderr, "laserax vectors: --calls must be 100..1e8\n");
-        return 2;
-    }
+    if (c.failed()) return c.status();
     if (!make_dirs(dir, "laserax vectors")) return 1;
     std::vector<vec_table> tables;
     std::string err;
