@@ -111,7 +111,7 @@ BLOCKS = [
             OUT("err_cnt", 8),
             OUT("illegal_st", 1),
             OUT("ovs_st", 1),
-            OUT("lerr", 1),
+            OUT("lerr_out", 1, port="o_lerr"),  # column names are unique (input lerr)
             OUT("lerr_alarm", 1),
             OUT("glitch_st", 1),
         ],
