@@ -106,8 +106,12 @@ expect 2 'gantry: --resolution: 16 is below the period'             gantry --res
 expect 2 'gantry: --phase1 / --phase2: must be 0..P-1'              gantry --period 64 --phase1 64
 expect 2 'gantry: --seed: -1 is out of range'                       gantry --seed -1
 expect 2 'gantry: --map-grid: 0 is out of range'                    gantry --map-grid 0
-expect 2 'compensate: --temp-c: not a number'                       compensate --temp-c abc
-expect 2 'compensate: --temp-c: not a number'                       compensate --temp-c 1e400
+expect 2 "compensate: --temp-c: 'abc' is not a finite number"       compensate --temp-c abc
+expect 2 "compensate: --temp-c: '1e400' is not a finite number"     compensate --temp-c 1e400
+expect 2 'compensate: --rh: 101 is out of range \(allowed \[0, 100\]\)' compensate --rh 101
+expect 2 "compensate: --equation: 'foo' is not allowed \(allowed edlen, ciddor\)" compensate --equation foo
+expect 2 'compensate: --material: empty value'                      compensate --material ''
+expect 2 'compensate: --pressure-pa: needs a value'                 compensate --pressure-pa
 
 echo "cli_bad_invocations: $cases cases, $fails failed"
 [ "$fails" = 0 ]

@@ -126,8 +126,8 @@ bool make_dirs(const std::string& path, const char* who) {
 
 // ---- cli ------------------------------------------------------------------------------------
 
-cli::cli(std::string cmd, const std::vector<std::string>& args, size_t first, std::string usage)
-    : cmd_(std::move(cmd)), usage_(std::move(usage)), args_(args), i_(first) {}
+cli::cli(std::string cmd, const std::vector<std::string>& args, size_t first, std::string usage, FILE* out, FILE* err)
+    : cmd_(std::move(cmd)), usage_(std::move(usage)), out_(out), err_(err), args_(args), i_(first) {}
 
 bool cli::next() {
     if (done_ || i_ >= args_.size()) {
@@ -136,7 +136,7 @@ bool cli::next() {
     }
     opt_ = args_[i_++];
     if (opt_ == "--help" || opt_ == "-h") {
-        std::printf("%s", usage_.c_str());
+        std::fprintf(out_, "%s", usage_.c_str());
         done_ = true;
         status_ = 0;
         return false;
@@ -146,14 +146,14 @@ bool cli::next() {
 
 void cli::error(const std::string& what) {
     if (done_) return;
-    std::fprintf(stderr, "%s: %s: %s\n", cmd_.c_str(), opt_.c_str(), what.c_str());
+    std::fprintf(err_, "%s: %s: %s\n", cmd_.c_str(), opt_.c_str(), what.c_str());
     done_ = true;
     status_ = 2;
 }
 
 void cli::unknown() {
     if (done_) return;
-    std::fprintf(stderr, "%s: unknown option '%s' (--help lists the options)\n", cmd_.c_str(), opt_.c_str());
+    std::fprintf(err_, "%s: unknown option '%s' (--help lists the options)\n", cmd_.c_str(), opt_.c_str());
     done_ = true;
     status_ = 2;
 }

@@ -12,6 +12,7 @@
 #define LASERAX_TOOLS_CLI_UTIL_H
 
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -37,7 +38,9 @@ bool make_dirs(const std::string& path, const char* who);
 // loop; --help / -h prints the usage to stdout and stops the loop.
 class cli {
 public:
-    cli(std::string cmd, const std::vector<std::string>& args, size_t first, std::string usage);
+    // out / err: where --help and the error messages go (stdout / stderr unless given)
+    cli(std::string cmd, const std::vector<std::string>& args, size_t first, std::string usage, FILE* out = stdout,
+        FILE* err = stderr);
     bool next();                           // false at the end, after an error or after --help
     bool is(const char* opt) const { return opt_ == opt; }
     const std::string& opt() const { return opt_; }
@@ -56,6 +59,8 @@ public:
 
 private:
     std::string cmd_, usage_, opt_;
+    FILE* out_;
+    FILE* err_;
     const std::vector<std::string>& args_;
     size_t i_;
     bool done_ = false;
