@@ -1,7 +1,7 @@
 # laserax — top-level entry points. Every target works on a fresh Debian machine: `deps`
 # installs what is missing (as root) or prints the apt command to run.
 #
-#   make deps | build | run [ARGS=...] | test | soak | bench | vectors | plot | synth | clean
+#   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | clean
 #
 # Variables: BUILD_DIR (build), ASAN_DIR (build-asan), BUILD_TYPE (Release), JOBS (2),
 #            ARGS (arguments after `laserax run`), ASAN=0 (make test without the sanitizer pass),
@@ -18,7 +18,7 @@ PYTHON     := /usr/bin/python3
 OUT        := out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all help deps build run test soak bench vectors plot clean
+.PHONY: all help deps build run test soak fuzz bench vectors plot clean
 
 all: build
 
@@ -44,6 +44,12 @@ test: build
 
 soak: build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS) -L '^soak$$'
+
+# libFuzzer targets (fuzz/*.cpp, clang++) built in $(BUILD_DIR)/fuzz and run FUZZ_SECONDS each on
+# their committed corpus (fuzz/corpus/<target>); new inputs go to $(BUILD_DIR)/fuzz/corpus-new.
+FUZZ_SECONDS ?= 300
+fuzz: deps
+	FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh long $(BUILD_DIR)/fuzz
 
 bench: build
 	@test -x $(BUILD_DIR)/bench || { echo "make bench: $(BUILD_DIR)/bench was not built (no tools/bench.cpp yet?)" >&2; exit 1; }

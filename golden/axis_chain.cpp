@@ -1,6 +1,7 @@
 // golden/axis_chain.cpp — see axis_chain.h (DESIGN.md 4.7).
 #include "golden/axis_chain.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace golden {
@@ -15,7 +16,8 @@ bool config_ok(const axis_regs& r) {
            r.dac_width >= 12 && r.dac_width <= 18 &&                       //
            r.amplitude >= 1 && r.amplitude <= (int64_t{1} << (r.dac_width - 1)) - 1 &&  //
            r.tbl_period == P &&                                            //
-           r.mark_len >= P / 4 && r.mark_len <= P;
+           r.mark_len >= P / 4 && r.mark_len <= P &&                       //
+           r.min_spacing > std::max<int64_t>(r.glitch_n, 1);  // count integrity (DESIGN 4.2)
 }
 
 void axis_chain::reset() {
@@ -70,8 +72,19 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
                                          dec_q_.lerr, regs.period, regs.mark_len);
     const dds_sincos::out dds_o = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
 
-    o.sin = dds_o.sin;
-    o.cos = dds_o.cos;
+    // DAC range guard (DESIGN 4.7): codes clamped to +-(2^(dac_width-1) - 1); a clamp sets the
+    // sticky dac_clip_st (clear acts first, an event in the same call wins)
+    const int64_t dac_hi = (int64_t{1} << (regs.dac_width - 1)) - 1;
+    bool clip = false;
+    const auto clamp = [&](int64_t v) {
+        if (v > dac_hi || v < -dac_hi) clip = true;
+        return std::min(std::max(v, -dac_hi), dac_hi);
+    };
+    o.sin = clamp(dds_o.sin);
+    o.cos = clamp(dds_o.cos);
+    if (regs.clear) dac_clip_st_ = false;
+    if (clip) dac_clip_st_ = true;
+    o.dac_clip_st = dac_clip_st_;
 
     // digital outputs from the rephase output of call t-2: index = out_pos mod 4 (true modulo),
     // 0->(0,0), 1->(1,0), 2->(1,1), 3->(0,1)
@@ -91,7 +104,8 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     o.ovs_backlog_st = pac_o.ovs_st;
     o.glitch_st = dec_o.glitch_st;
     o.map_cfg_err = emap_o.cfg_err;
-    o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err || o.map_cfg_err;
+    o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err || o.map_cfg_err ||
+              o.dac_clip_st;
 
     o.raw_count = dec_o.raw_count;
     o.step = dec_o.step;

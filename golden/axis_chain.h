@@ -41,7 +41,7 @@ struct axis_regs {
     bool comp_commit = false; // pulse (DESIGN 4.7)
     int64_t glitch_n = 2;
     int64_t sw_debounce = 16;
-    int64_t min_spacing = 0;
+    int64_t min_spacing = 8;
     int64_t pace_m = 4;
     uint64_t backlog_thr = 4096;
     int64_t mark_len = 64;
@@ -65,6 +65,7 @@ struct axis_out {
     bool homed, lerr_alarm, illegal_st;
     int err_cnt;
     bool ovs_edge_st, ovs_backlog_st, glitch_st, alarm;
+    bool dac_clip_st;  // sticky: a sin/cos code outside +-(2^(dac_width-1) - 1) was clamped
     /* taps = the registered outputs of each block at this call */
     int64_t raw_count;
     int step;
@@ -79,7 +80,8 @@ struct axis_out {
 };
 
 // DESIGN 4.7: 8 <= P <= 4096, P % 8 == 0, ratio != 0, 2 <= pace_m, 12 <= dac_width <= 18,
-// 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P.
+// 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P,
+// min_spacing > max(glitch_n, 1) (count integrity, DESIGN 4.2).
 bool config_ok(const axis_regs& r);
 
 class axis_chain {
@@ -107,6 +109,7 @@ private:
     uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
     int64_t offset_held_ = 0;                // comp_offset in force
     bool was_running_ = false;   // the previous call ran with a valid configuration
+    bool dac_clip_st_ = false;   // DAC range guard (DESIGN 4.7), reset with the chain
 };
 
 }  // namespace golden

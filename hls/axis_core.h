@@ -48,7 +48,7 @@ struct axis_regs {
     bool comp_commit = false;
     quad_decoder_cfg::glitch_t glitch_n = 2;
     axis_core_cfg::debounce_t sw_debounce = 16;
-    quad_decoder_cfg::spacing_t min_spacing = 0;
+    quad_decoder_cfg::spacing_t min_spacing = 8;
     output_pacer_cfg::pace_t pace_m = 4;
     output_pacer_cfg::thr_t backlog_thr = 4096;
     period_t mark_len = axis_core_cfg::PERIOD_DEFAULT / 4;
@@ -78,6 +78,7 @@ struct axis_out {
     bool homed, lerr_alarm, illegal_st;
     quad_decoder_cfg::errcnt_t err_cnt;
     bool ovs_edge_st, ovs_backlog_st, glitch_st, alarm;
+    bool dac_clip_st;  // sticky: a DDS code outside +-(2^(dac_width-1) - 1) was clamped (DAC range guard)
     // taps: registered outputs of each block at this call
     raw_t raw_count;
     step_t step;
@@ -113,7 +114,12 @@ inline bool axis_config_ok(const axis_regs& r) {
         amp_ok = r.amplitude >= 1 && r.amplitude <= amp_max;
     }
     const bool mark_ok = r.mark_len >= (r.period >> 2) && r.mark_len <= r.period;
-    return period_ok && width_ok && amp_ok && mark_ok && r.ratio != 0 && r.pace_m >= 2 &&
+    // count integrity (DESIGN §4.2): a pulse the glitch filter passes must be caught by the edge
+    // spacing check, so min_spacing > max(glitch_n, 1) (one 16-bit comparator)
+    const quad_decoder_cfg::spacing_t glitch_floor =
+        (r.glitch_n == 0) ? quad_decoder_cfg::spacing_t(1) : quad_decoder_cfg::spacing_t(r.glitch_n);
+    const bool spacing_ok = r.min_spacing > glitch_floor;
+    return period_ok && width_ok && amp_ok && mark_ok && spacing_ok && r.ratio != 0 && r.pace_m >= 2 &&
            r.tbl_period == r.period;
 }
 
@@ -136,6 +142,7 @@ public:
         rep_.reset();
         dds_.reset();
         emap_.reset();  // pipeline only, not the table RAM
+        dac_clip_st_ = false;
         swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
         dec_q_ = quad_decoder::out_t{};
         mul_q_ = pulse_multiplier::out_t{};
@@ -184,8 +191,15 @@ public:
                                              dec_q_.lerr, regs.period, regs.mark_len);
         const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
 
-        o.sin = dds.sin;
-        o.cos = dds.cos;
+        // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
+        // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
+        const dac_t dac_hi = dac_t((dds_sincos_cfg::amp_t(1) << (regs.dac_width - 1)) - 1);
+        bool clip = false;
+        o.sin = clamp_dac(dds.sin, dac_hi, clip);
+        o.cos = clamp_dac(dds.cos, dac_hi, clip);
+        if (regs.clear) dac_clip_st_ = false;
+        if (clip) dac_clip_st_ = true;
+        o.dac_clip_st = dac_clip_st_;
         quad_levels(rep_q2_.out_pos, o.qa, o.qb);
         o.qz = rep_q2_.mark;
         o.ref_mark = rep_q2_.mark;
@@ -199,7 +213,7 @@ public:
         o.ovs_backlog_st = pac.ovs_st;
         o.glitch_st = dec.glitch_st;
         o.map_cfg_err = emap.cfg_err;
-        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err;
+        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_;
         o.raw_count = dec.raw_count;
         o.step = dec.step;
         o.comp_pos = mul.comp;
@@ -248,6 +262,19 @@ private:
     ratio_t ratio_h_ = axis_core_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
     offset_t offset_h_ = 0;                           // comp_offset in force
     bool run_q_ = false;     // the previous call ran with a valid configuration
+    bool dac_clip_st_ = false;  // DAC range guard sticky flag
+
+    static dac_t clamp_dac(dac_t v, dac_t hi, bool& clip) {
+        if (v > hi) {
+            clip = true;
+            return hi;
+        }
+        if (v < dac_t(-hi)) {
+            clip = true;
+            return dac_t(-hi);
+        }
+        return v;
+    }
 };
 
 }  // namespace lx

@@ -53,12 +53,12 @@ constexpr int SW_DEBOUNCE_WIDTH = 16;
 constexpr int SW_DEBOUNCE_WORDS = 1;
 constexpr bool SW_DEBOUNCE_SIGNED = false;
 constexpr long long SW_DEBOUNCE_RESET = 16LL;
-// min_spacing: 0x50, 16 bits unsigned, rw, reset 0
+// min_spacing: 0x50, 16 bits unsigned, rw, reset 8
 constexpr unsigned MIN_SPACING_OFFSET = 0x50;
 constexpr int MIN_SPACING_WIDTH = 16;
 constexpr int MIN_SPACING_WORDS = 1;
 constexpr bool MIN_SPACING_SIGNED = false;
-constexpr long long MIN_SPACING_RESET = 0LL;
+constexpr long long MIN_SPACING_RESET = 8LL;
 // pace_m: 0x58, 16 bits unsigned, rw, reset 4
 constexpr unsigned PACE_M_OFFSET = 0x58;
 constexpr int PACE_M_WIDTH = 16;

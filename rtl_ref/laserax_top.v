@@ -88,6 +88,7 @@ module laserax_top #(
     output wire               o_ovs_backlog_st,
     output wire               o_glitch_st,
     output wire               o_alarm,
+    output wire               o_dac_clip_st,    // sticky: a sin/cos code was clamped (DAC range guard)
     // taps: registered outputs of each block at this call
     output wire signed [31:0] o_raw_count,
     output wire signed [1:0]  o_step,
@@ -147,7 +148,10 @@ module laserax_top #(
     wire [17:0] amp_max   = (18'd1 << (i_dac_width - 5'd1)) - 18'd1;   // used only if width_ok
     wire        amp_ok    = width_ok && i_amplitude >= 18'd1 && i_amplitude <= amp_max;
     wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
-    wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && i_ratio != 37'd0 &&
+    // count integrity (DESIGN 4.2): min_spacing > max(glitch_n, 1)
+    wire [7:0]  glitch_fl = (i_glitch_n == 8'd0) ? 8'd1 : i_glitch_n;
+    wire        spacing_ok = i_min_spacing > {8'd0, glitch_fl};
+    wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && spacing_ok && i_ratio != 37'd0 &&
                             ratio_eff != 37'd0 &&
                             i_pace_m >= 16'd2 && i_tbl_period == i_period;
 
@@ -272,8 +276,32 @@ module laserax_top #(
     assign o_qb     = out_pos2_q == 2'd2 || out_pos2_q == 2'd3;
     assign o_qz     = out_mark2_q;
     assign o_ref_mark = out_mark2_q;
-    assign o_sin    = dds_sin;
-    assign o_cos    = dds_cos;
+    // DAC range guard (DESIGN 4.7): the codes of call t are the DDS registers clamped to
+    // +-(2^(dac_width-1) - 1) with the dac_width of call t; a clamp sets the sticky dac_clip_st
+    // (clear of call t acts first, the event wins; reset with the chain). dac_width and clear of
+    // call t are registered with the DDS outputs, so the clamp sits after registers only.
+    reg  [4:0]         dacw_q;
+    reg                clear_q, clip_st_q;
+    wire signed [17:0] dac_hi   = $signed((18'd1 << (dacw_q - 5'd1)) - 18'd1);
+    wire               run_now  = !cfg_err_q;    // dac_width is legal (12..18) in a running call
+    wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < -dac_hi;
+    wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < -dac_hi;
+    wire               clip_now = sin_hi || sin_lo || cos_hi || cos_lo;
+    wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_now);
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            dacw_q    <= 5'd16;
+            clear_q   <= 1'b0;
+            clip_st_q <= 1'b0;
+        end else begin
+            dacw_q    <= i_dac_width;
+            clear_q   <= i_clear;
+            clip_st_q <= clip_st;
+        end
+    end
+    assign o_sin    = sin_hi ? dac_hi : (sin_lo ? -dac_hi : dds_sin);
+    assign o_cos    = cos_hi ? dac_hi : (cos_lo ? -dac_hi : dds_cos);
+    assign o_dac_clip_st = clip_st;
 
     // ---- status (block registers are in their reset state after a safe-state call) -----------
     assign o_cfg_err        = cfg_err_q;
@@ -286,7 +314,7 @@ module laserax_top #(
     assign o_ovs_backlog_st = pac_ovs_st;
     assign o_glitch_st      = dec_glitch_st;
     assign o_alarm          = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st ||
-                              map_cfg_err;
+                              map_cfg_err || clip_st;
     assign o_map_cfg_err    = map_cfg_err;
 
     // ---- taps --------------------------------------------------------------------------------

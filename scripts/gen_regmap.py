@@ -1012,7 +1012,9 @@ Conventions:
 %s
 
 Cross-register rules (checked by the configuration check every clock, DESIGN §4.7):
-`tbl_period == period`, `period/4 <= mark_len <= period`, `amplitude <= 2^(dac_width-1) - 1`.
+`tbl_period == period`, `period/4 <= mark_len <= period`, `amplitude <= 2^(dac_width-1) - 1`,
+`max(glitch_n, 1) < min_spacing` (count integrity, DESIGN §4.2: a pulse that passes the glitch
+filter and would change the count is always caught by the edge spacing check, `ovs_edge_st`).
 Table load (DESIGN §4.6, §4.7; `lxt::program_dds` writes exactly this sequence): `tbl_period` = 0
 first (the configuration is invalid from the next call on: safe state, `cfg_err`, so the DDS
 never reads a half-written table), then per word k = 0 .. P/4-1 `tbl_addr` = k, `tbl_data` =

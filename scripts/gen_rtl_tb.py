@@ -111,7 +111,7 @@ BLOCKS = [
             OUT("err_cnt", 8),
             OUT("illegal_st", 1),
             OUT("ovs_st", 1),
-            OUT("lerr", 1),
+            OUT("lerr_out", 1, port="o_lerr"),  # column names are unique (input lerr)
             OUT("lerr_alarm", 1),
             OUT("glitch_st", 1),
         ],
@@ -378,6 +378,8 @@ BLOCKS = [
             OUT("corr", 17, S),
             OUT("map_delta", 18, S),
         ],
+        # the DAC range guard's sticky flag is not a vector column yet; it is part of alarm, which is
+        unused=[OUT("dac_clip_st", 1)],
         **TBL,
     ),
 ]
@@ -457,6 +459,7 @@ BLOCKS += [
             ", and the chain (hls/axis_core.h) stepped with the registers before each edge's write "
             "(a write completing at edge t acts in call t+1)"),
         fields=[IN("a", 1), IN("b", 1), IN("sw", 1), IN("lerr", 1)] + AXIL_FIELDS + TOP_OUTPUTS,
+        unused=[OUT("dac_clip_st", 1)],  # part of alarm (a column)
         **TBL,
     ),
 ]

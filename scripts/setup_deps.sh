@@ -21,6 +21,12 @@ missing_packages() {
     command -v iverilog       >/dev/null 2>&1 || echo iverilog
     command -v yosys          >/dev/null 2>&1 || echo yosys
     command -v nextpnr-ice40  >/dev/null 2>&1 || echo nextpnr-ice40
+    command -v clang++        >/dev/null 2>&1 || echo clang
+    # libFuzzer runtime (make fuzz, CTest fuzz_short): Debian's clang ships it in libclang-rt-N-dev
+    if command -v clang++ >/dev/null 2>&1 && ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a \
+            >/dev/null 2>&1; then
+        echo "libclang-rt-$(clang++ -dumpversion | cut -d. -f1)-dev"
+    fi
     if [ ! -x "$PY" ]; then
         echo python3; echo python3-numpy; echo python3-matplotlib
     elif ! "$PY" -c 'import numpy, matplotlib' >/dev/null 2>&1; then
@@ -31,7 +37,7 @@ missing_packages() {
 
 mapfile -t missing < <(missing_packages)
 if [ "${#missing[@]}" -eq 0 ]; then
-    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 $PY+numpy+matplotlib)"
+    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 clang+libFuzzer $PY+numpy+matplotlib)"
     exit 0
 fi
 

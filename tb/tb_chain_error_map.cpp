@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     s.sw_debounce = 4;
     s.pace_m = 2;
     s.backlog_thr = 1u << 30;  // large corrections must not raise the backlog alarm here
-    s.min_spacing = 0;
+    s.min_spacing = 2;
     lxt::dual_axis ax(s);
     lxt::controller_decoder dec;
     dec.reset(static_cast<int>(s.period), 0);

@@ -98,6 +98,14 @@ bool set_with_rule(lxt::reg_image& img, int i, int64_t v) {
         img.set(rm::idx::tbl_period, p);
         return true;
     }
+    if (std::strcmp(r.name, "glitch_n") == 0) {
+        img.set(rm::idx::min_spacing, rm::kRegs[rm::idx::min_spacing].max);  // every glitch_n below it
+        return true;
+    }
+    if (std::strcmp(r.name, "min_spacing") == 0) {
+        img.set(rm::idx::glitch_n, 0);  // max(0, 1) = 1: every min_spacing >= 2 is legal
+        return true;
+    }
     if (rule.find("dac_width") != std::string::npos) {
         img.set(rm::idx::dac_width, rm::kRegs[rm::idx::dac_width].max);  // the widest: the largest amplitude
         return true;

@@ -483,11 +483,11 @@ int main(int argc, char** argv) {
         } bad[] = {
             {"--bogus 1", "unknown option"},
             {"--temp-c", "needs a value"},
-            {"--temp-c abc", "not a number"},
-            {"--temp-c 20x", "not a number"},
+            {"--temp-c abc", "is not a finite number"},
+            {"--temp-c 20x", "is not a finite number"},
             {"--temp-c 45 --equation edlen", "temperature"},
             {"--temp-c 101", "temperature"},
-            {"--rh 120", "humidity"},
+            {"--rh 120", "--rh: 120 is out of range"},
             {"--pressure-kpa 5", "pressure"},
             {"--pressure-pa 101325 --pressure-kpa 101.325", "once"},
             {"--wavelength-nm 2000", "wavelength"},
@@ -497,8 +497,8 @@ int main(int argc, char** argv) {
             {"--material steel --alpha-ppm 11", "not both"},
             {"--alpha-ppm 500", "expansion coefficient"},
             {"--material invar --material-temp-c 120", "material temperature"},
-            {"--equation lorentz", "edlen or ciddor"},
-            {"--temp-c nan", "not a number"},
+            {"--equation lorentz", "allowed edlen, ciddor"},
+            {"--temp-c nan", "is not a finite number"},
         };
         int n_bad = 0;
         for (const auto& b : bad) {

@@ -10,6 +10,9 @@
 //   name: a replay fails if the file has an input column it does not apply or an output column it
 //   cannot compare, so a new column cannot go unchecked;
 // * malformed files (truncated row, bad number, wrong header, wrong hex width, bad hex digit,
+//   and the strict-reader cases of issue 12: field direction / width / signedness words, a field
+//   line after the header, a CR inside a number, duplicate names, a negative unsigned (64-bit)
+//   value, a leading +, no data rows, an empty hex file; each with FILE:LINE: reason),
 //   value too wide) are rejected with a message, not a crash.
 #include <unistd.h>
 
@@ -285,6 +288,53 @@ int main(int argc, char** argv) {
     for (const std::string& m : hex_bad) {
         err.clear();
         res.check(!lxt::vec_from_hex(m, layout, t, &err) && !err.empty(), "malformed hex accepted: " + m);
+    }
+    // strict reader (issue 12): each case rejected with "FILE:LINE: reason"
+    {
+        const std::string ok = "# field a in 4 signed\n# field u out 64 unsigned\na,u\n-3,7\n";
+        err.clear();
+        res.check(lxt::vec_from_csv(ok, t, &err, "ok.csv") && t.rows.size() == 1 && t.rows[0][0] == -3,
+                  "well-formed small CSV rejected: " + err);
+        struct bad_case {
+            std::string text, file_line, reason;
+        };
+        const bad_case cases[] = {
+            {"# field a inout 4 signed\na\n1\n", "b.csv:1: ", "direction 'inout' is not in or out"},
+            {"# field a in 4x signed\na\n1\n", "b.csv:1: ", "width '4x' is not 1..64"},
+            {"# field a in 0 signed\na\n1\n", "b.csv:1: ", "width '0' is not 1..64"},
+            {"# field a in 65 signed\na\n1\n", "b.csv:1: ", "width '65' is not 1..64"},
+            {"# field a in -4 signed\na\n1\n", "b.csv:1: ", "width '-4' is not 1..64"},
+            {"# field a in 4 sign\na\n1\n", "b.csv:1: ", "'sign' is not signed or unsigned"},
+            {"# field a in 4 signed extra\na\n1\n", "b.csv:1: ", "malformed field declaration"},
+            {"# field a in 4 signed\na\n# field b in 4 signed\n1\n", "b.csv:3: ", "a '# field' line after the header"},
+            {"# field a in 4 signed\na\n1\r2\n", "b.csv:3: ", "not an integer '1\r2'"},
+            {"# field a in 4 signed\n# field a in 4 signed\na,a\n1,1\n", "b.csv:2: ", "duplicate field 'a'"},
+            {"# field u in 64 unsigned\nu\n-1\n", "b.csv:3: ", "-1 does not fit 64 unsigned bits"},
+            {"# field u in 8 unsigned\nu\n-1\n", "b.csv:3: ", "-1 does not fit 8 unsigned bits"},
+            {"# field a in 4 signed\na\n+1\n", "b.csv:3: ", "not an integer '+1'"},
+            {"# field a in 4 signed\na\n 1\n", "b.csv:3: ", "not an integer ' 1'"},
+            {"# field a in 64 signed\na\n9223372036854775808\n", "b.csv:3: ", "not an integer"},
+            {"# field a in 4 signed\na\n", "b.csv:2: ", "no data rows"},
+            {"# field A in 4 signed\nA\n1\n", "b.csv:1: ", "malformed field name 'A'"},
+        };
+        for (const bad_case& c : cases) {
+            err.clear();
+            const bool okr = lxt::vec_from_csv(c.text, t, &err, "b.csv");
+            res.check(!okr && err.find(c.file_line) == 0 && err.find(c.reason) != std::string::npos,
+                      "strict CSV reader: want '" + c.file_line + "..." + c.reason + "', got '" + err + "' (accepted: " +
+                          (okr ? "yes" : "no") + ")");
+        }
+        const std::string hex_empty[] = {"", "// a comment only\n", "\n\n"};
+        for (const std::string& m : hex_empty) {
+            err.clear();
+            res.check(!lxt::vec_from_hex(m, layout, t, &err, "e.hex") && err.find("e.hex:") == 0 &&
+                          err.find("no data rows") != std::string::npos,
+                      "empty hex file accepted or wrong message: '" + err + "'");
+        }
+        err.clear();
+        res.check(!lxt::vec_from_hex("zz" + std::string(width - 2, '0') + "\n", layout, t, &err, "z.hex") &&
+                      err.find("z.hex:1: not a hex digit") == 0,
+                  "hex message names file and line: '" + err + "'");
     }
     res.check(!lxt::read_file(dir + "/no_such_file.csv", text, &err), "missing file not reported");
     std::system(("rm -rf " + dir).c_str());

@@ -32,95 +32,81 @@ const char* kUsage =
     "       laserax compensate [--temp-c T] [--pressure-kpa P] [--rh RH] [--material M] ...  (--help)\n"
     "       laserax pso [options] | laserax counters [options] | laserax gantry [options]   (--help for each)\n"
     "run options:\n"
-    "  --pitch-um U      sin/cos period in um: 20, 25, 40, 50, 100 (default 20 = 256 counts)\n"
+    "  --pitch-um U      sin/cos period in um, a multiple of 8 counts of 78.125 nm, 0.625..320\n"
+    "                    (e.g. 20, 25, 40, 50, 100; default 20 = 256 counts)\n"
     "  --period P        period in output counts (8..4096, multiple of 8); overrides --pitch-um\n"
     "  --dir D           homing direction, +1 or -1 (default +1)\n"
-    "  --speed MM_S      homing speed in mm/s (default 5)\n"
-    "  --air-index N     refractive index of air (default 1.000271)\n"
+    "  --speed MM_S      homing speed in mm/s, 0.01..1000 (default 5)\n"
+    "  --air-index N     refractive index of air, [1, 1.01) (default 1.000271)\n"
     "  --air-temp-c T, --pressure-kpa P, --rh H       air for the Ciddor equation (sets the index)\n"
     "  --alpha-ppm A, --material-temp-c TM           workpiece expansion folded into the ratio\n"
     "  --origin-um X     thermal origin (K168) from raw count 0, written to the comp_offset register\n"
-    "  --ratio R         ratio register, Q5.32 integer (default from the air index)\n"
-    "  --seed S          power-up position and fringe phase (default 1)\n"
-    "  --cycles N        stop after N clocks (default: when the run is complete)\n"
-    "  --bounce-nm X     switch contact bounce zone (default 0)\n"
+    "  --air-temp-c -40..100, --pressure-kpa 10..200, --rh 0..100, --alpha-ppm -100..100,\n"
+    "  --material-temp-c -40..100, --origin-um -1e6..1e6\n"
+    "  --ratio R         ratio register, Q5.32 integer 1..2^37-1 (default from the air index)\n"
+    "  --seed S          power-up position and fringe phase, 0..2^64-1 (default 1)\n"
+    "  --cycles N        stop after N clocks, 1..50000000 (default: when the run is complete;\n"
+    "                    a run stops at 50000000 clocks in any case)\n"
+    "  --bounce-nm X     switch contact bounce zone, 0..1e6 (default 0)\n"
     "  --out DIR         output folder (default out)\n"
     "  --every-clock     trace.csv gets a row for every clock\n"
     "  --no-plot         do not call the plotting script\n";
 
 
-struct args {
-    std::vector<std::string> v;
-    size_t i = 0;
-    bool more() const { return i < v.size(); }
-    std::string next(const std::string& opt) {
-        if (i >= v.size()) {
-            std::fprintf(stderr, "laserax: %s needs a value\n%s", opt.c_str(), kUsage);
-            std::exit(2);
-        }
-        return v[i++];
-    }
-};
+// The run's cycle cap: a homing run stops after at most this many clocks (0.5 s at 100 MHz).
+constexpr long long kMaxCycles = 50000000;
 
-double to_double(const std::string& s, const std::string& opt) {
-    char* end = nullptr;
-    const double x = std::strtod(s.c_str(), &end);
-    if (end == s.c_str() || *end != '\0' || !std::isfinite(x)) {
-        std::fprintf(stderr, "laserax: %s: not a number: '%s'\n", opt.c_str(), s.c_str());
-        std::exit(2);
-    }
-    return x;
-}
-
-long long to_ll(const std::string& s, const std::string& opt) {
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(s.c_str(), &end, 0);
-    if (end == s.c_str() || *end != '\0' || errno != 0) {
-        std::fprintf(stderr, "laserax: %s: not an integer: '%s'\n", opt.c_str(), s.c_str());
-        std::exit(2);
-    }
-    return x;
-}
-
-int cmd_run(args& a, const std::string& cmdline) {
+int cmd_run(const std::vector<std::string>& argv, size_t first, const std::string& cmdline) {
     lxt::homing_params p;
     std::string out = "out";
     bool every = false, plot = true;
     lxt::comp_inputs env;
     bool use_env = false;
-    while (a.more()) {
-        const std::string o = a.next("");
-        if (o == "--pitch-um") {
-            const double um = to_double(a.next(o), o);
-            const double counts = um * 1000.0 / lxt::kOutputCountNm;
-            if (counts != std::floor(counts)) {
-                std::fprintf(stderr, "laserax: --pitch-um %g is not a whole number of 78.125 nm counts\n", um);
-                return 2;
+    lxt::cli c("laserax run", argv, first, kUsage);
+    bool have_period = false, have_ratio = false;
+    double pitch_um = 0;
+    bool have_pitch = false;
+    while (c.next()) {
+        if (c.is("--pitch-um")) have_pitch = c.get_real(0.625, 320.0, &pitch_um);
+        else if (c.is("--period")) have_period = c.get_int(8, 4096, &p.period, 8);
+        else if (c.is("--dir")) {
+            std::string d;
+            if (c.get_choice({"+1", "1", "-1"}, &d)) p.dir = d == "-1" ? -1 : 1;
+        } else if (c.is("--speed")) c.get_real(0.01, 1000.0, &p.speed_mm_s);
+        else if (c.is("--air-index")) c.get_real(1.0, 1.01, &p.air_index, false, true);
+        else if (c.is("--air-temp-c")) use_env = c.get_real(-40.0, 100.0, &env.air_temp_c) || use_env;
+        else if (c.is("--pressure-kpa")) {
+            double kpa = 0;
+            if (c.get_real(10.0, 200.0, &kpa)) {
+                env.pressure_pa = 1000.0 * kpa;
+                use_env = true;
             }
-            p.period = static_cast<int>(counts);
-        } else if (o == "--period") p.period = static_cast<int>(to_ll(a.next(o), o));
-        else if (o == "--dir") p.dir = static_cast<int>(to_ll(a.next(o), o));
-        else if (o == "--speed") p.speed_mm_s = to_double(a.next(o), o);
-        else if (o == "--air-index") p.air_index = to_double(a.next(o), o);
-        else if (o == "--air-temp-c") { env.air_temp_c = to_double(a.next(o), o); use_env = true; }
-        else if (o == "--pressure-kpa") { env.pressure_pa = 1000.0 * to_double(a.next(o), o); use_env = true; }
-        else if (o == "--rh") { env.rh_percent = to_double(a.next(o), o); use_env = true; }
-        else if (o == "--alpha-ppm") { env.alpha_ppm_per_c = to_double(a.next(o), o); use_env = true; }
-        else if (o == "--material-temp-c") { env.material_temp_c = to_double(a.next(o), o); use_env = true; }
-        else if (o == "--origin-um") { env.origin_um = to_double(a.next(o), o); use_env = true; }
-        else if (o == "--ratio") p.ratio = static_cast<uint64_t>(to_ll(a.next(o), o));
-        else if (o == "--seed") p.seed = static_cast<uint64_t>(to_ll(a.next(o), o));
-        else if (o == "--cycles") p.max_cycles = to_ll(a.next(o), o);
-        else if (o == "--bounce-nm") p.bounce_nm = to_double(a.next(o), o);
-        else if (o == "--out") out = a.next(o);
-        else if (o == "--every-clock") every = true;
-        else if (o == "--no-plot") plot = false;
-        else {
-            std::fprintf(stderr, "laserax: unknown option '%s'\n%s", o.c_str(), kUsage);
+        } else if (c.is("--rh")) use_env = c.get_real(0.0, 100.0, &env.rh_percent) || use_env;
+        else if (c.is("--alpha-ppm")) use_env = c.get_real(-100.0, 100.0, &env.alpha_ppm_per_c) || use_env;
+        else if (c.is("--material-temp-c")) use_env = c.get_real(-40.0, 100.0, &env.material_temp_c) || use_env;
+        else if (c.is("--origin-um")) use_env = c.get_real(-1e6, 1e6, &env.origin_um) || use_env;
+        else if (c.is("--ratio")) have_ratio = c.get_u64(1, (uint64_t(1) << 37) - 1, &p.ratio);
+        else if (c.is("--seed")) c.get_u64(0, UINT64_MAX, &p.seed);
+        else if (c.is("--cycles")) c.get_int(1, kMaxCycles, &p.max_cycles);
+        else if (c.is("--bounce-nm")) c.get_real(0.0, 1e6, &p.bounce_nm);
+        else if (c.is("--out")) c.get_text(&out);
+        else if (c.is("--every-clock")) every = true;
+        else if (c.is("--no-plot")) plot = false;
+        else c.unknown();
+    }
+    if (c.failed()) return c.status();
+    if (have_pitch && !have_period) {
+        const double counts = pitch_um * 1000.0 / lxt::kOutputCountNm;  // 1 .. 4096: fits an int
+        if (counts != std::floor(counts) || static_cast<int>(counts) % 8 != 0 || counts < 8) {
+            std::fprintf(stderr,
+                         "laserax run: --pitch-um: %g um is not a legal period (allowed: a multiple of 8 counts of "
+                         "78.125 nm, 0.625 .. 320 um)\n",
+                         pitch_um);
             return 2;
         }
+        p.period = static_cast<int>(counts);
     }
+    if (p.max_cycles == 0) p.max_cycles = kMaxCycles;  // the cap (the user cannot pass 0)
     if (p.period < 8 || p.period > 4096 || p.period % 8 != 0) {
         std::fprintf(stderr, "laserax: period %d invalid: must be 8..4096 and a multiple of 8\n", p.period);
         return 2;
@@ -141,7 +127,7 @@ int cmd_run(args& a, const std::string& cmdline) {
             return 2;
         }
         p.air_index = comp.n;
-        if (p.ratio == 0) p.ratio = comp.ratio;
+        if (!have_ratio) p.ratio = comp.ratio;
         p.comp_offset = comp.comp_offset;
     }
     if (!(p.air_index >= 1.0 && p.air_index < 1.01)) {
@@ -207,9 +193,9 @@ int cmd_run(args& a, const std::string& cmdline) {
         const std::string py = "/usr/bin/python3";
         struct stat st;
         if (stat(py.c_str(), &st) == 0) {
-            const std::string c = py + " scripts/plot_homing.py " + out + "/trace.csv " + out + "/homing.png";
+            const std::string plot_cmd = py + " scripts/plot_homing.py " + out + "/trace.csv " + out + "/homing.png";
             std::fflush(stdout);
-            if (std::system(c.c_str()) == 0) std::printf("  wrote %s/homing.png\n", out.c_str());
+            if (std::system(plot_cmd.c_str()) == 0) std::printf("  wrote %s/homing.png\n", out.c_str());
             else std::printf("  plot skipped (scripts/plot_homing.py failed; run `make deps`)\n");
         } else {
             std::printf("  plot skipped: /usr/bin/python3 not found (apt-get install python3-matplotlib)\n");
@@ -221,15 +207,18 @@ int cmd_run(args& a, const std::string& cmdline) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    args a;
+    struct {
+        std::vector<std::string> v;
+        size_t i = 0;
+    } a;
     std::string cmdline = "laserax";
     for (int i = 1; i < argc; ++i) {
         a.v.push_back(argv[i]);
         cmdline += std::string(" ") + argv[i];
     }
     std::string cmd = "run";
-    if (a.more() && a.v[0].rfind("--", 0) != 0) cmd = a.next("");
-    if (cmd == "run") return cmd_run(a, cmdline);
+    if (!a.v.empty() && a.v[0].rfind("--", 0) != 0) cmd = a.v[a.i++];
+    if (cmd == "run") return cmd_run(a.v, a.i, cmdline);
     if (cmd == "vectors") return lxt::cmd_vectors(a.v, a.i, cmdline);
     if (cmd == "compensate") return lxt::cmd_compensate(a.v, a.i);
     if (cmd == "pso") return lxt::cmd_pso(a.v, a.i);

@@ -7,7 +7,8 @@
 //                           table reloaded through the write port while the chain runs, stray table
 //                           writes that the DDS reads in the same call (write-first), every period
 //                           preset up to P = 4096 (the 1024-word quarter), amplitude / dac_width
-//                           changes, invalid-configuration windows of every kind, frequent clears and
+//                           changes, invalid-configuration windows of every kind (and stale-table
+//                           windows: dac_width 12 / amplitude 2047, DAC range guard), frequent clears and
 //                           rehomes, laser-error bursts, register changes of every field, and more
 //                           output taps (step, delta, backlog, pstep, ostep, adj, a/b/c/z, rep_mark),
 //                           and the error map (docs/ERROR_MAP.md §8): table words written into the
@@ -150,7 +151,7 @@ vec_table top_stress(rng_t& r, long long calls) {
         if (!loading && bad_cfg_left == 0 && r.chance(4000)) {
             saved = g;
             bad_cfg_left = static_cast<int>(r.range(1, 40));
-            switch (r.range(0, 8)) {
+            switch (r.range(0, 10)) {
                 case 0: g.dac_width = static_cast<unsigned>(r.chance(2) ? 11 : 19); break;
                 case 1: g.amplitude = (1u << (g.dac_width.to_uint() - 1)); break;
                 case 2: g.amplitude = 0; break;
@@ -159,15 +160,28 @@ vec_table top_stress(rng_t& r, long long calls) {
                 case 5: g.mark_len = g.period.to_uint() / 4 - 1; break;
                 case 6: g.mark_len = g.period.to_uint() + 1; break;
                 case 7: g.tbl_period = g.period.to_uint() + 8; break;
+                case 8:  // count integrity: min_spacing <= max(glitch_n, 1) (DESIGN §4.2)
+                    g.min_spacing = g.glitch_n.to_uint() < 1 ? 1u : g.glitch_n.to_uint();
+                    break;
+                case 9:  // valid, but the table in use does not fit: DAC range guard (clamp, dac_clip_st)
+                    g.dac_width = 12;
+                    g.amplitude = 2047;
+                    break;
                 default: g.period = static_cast<unsigned>(r.chance(2) ? 4104 : 260); break;  // and a change
             }
         } else if (bad_cfg_left > 0 && --bad_cfg_left == 0) {
             g = saved;  // back to the valid set (a period window also changes the period back)
         }
         if (bad_cfg_left == 0 && !loading) {
-            if (r.chance(3000)) g.glitch_n = static_cast<unsigned>(r.range(0, 3));
+            // glitch_n / min_spacing stay legal here (min_spacing > max(glitch_n, 1)); the illegal
+            // pair is one of the invalid-configuration windows above
+            const auto spacing_floor = [&g] { return g.glitch_n.to_uint() < 1 ? 1u : g.glitch_n.to_uint(); };
+            if (r.chance(3000)) {
+                g.glitch_n = static_cast<unsigned>(r.range(0, 3));
+                if (g.min_spacing.to_uint() <= spacing_floor()) g.min_spacing = spacing_floor() + 1;
+            }
             if (r.chance(3000)) g.sw_debounce = static_cast<unsigned>(r.range(0, 12));
-            if (r.chance(3000)) g.min_spacing = static_cast<unsigned>(r.range(0, 5));
+            if (r.chance(3000)) g.min_spacing = static_cast<unsigned>(r.range(spacing_floor() + 1, 6));
             if (r.chance(3000)) g.pace_m = static_cast<unsigned>(r.range(2, 4));
             if (r.chance(3000)) g.backlog_thr = static_cast<unsigned>(r.range(5, 400));
             if (r.chance(5000)) {

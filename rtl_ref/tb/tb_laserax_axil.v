@@ -145,6 +145,7 @@ module tb_laserax_axil;
     wire o_map_cfg_err;
     wire [16:0] o_corr;
     wire [17:0] o_map_delta;
+    wire o_dac_clip_st;   // not in the vectors
 
     laserax_axil #(.INIT_FILE(TBL_FILE), .ADDR_W(12)) dut (
         .i_clk(i_clk),
@@ -204,7 +205,8 @@ module tb_laserax_axil;
         .o_rep_mark(o_rep_mark),
         .o_map_cfg_err(o_map_cfg_err),
         .o_corr(o_corr),
-        .o_map_delta(o_map_delta)
+        .o_map_delta(o_map_delta),
+        .o_dac_clip_st(o_dac_clip_st)
     );
 
     `include "tb_common.vh"

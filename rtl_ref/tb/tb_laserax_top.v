@@ -171,6 +171,7 @@ module tb_laserax_top;
     wire o_map_cfg_err;
     wire [16:0] o_corr;
     wire [17:0] o_map_delta;
+    wire o_dac_clip_st;   // not in the vectors
 
     laserax_top #(.INIT_FILE(TBL_FILE)) dut (
         .i_clk(i_clk),
@@ -243,7 +244,8 @@ module tb_laserax_top;
         .o_rep_mark(o_rep_mark),
         .o_map_cfg_err(o_map_cfg_err),
         .o_corr(o_corr),
-        .o_map_delta(o_map_delta)
+        .o_map_delta(o_map_delta),
+        .o_dac_clip_st(o_dac_clip_st)
     );
 
     `include "tb_common.vh"

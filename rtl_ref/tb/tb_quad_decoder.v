@@ -30,7 +30,7 @@
 //   field err_cnt out 8 unsigned
 //   field illegal_st out 1 unsigned
 //   field ovs_st out 1 unsigned
-//   field lerr out 1 unsigned
+//   field lerr_out out 1 unsigned
 //   field lerr_alarm out 1 unsigned
 //   field glitch_st out 1 unsigned
 `timescale 1ns / 1ps
@@ -117,7 +117,7 @@ module tb_quad_decoder;
             check("err_cnt", row[27:20], o_err_cnt, 8, 0);
             check("illegal_st", row[16:16], o_illegal_st, 1, 0);
             check("ovs_st", row[12:12], o_ovs_st, 1, 0);
-            check("lerr", row[8:8], o_lerr, 1, 0);
+            check("lerr_out", row[8:8], o_lerr, 1, 0);
             check("lerr_alarm", row[4:4], o_lerr_alarm, 1, 0);
             check("glitch_st", row[0:0], o_glitch_st, 1, 0);
         end

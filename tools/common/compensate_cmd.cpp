@@ -47,72 +47,33 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
     comp_inputs in;
     std::string material, regs_out;
     bool have_alpha = false, have_mtemp = false, have_pa = false, have_kpa = false, have_co2 = false;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& o = args[i];
-        if (o == "--help" || o == "-h") {
-            std::fprintf(out, "%s", kCompensateUsage);
-            return 0;
-        }
-        static const char* const kNumeric[] = {"--wavelength-nm", "--temp-c", "--pressure-pa", "--pressure-kpa", "--rh",
-                                               "--co2-ppm", "--alpha-ppm", "--material-temp-c", "--origin-um"};
-        bool numeric = false;
-        for (const char* k : kNumeric) numeric = numeric || o == k;
-        if (!numeric && o != "--material" && o != "--equation" && o != "--regs-out") {
-            std::fprintf(err, "laserax compensate: unknown option '%s'\n%s", o.c_str(), kCompensateUsage);
-            return 2;
-        }
-        if (i + 1 >= args.size()) {
-            std::fprintf(err, "laserax compensate: %s needs a value\n", o.c_str());
-            return 2;
-        }
-        const std::string& v = args[++i];
-        if (o == "--material") {
-            material = v;
-            continue;
-        }
-        if (o == "--regs-out") {
-            regs_out = v;
-            continue;
-        }
-        if (o == "--equation") {
-            if (v == "edlen") in.equation = golden::air_equation::edlen;
-            else if (v == "ciddor") in.equation = golden::air_equation::ciddor;
-            else {
-                std::fprintf(err, "laserax compensate: --equation must be edlen or ciddor, not '%s'\n", v.c_str());
-                return 2;
+    // ranges here only keep every conversion defined; compute_compensation() then applies the
+    // validity ranges of the air equations and reports anything outside them
+    cli cl("laserax compensate", args, first, kCompensateUsage, out, err);
+    while (cl.next()) {
+        if (cl.is("--wavelength-nm")) cl.get_real(0.0, 1e5, &in.wavelength_nm, true, false);
+        else if (cl.is("--temp-c")) cl.get_real(-273.15, 1000.0, &in.air_temp_c);
+        else if (cl.is("--pressure-pa")) have_pa = cl.get_real(0.0, 1e7, &in.pressure_pa, true, false);
+        else if (cl.is("--pressure-kpa")) {
+            double kpa = 0;
+            if (cl.get_real(0.0, 1e4, &kpa, true, false)) {
+                in.pressure_pa = kpa * 1e3;
+                have_kpa = true;
             }
-            continue;
-        }
-        double x = 0;
-        if (!parse_double(v, &x)) {
-            std::fprintf(err, "laserax compensate: %s: not a number: '%s'\n", o.c_str(), v.c_str());
-            return 2;
-        }
-        if (o == "--wavelength-nm") {
-            in.wavelength_nm = x;
-        } else if (o == "--temp-c") {
-            in.air_temp_c = x;
-        } else if (o == "--pressure-pa") {
-            in.pressure_pa = x;
-            have_pa = true;
-        } else if (o == "--pressure-kpa") {
-            in.pressure_pa = x * 1e3;
-            have_kpa = true;
-        } else if (o == "--rh") {
-            in.rh_percent = x;
-        } else if (o == "--co2-ppm") {
-            in.co2_ppm = x;
-            have_co2 = true;
-        } else if (o == "--alpha-ppm") {
-            in.alpha_ppm_per_c = x;
-            have_alpha = true;
-        } else if (o == "--material-temp-c") {
-            in.material_temp_c = x;
-            have_mtemp = true;
-        } else {  // --origin-um
-            in.origin_um = x;
-        }
+        } else if (cl.is("--rh")) cl.get_real(0.0, 100.0, &in.rh_percent);
+        else if (cl.is("--co2-ppm")) have_co2 = cl.get_real(0.0, 1e6, &in.co2_ppm);
+        else if (cl.is("--alpha-ppm")) have_alpha = cl.get_real(-1e3, 1e3, &in.alpha_ppm_per_c);
+        else if (cl.is("--material-temp-c")) have_mtemp = cl.get_real(-273.15, 1000.0, &in.material_temp_c);
+        else if (cl.is("--origin-um")) cl.get_real(-1e9, 1e9, &in.origin_um);
+        else if (cl.is("--material")) cl.get_text(&material);
+        else if (cl.is("--regs-out")) cl.get_text(&regs_out);
+        else if (cl.is("--equation")) {
+            std::string e;
+            if (cl.get_choice({"edlen", "ciddor"}, &e))
+                in.equation = e == "edlen" ? golden::air_equation::edlen : golden::air_equation::ciddor;
+        } else cl.unknown();
     }
+    if (cl.failed()) return cl.status();
     if (have_pa && have_kpa) {
         std::fprintf(err, "laserax compensate: give the pressure once (--pressure-pa or --pressure-kpa)\n");
         return 2;

@@ -72,13 +72,14 @@ std::string counters_compare(const lx::encoder_counter::out_t& h, const golden::
 const char* const kCountersUsage =
     "usage: laserax counters [options]\n"
     "  --out DIR            output folder (default out)\n"
-    "  --rate-hz F          encoder simulation counting rate of counter 0 (default 1e6)\n"
-    "  --k-bits-mm K        calibration factor K, bits per mm (default 10000)\n"
-    "  --v-mm-s V           workpiece speed for the constant-speed scale of counter 0 (default 100)\n"
-    "  --enc-counts-mm I    counts per mm of the quadrature encoder on counter 1 (default 1000)\n"
-    "  --enc-speed C        quadrature encoder speed, counts per clock (default 0.05)\n"
-    "  --wait N             wait-for-encoder: counter 0 oversteps N after its reset (default 500)\n"
-    "  --calls N            clocks to simulate (default 150000 = 1.5 ms)\n"
+    "  --rate-hz F          encoder simulation counting rate of counter 0, (0, 5e7] (default 1e6)\n"
+    "  --k-bits-mm K        calibration factor K, bits per mm, (0, 1e9] (default 10000)\n"
+    "  --v-mm-s V           workpiece speed for the constant-speed scale of counter 0, (0, 1e5] (default 100)\n"
+    "  --enc-counts-mm I    counts per mm of the quadrature encoder on counter 1, (0, 1e9] (default 1000)\n"
+    "  --enc-speed C        quadrature encoder speed, counts per clock, (0, 0.2] (default 0.05)\n"
+    "  --wait N             wait-for-encoder: counter 0 oversteps N after its reset, a 32-bit signed\n"
+    "                       counter value -2147483648..2147483647 (default 500)\n"
+    "  --calls N            clocks to simulate, 1000..100000000 (default 150000 = 1.5 ms)\n"
     "  --no-plot            do not call scripts/plot_pso.py\n";
 
 namespace {
@@ -90,46 +91,23 @@ int cmd_counters(const std::vector<std::string>& args, size_t first) {
     std::string out = "out";
     double rate = 1e6, kbits = 10000, vmm = 100, enc_cpm = 1000, enc_speed = 0.05, wait_n = 500, calls_d = 150000;
     bool plot = true;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& o = args[i];
-        if (o == "--help" || o == "-h") {
-            std::printf("%s", kCountersUsage);
-            return 0;
-        }
-        if (o == "--no-plot") {
-            plot = false;
-            continue;
-        }
-        if (i + 1 >= args.size()) {
-            std::fprintf(stderr, "laserax counters: unknown option or missing value: '%s'\n%s", o.c_str(), kCountersUsage);
-            return 2;
-        }
-        const std::string& v = args[++i];
-        if (o == "--out") {
-            out = v;
-            continue;
-        }
-        double x = 0;
-        if (!parse_double(v, &x)) {
-            std::fprintf(stderr, "laserax counters: %s: not a number: '%s'\n", o.c_str(), v.c_str());
-            return 2;
-        }
-        if (o == "--rate-hz") rate = x;
-        else if (o == "--k-bits-mm") kbits = x;
-        else if (o == "--v-mm-s") vmm = x;
-        else if (o == "--enc-counts-mm") enc_cpm = x;
-        else if (o == "--enc-speed") enc_speed = x;
-        else if (o == "--wait") wait_n = x;
-        else if (o == "--calls") calls_d = x;
-        else {
-            std::fprintf(stderr, "laserax counters: unknown option '%s'\n%s", o.c_str(), kCountersUsage);
-            return 2;
-        }
+    cli cl("laserax counters", args, first, kCountersUsage);
+    long long wait_i = 500, calls_i = 150000;
+    while (cl.next()) {
+        if (cl.is("--no-plot")) plot = false;
+        else if (cl.is("--out")) cl.get_text(&out);
+        else if (cl.is("--rate-hz")) cl.get_real(0.0, 5e7, &rate, true, false);
+        else if (cl.is("--k-bits-mm")) cl.get_real(0.0, 1e9, &kbits, true, false);
+        else if (cl.is("--v-mm-s")) cl.get_real(0.0, 1e5, &vmm, true, false);
+        else if (cl.is("--enc-counts-mm")) cl.get_real(0.0, 1e9, &enc_cpm, true, false);
+        else if (cl.is("--enc-speed")) cl.get_real(0.0, 0.2, &enc_speed, true, false);
+        else if (cl.is("--wait")) cl.get_int(-2147483647LL - 1, 2147483647LL, &wait_i);
+        else if (cl.is("--calls")) cl.get_int(1000, 100000000, &calls_i);
+        else cl.unknown();
     }
-    if (!(enc_speed > 0 && enc_speed <= 0.2) || !(calls_d >= 1000 && calls_d <= 1e8) || !(enc_cpm > 0)) {
-        std::fprintf(stderr, "laserax counters: need 0 < --enc-speed <= 0.2, 1000 <= --calls <= 1e8, --enc-counts-mm > 0\n");
-        return 2;
-    }
+    if (cl.failed()) return cl.status();
+    wait_n = static_cast<double>(wait_i);
+    calls_d = static_cast<double>(calls_i);
     const long long calls = static_cast<long long>(calls_d);
     if (!make_dirs(out, "laserax counters")) return 2;
     const std::string trace_path = out + "/counters_trace.csv";

@@ -22,18 +22,19 @@ namespace lxt {
 const char* const kGantryUsage =
     "laserax gantry [options]   twin-axis (gantry) referencing with two compensators (docs/GANTRY.md)\n"
     "  --period P          sin/cos period in output counts, 8..4096, multiple of 8 (default 256)\n"
-    "  --seed S            random power-up phases of X1 and X2 from seed S (default 7)\n"
+    "  --seed S            random power-up phases of X1 and X2 from seed S, 0..2^63-1 (default 7)\n"
     "  --phase1 N          power-up phase of X1 (output phase at its point A, 0..P-1)\n"
     "  --phase2 N          power-up phase of X2\n"
-    "  --skew-limit L      alarm when |skew - offset| > L counts (default P)\n"
-    "  --offset O          offset parameter (squareness trim), counts; also the real offset of X2's\n"
+    "  --skew-limit L      alarm when |skew - offset| > L counts, 0..2^30 (default P)\n"
+    "  --offset O          offset parameter (squareness trim), counts, within +-4P; also the real offset of X2's\n"
     "                      switch unless --switch-offset is given (default 0)\n"
     "  --switch-offset O   real offset of X2's reference switch from X1's, counts\n"
     "  --compliance C      0 < C <= 1: share of commanded skew that becomes real skew (default 0.5)\n"
-    "  --resolution R      controller interpolation, units per period, >= P, multiple of 8 (default 2048)\n"
+    "  --resolution R      controller interpolation, units per period, P..1048576, multiple of 8\n"
+    "                      (default max(2048, P))\n"
     "  --arm MODE          use of rehome: own (default), both, hold (docs/GANTRY.md)\n"
     "  --conventional      conventional encoders (fixed-phase reference mark) instead of the IP\n"
-    "  --map-grid N        skew map over N x N power-up phases (default min(P, 16))\n"
+    "  --map-grid N        skew map over N x N power-up phases, 1..4096 (default min(P, 16))\n"
     "  --no-map            no skew map\n"
     "  --no-plot           do not call scripts/plot_gantry.py\n"
     "  --out DIR           output folder (default out)\n";
@@ -94,62 +95,46 @@ int cmd_gantry(const std::vector<std::string>& args, size_t first) {
     bool have_sw_off = false, plot = true, map = true;
     double compliance = 0.5;
     golden::gantry_arm arm = golden::gantry_arm::own;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& o = args[i];
-        if (o == "--help" || o == "-h") {
-            std::printf("%s", kGantryUsage);
-            return 0;
-        }
-        if (o == "--no-plot") {
-            plot = false;
-            continue;
-        }
-        if (o == "--no-map") {
-            map = false;
-            continue;
-        }
-        if (o == "--conventional") {
-            c.conventional = true;
-            continue;
-        }
-        if (i + 1 >= args.size()) {
-            std::fprintf(stderr, "laserax gantry: unknown option or missing value: '%s'\n%s", o.c_str(), kGantryUsage);
-            return 2;
-        }
-        const std::string& v = args[++i];
-        bool ok = true;
-        if (o == "--out") out = v;
-        else if (o == "--period") ok = parse_int(v, &period);
-        else if (o == "--seed") ok = parse_int(v, &seed);
-        else if (o == "--phase1") ok = parse_int(v, &ph1);
-        else if (o == "--phase2") ok = parse_int(v, &ph2);
-        else if (o == "--skew-limit") ok = parse_int(v, &limit) && limit >= 0;
-        else if (o == "--offset") ok = parse_int(v, &offset);
-        else if (o == "--switch-offset") ok = (have_sw_off = parse_int(v, &sw_off));
-        else if (o == "--compliance") ok = parse_double(v, &compliance);
-        else if (o == "--resolution") ok = parse_int(v, &resolution);
-        else if (o == "--map-grid") ok = parse_int(v, &grid) && grid >= 1 && grid <= 4096;
-        else if (o == "--arm") ok = gantry_parse_arm(v, &arm);
-        else {
-            std::fprintf(stderr, "laserax gantry: unknown option '%s'\n%s", o.c_str(), kGantryUsage);
-            return 2;
-        }
-        if (!ok) {
-            std::fprintf(stderr, "laserax gantry: bad value for %s: '%s'\n", o.c_str(), v.c_str());
-            return 2;
-        }
+    cli cl("laserax gantry", args, first, kGantryUsage);
+    bool have_res = false;
+    while (cl.next()) {
+        if (cl.is("--no-plot")) plot = false;
+        else if (cl.is("--no-map")) map = false;
+        else if (cl.is("--conventional")) c.conventional = true;
+        else if (cl.is("--out")) cl.get_text(&out);
+        else if (cl.is("--period")) cl.get_int(8, 4096, &period, 8);
+        else if (cl.is("--seed")) cl.get_int(0, INT64_MAX, &seed);
+        else if (cl.is("--phase1")) cl.get_int(0, 4095, &ph1);
+        else if (cl.is("--phase2")) cl.get_int(0, 4095, &ph2);
+        else if (cl.is("--skew-limit")) cl.get_int(0, 1LL << 30, &limit);
+        else if (cl.is("--offset")) cl.get_int(-4 * 4096, 4 * 4096, &offset);
+        else if (cl.is("--switch-offset")) have_sw_off = cl.get_int(-4 * 4096, 4 * 4096, &sw_off);
+        else if (cl.is("--compliance")) cl.get_real(0.0, 1.0, &compliance, true, false);
+        else if (cl.is("--resolution")) have_res = cl.get_int(8, 1LL << 20, &resolution, 8);
+        else if (cl.is("--map-grid")) cl.get_int(1, 4096, &grid);
+        else if (cl.is("--arm")) {
+            std::string v;
+            if (cl.value(&v) && !gantry_parse_arm(v, &arm)) cl.error("'" + v + "' is not allowed (allowed own, both, hold)");
+        } else cl.unknown();
+    }
+    if (cl.failed()) return cl.status();
+    if (have_res && resolution < period) {
+        std::fprintf(stderr, "laserax gantry: --resolution: %lld is below the period %lld (allowed P..1048576, multiple of 8)\n",
+                     resolution, period);
+        return 2;
     }
     if (period < 8 || period > 4096 || period % 8 != 0) {
         std::fprintf(stderr, "laserax gantry: --period must be 8..4096 and a multiple of 8\n");
         return 2;
     }
     if (std::llabs(offset) > 4 * period || std::llabs(sw_off) > 4 * period) {
-        std::fprintf(stderr, "laserax gantry: offsets must be within +-4P\n");
+        std::fprintf(stderr, "laserax gantry: --offset / --switch-offset: must be within +-4P = +-%lld counts\n",
+                     4 * period);
         return 2;
     }
     const int p = static_cast<int>(period);
     c.period = p;
-    c.resolution = resolution > 0 ? static_cast<int>(std::min(resolution, 1LL << 20)) : std::max(2048, p);
+    c.resolution = have_res ? static_cast<int>(resolution) : std::max(2048, p);
     c.compliance = compliance;
     c.offset = static_cast<int>(offset);
     c.switch_offset = static_cast<int>(have_sw_off ? sw_off : offset);
@@ -161,7 +146,7 @@ int cmd_gantry(const std::vector<std::string>& args, size_t first) {
     c.phase[0] = ph1 >= 0 ? static_cast<int>(ph1) : r1;
     c.phase[1] = ph2 >= 0 ? static_cast<int>(ph2) : r2;
     if (ph1 >= p || ph2 >= p) {
-        std::fprintf(stderr, "laserax gantry: phases must be 0..P-1\n");
+        std::fprintf(stderr, "laserax gantry: --phase1 / --phase2: must be 0..P-1 = 0..%d\n", p - 1);
         return 2;
     }
     const std::string err = gantry_check(c);

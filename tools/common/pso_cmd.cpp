@@ -259,16 +259,16 @@ std::string pso_compare(const lx::pso::out_t& h, const golden::pso::out& g) {
 const char* const kPsoUsage =
     "usage: laserax pso [options]\n"
     "  --out DIR          output folder (default out)\n"
-    "  --dist-um D        firing distance in um (default 10)\n"
-    "  --k K              tracking window, counts (1..32, default 16; 1 = per-clock magnitudes)\n"
-    "  --pulse-w W        pulse width in clocks (default 10)\n"
-    "  --speed-mm-s V     path speed in mm/s (default 200; at most 7400)\n"
-    "  --laser-khz F      laser pulse frequency limit (default 0 = no check)\n"
-    "  --window-um LO:HI  output only while x is inside [LO, HI] um\n"
+    "  --dist-um D        firing distance in um, [0, 1310720) (default 10)\n"
+    "  --k K              tracking window register 0..63 (legal 1..32, default 16; 1 = per-clock magnitudes)\n"
+    "  --pulse-w W        pulse width in clocks, 0..65535 (default 10)\n"
+    "  --speed-mm-s V     path speed in mm/s, (0, 7421.875] (default 200)\n"
+    "  --laser-khz F      laser pulse frequency limit, 0..1e6 (default 0 = no check)\n"
+    "  --window-um LO:HI  output only while x is inside [LO, HI] um, -1e6 <= LO <= HI <= 1e6\n"
     "  --part-speed       track the commanded vector speed (pulse generator) instead of the axes\n"
-    "  --cpu N            part-speed counts per mm of the virtual axes (default 12800)\n"
-    "  --feed-mm-s V      part-speed commanded feed (default: the path speed)\n"
-    "  --seed S           sub-count start offset of the axes (default 1)\n"
+    "  --cpu N            part-speed counts per mm of the virtual axes, (0, 1e9] (default 12800)\n"
+    "  --feed-mm-s V      part-speed commanded feed, 0..1e5 (default: the path speed)\n"
+    "  --seed S           sub-count start offset of the axes, 0..1e9 (default 1)\n"
     "  --no-plot          do not call scripts/plot_pso.py\n";
 
 namespace {
@@ -283,70 +283,43 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
     int k = 16, pulse_w = 10;
     bool part_speed = false, plot = true, window = false;
     double win_lo = 0, win_hi = 0;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& o = args[i];
-        if (o == "--help" || o == "-h") {
-            std::printf("%s", kPsoUsage);
-            return 0;
-        }
-        if (o == "--part-speed") {
-            part_speed = true;
-            continue;
-        }
-        if (o == "--no-plot") {
-            plot = false;
-            continue;
-        }
-        if (i + 1 >= args.size()) {
-            std::fprintf(stderr, "laserax pso: unknown option or missing value: '%s'\n%s", o.c_str(), kPsoUsage);
-            return 2;
-        }
-        const std::string& v = args[++i];
-        double x = 0;
-        if (o == "--out") {
-            out = v;
-            continue;
-        }
-        if (o == "--window-um") {
-            const size_t c = v.find(':');
-            if (c == std::string::npos || !parse_double(v.substr(0, c), &win_lo) || !parse_double(v.substr(c + 1), &win_hi)) {
-                std::fprintf(stderr, "laserax pso: --window-um needs LO:HI, not '%s'\n", v.c_str());
-                return 2;
+    const double speed_max = 0.95 * kClock * kNmPerCount * 1e-6;  // mm/s: < 1 count per call
+    const double win_max_um = 1e6;
+    cli cl("laserax pso", args, first, kPsoUsage);
+    long long seed_i = 1;
+    while (cl.next()) {
+        if (cl.is("--part-speed")) part_speed = true;
+        else if (cl.is("--no-plot")) plot = false;
+        else if (cl.is("--out")) cl.get_text(&out);
+        else if (cl.is("--window-um")) {
+            std::string v;
+            if (!cl.value(&v)) break;
+            const size_t colon = v.find(':');
+            if (colon == std::string::npos || !parse_double(v.substr(0, colon), &win_lo) ||
+                !parse_double(v.substr(colon + 1), &win_hi)) {
+                cl.error("needs LO:HI in um, not '" + v + "'");
+            } else if (!(win_lo >= -win_max_um && win_lo <= win_max_um && win_hi >= -win_max_um &&
+                         win_hi <= win_max_um && win_lo <= win_hi)) {
+                cl.error(v + " is out of range (allowed -1e6 <= LO <= HI <= 1e6 um)");
+            } else {
+                window = true;
             }
-            window = true;
-            continue;
-        }
-        if (!parse_double(v, &x)) {
-            std::fprintf(stderr, "laserax pso: %s: not a number: '%s'\n%s", o.c_str(), v.c_str(), kPsoUsage);
-            return 2;
-        }
-        if (o == "--dist-um") dist_um = x;
-        else if (o == "--k") k = static_cast<int>(x);
-        else if (o == "--pulse-w") pulse_w = static_cast<int>(x);
-        else if (o == "--speed-mm-s") speed = x;
-        else if (o == "--laser-khz") laser_khz = x;
-        else if (o == "--cpu") cpu = x;
-        else if (o == "--feed-mm-s") feed = x;
-        else if (o == "--seed") seed = x;
-        else {
-            std::fprintf(stderr, "laserax pso: unknown option '%s'\n%s", o.c_str(), kPsoUsage);
-            return 2;
-        }
+        } else if (cl.is("--dist-um")) cl.get_real(0.0, 16777216.0 * kNmPerCount / 1000.0, &dist_um, false, true);
+        else if (cl.is("--k")) cl.get_int(0, 63, &k);
+        else if (cl.is("--pulse-w")) cl.get_int(0, 65535, &pulse_w);
+        else if (cl.is("--speed-mm-s")) cl.get_real(0.0, speed_max, &speed, true, false);
+        else if (cl.is("--laser-khz")) cl.get_real(0.0, 1e6, &laser_khz);
+        else if (cl.is("--cpu")) cl.get_real(0.0, 1e9, &cpu, true, false);
+        else if (cl.is("--feed-mm-s")) cl.get_real(0.0, 1e5, &feed);
+        else if (cl.is("--seed")) {
+            if (cl.get_int(0, 1000000000, &seed_i)) seed = static_cast<double>(seed_i);
+        } else cl.unknown();
     }
-    const double v_counts = speed * 1e-3 / (kNmPerCount * 1e-9) / kClock;  // counts per call
-    if (!(v_counts > 0) || v_counts > 0.95) {
-        std::fprintf(stderr, "laserax pso: --speed-mm-s must be in (0, %.0f]\n", 0.95 * kClock * kNmPerCount * 1e-6);
-        return 2;
-    }
+    if (cl.failed()) return cl.status();
     if (feed < 0) feed = speed;
-    // register ranges (values inside the range but illegal, e.g. K = 0, are left to the block's
-    // configuration check, which the summary then reports as cfg_err)
-    if (k < 0 || k > 63 || pulse_w < 0 || pulse_w > 65535 || !(dist_um >= 0) || dist_um * 1000.0 / kNmPerCount >= 16777216.0 ||
-        laser_khz < 0 || !(cpu > 0) || feed < 0) {
-        std::fprintf(stderr, "laserax pso: out of range: --k 0..63, --pulse-w 0..65535, --dist-um < 1.31 m, "
-                             "--laser-khz >= 0, --cpu > 0, --feed-mm-s >= 0\n");
-        return 2;
-    }
+    // register ranges are checked by the parser above; values inside the range but illegal
+    // (e.g. K = 0) are left to the block's configuration check, reported as cfg_err
+    const double v_counts = speed * 1e-3 / (kNmPerCount * 1e-9) / kClock;  // counts per call
 
     // The demo path (counts): a line at 30 degrees, a half circle, a reversal back along a line,
     // a short dwell and a quarter circle the other way round.

@@ -59,6 +59,7 @@ std::string compare(const lx::axis_out& h, const golden::axis_out& g) {
     c("ovs_edge_st", h.ovs_edge_st, g.ovs_edge_st);
     c("ovs_backlog_st", h.ovs_backlog_st, g.ovs_backlog_st);
     c("glitch_st", h.glitch_st, g.glitch_st);
+    c("dac_clip_st", h.dac_clip_st, g.dac_clip_st);
     c("alarm", h.alarm, g.alarm);
     c("raw_count", h.raw_count.to_int64(), g.raw_count);
     c("step", h.step.to_int64(), g.step);

@@ -47,21 +47,30 @@ std::string header_lines(const vec_table& t, const std::string& command, const c
 }
 
 bool fits(int64_t v, const vec_column& c) {
+    if (!c.is_signed && v < 0) return false;
     if (c.bits >= 64) return true;
     if (c.is_signed) {
         const int64_t lim = int64_t(1) << (c.bits - 1);
         return v >= -lim && v < lim;
     }
-    return v >= 0 && static_cast<uint64_t>(v) < (uint64_t(1) << c.bits);
+    return static_cast<uint64_t>(v) < (uint64_t(1) << c.bits);
 }
 
+// [-]digits, nothing else, within int64
 bool parse_i64(const std::string& s, int64_t& v) {
-    if (s.empty()) return false;
-    char* end = nullptr;
-    errno = 0;
-    const long long x = std::strtoll(s.c_str(), &end, 10);
-    if (*end != '\0' || errno != 0) return false;
-    v = x;
+    size_t i = 0;
+    const bool neg = !s.empty() && s[0] == '-';
+    if (neg) i = 1;
+    if (i >= s.size()) return false;
+    uint64_t m = 0;
+    for (; i < s.size(); ++i) {
+        if (s[i] < '0' || s[i] > '9') return false;
+        const uint64_t d = static_cast<uint64_t>(s[i] - '0');
+        if (m > (uint64_t(1) << 63) / 10 || m * 10 > (uint64_t(1) << 63) - d) return false;
+        m = m * 10 + d;
+    }
+    if (!neg && m > uint64_t(INT64_MAX)) return false;
+    v = neg ? (m == (uint64_t(1) << 63) ? INT64_MIN : -static_cast<int64_t>(m)) : static_cast<int64_t>(m);
     return true;
 }
 
@@ -72,12 +81,23 @@ std::vector<std::string> split(const std::string& line, char sep) {
         if (ch == sep) {
             f.push_back(cur);
             cur.clear();
-        } else if (ch != '\r') {
-            cur += ch;
+        } else {
+            cur += ch;  // a CR inside the line stays and makes the value invalid
         }
     }
     f.push_back(cur);
     return f;
+}
+
+bool valid_name(const std::string& n) {
+    if (n.empty() || !((n[0] >= 'a' && n[0] <= 'z') || n[0] == '_')) return false;
+    for (char ch : n)
+        if (!((ch >= 'a' && ch <= 'z') || (ch >= '0' && ch <= '9') || ch == '_')) return false;
+    return true;
+}
+
+std::string where(const std::string& name, long ln) {
+    return (name.empty() ? std::string("<text>") : name) + ":" + std::to_string(ln) + ": ";
 }
 
 }  // namespace
@@ -115,7 +135,7 @@ std::string vec_to_hex(const vec_table& t, const std::string& command) {
     return os.str();
 }
 
-bool vec_from_csv(const std::string& text, vec_table& t, std::string* err) {
+bool vec_from_csv(const std::string& text, vec_table& t, std::string* err, const std::string& name) {
     t.cols.clear();
     t.rows.clear();
     std::istringstream is(text);
@@ -123,70 +143,68 @@ bool vec_from_csv(const std::string& text, vec_table& t, std::string* err) {
     long ln = 0;
     bool have_header = false;
     std::vector<vec_column> declared;
+    auto fail = [&](const std::string& why) {
+        if (err) *err = where(name, ln) + why;
+        return false;
+    };
     while (std::getline(is, line)) {
         ++ln;
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty()) continue;
         if (line[0] == '#') {
             std::istringstream ls(line.substr(1));
-            std::string w, name, dir, sgn;
-            int bits = 0;
-            ls >> w;
-            if (w == "block") continue;
-            if (w == "field") {
-                if (!(ls >> name >> dir >> bits >> sgn) || bits < 1 || bits > 64) {
-                    if (err) *err = "line " + std::to_string(ln) + ": malformed field declaration";
-                    return false;
-                }
-                vec_column c;
-                c.name = name;
-                c.bits = bits;
-                c.is_input = dir == "in";
-                c.is_signed = sgn == "signed";
-                declared.push_back(c);
-            }
+            std::vector<std::string> w;
+            for (std::string x; ls >> x;) w.push_back(x);
+            if (w.empty() || w[0] != "field") continue;  // a comment (block, command, ...)
+            if (have_header) return fail("a '# field' line after the header row");
+            if (w.size() != 5) return fail("malformed field declaration (want: # field NAME in|out BITS signed|unsigned)");
+            if (!valid_name(w[1])) return fail("malformed field name '" + w[1] + "'");
+            if (w[2] != "in" && w[2] != "out") return fail("field " + w[1] + ": direction '" + w[2] + "' is not in or out");
+            int64_t bits = 0;
+            if (!parse_i64(w[3], bits) || w[3][0] == '-' || bits < 1 || bits > 64)
+                return fail("field " + w[1] + ": width '" + w[3] + "' is not 1..64");
+            if (w[4] != "signed" && w[4] != "unsigned")
+                return fail("field " + w[1] + ": '" + w[4] + "' is not signed or unsigned");
+            for (const vec_column& d : declared)
+                if (d.name == w[1]) return fail("duplicate field '" + w[1] + "'");
+            vec_column c;
+            c.name = w[1];
+            c.bits = static_cast<int>(bits);
+            c.is_input = w[2] == "in";
+            c.is_signed = w[4] == "signed";
+            declared.push_back(c);
             continue;
         }
         const std::vector<std::string> f = split(line, ',');
         if (!have_header) {
-            if (declared.size() != f.size()) {
-                if (err) *err = "line " + std::to_string(ln) + ": header has " + std::to_string(f.size()) +
-                                " columns but " + std::to_string(declared.size()) + " fields are declared";
-                return false;
-            }
-            for (size_t i = 0; i < f.size(); ++i) {
-                if (f[i] != declared[i].name) {
-                    if (err) *err = "line " + std::to_string(ln) + ": column '" + f[i] + "' does not match field '" +
-                                    declared[i].name + "'";
-                    return false;
-                }
-            }
+            if (declared.size() != f.size())
+                return fail("header has " + std::to_string(f.size()) + " columns but " + std::to_string(declared.size()) +
+                            " fields are declared");
+            for (size_t i2 = 0; i2 < f.size(); ++i2)
+                if (f[i2] != declared[i2].name)
+                    return fail("column '" + f[i2] + "' does not match field '" + declared[i2].name + "'");
             t.cols = declared;
             have_header = true;
             continue;
         }
-        if (f.size() != t.cols.size()) {
-            if (err) *err = "line " + std::to_string(ln) + ": " + std::to_string(f.size()) + " values, expected " +
-                            std::to_string(t.cols.size());
-            return false;
-        }
+        if (f.size() != t.cols.size())
+            return fail(std::to_string(f.size()) + " values, expected " + std::to_string(t.cols.size()));
         std::vector<int64_t> row(f.size());
-        for (size_t i = 0; i < f.size(); ++i) {
-            if (!parse_i64(f[i], row[i]) || !fits(row[i], t.cols[i])) {
-                if (err) *err = "line " + std::to_string(ln) + ": column " + t.cols[i].name + ": bad value '" + f[i] + "'";
-                return false;
-            }
+        for (size_t i2 = 0; i2 < f.size(); ++i2) {
+            if (!parse_i64(f[i2], row[i2])) return fail("column " + t.cols[i2].name + ": not an integer '" + f[i2] + "'");
+            if (!fits(row[i2], t.cols[i2]))
+                return fail("column " + t.cols[i2].name + ": " + f[i2] + " does not fit " + std::to_string(t.cols[i2].bits) +
+                            (t.cols[i2].is_signed ? " signed" : " unsigned") + " bits");
         }
         t.rows.push_back(row);
     }
-    if (!have_header) {
-        if (err) *err = "no header row";
-        return false;
-    }
+    if (!have_header) return fail("no header row");
+    if (t.rows.empty()) return fail("no data rows");
     return true;
 }
 
-bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t, std::string* err) {
+bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t, std::string* err,
+                  const std::string& name) {
     t.cols = layout.cols;
     t.block = layout.block;
     t.rows.clear();
@@ -200,7 +218,7 @@ bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t
         if (!line.empty() && line.back() == '\r') line.pop_back();
         if (line.empty() || line.rfind("//", 0) == 0) continue;
         if (line.size() != width) {
-            if (err) *err = "line " + std::to_string(ln) + ": " + std::to_string(line.size()) + " hex digits, expected " +
+            if (err) *err = where(name, ln) + "" + std::to_string(line.size()) + " hex digits, expected " +
                             std::to_string(width);
             return false;
         }
@@ -216,14 +234,14 @@ bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t
                 else if (ch >= 'a' && ch <= 'f') v = ch - 'a' + 10;
                 else if (ch >= 'A' && ch <= 'F') v = ch - 'A' + 10;
                 if (v < 0) {
-                    if (err) *err = "line " + std::to_string(ln) + ": not a hex digit '" + std::string(1, ch) + "'";
+                    if (err) *err = where(name, ln) + "not a hex digit '" + std::string(1, ch) + "'";
                     return false;
                 }
                 u = (u << 4) | static_cast<uint64_t>(v);
             }
             pos += static_cast<size_t>(d);
             if (c.bits < 64 && (u >> c.bits) != 0) {
-                if (err) *err = "line " + std::to_string(ln) + ": field " + c.name + " wider than " + std::to_string(c.bits) + " bits";
+                if (err) *err = where(name, ln) + "field " + c.name + " wider than " + std::to_string(c.bits) + " bits";
                 return false;
             }
             int64_t v = static_cast<int64_t>(u);
@@ -231,6 +249,10 @@ bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t
             row.push_back(v);
         }
         t.rows.push_back(row);
+    }
+    if (t.rows.empty()) {
+        if (err) *err = where(name, ln) + "no data rows";
+        return false;
     }
     return true;
 }
@@ -261,7 +283,7 @@ std::vector<vec_column> vec_layout(const std::string& block) {
     if (block == "quad_decoder")
         return {in("a", 1), in("b", 1), in("lerr", 1), in("glitch_n", 8), in("min_spacing", 16), in("clear", 1),
                 out("step", 2, true), out("raw_count", W::W_RAW, true), out("illegal", 1), out("ovs", 1),
-                out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr", 1), out("lerr_alarm", 1),
+                out("err_cnt", 8), out("illegal_st", 1), out("ovs_st", 1), out("lerr_out", 1), out("lerr_alarm", 1),
                 out("glitch_st", 1)};
     // preset = 1: the row first loads N = preset_n and R = ratio (pulse_multiplier::preset(), with the
     // row's comp_offset), then steps
@@ -814,25 +836,18 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
     std::string dir = "out/vectors";
     uint64_t seed = 1;
     long long calls = 40000;
-    for (size_t i = first; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (i + 1 >= args.size()) {
-            std::fprintf(stderr, "laserax vectors: %s needs a value\n", a.c_str());
-            return 2;
-        }
-        const std::string& v = args[++i];
-        if (a == "--out") dir = v;
-        else if (a == "--seed") seed = std::strtoull(v.c_str(), nullptr, 0);
-        else if (a == "--calls") calls = std::strtoll(v.c_str(), nullptr, 0);
-        else {
-            std::fprintf(stderr, "laserax vectors: unknown option %s\n", a.c_str());
-            return 2;
-        }
+    cli c("laserax vectors", args, first,
+          "usage: laserax vectors [--out DIR] [--seed N] [--calls N]\n"
+          "  --out DIR    output folder, non-empty (default out/vectors)\n"
+          "  --seed N     random seed, 0..2^64-1 (default 1)\n"
+          "  --calls N    calls of the random part of each file, 100..100000000 (default 40000)\n");
+    while (c.next()) {
+        if (c.is("--out")) c.get_text(&dir);
+        else if (c.is("--seed")) c.get_u64(0, UINT64_MAX, &seed);
+        else if (c.is("--calls")) c.get_int(100, 100000000, &calls);
+        else c.unknown();
     }
-    if (calls < 100 || calls > 100000000) {
-        std::fprintf(stderr, "laserax vectors: --calls must be 100..1e8\n");
-        return 2;
-    }
+    if (c.failed()) return c.status();
     if (!make_dirs(dir, "laserax vectors")) return 1;
     std::vector<vec_table> tables;
     std::string err;

@@ -27,10 +27,17 @@ struct vec_table {
 std::string vec_to_csv(const vec_table& t, const std::string& command);
 std::string vec_to_hex(const vec_table& t, const std::string& command);
 
-// Readers: false plus a message naming the file line on any malformed input (missing header,
-// wrong field count, non-integer or out-of-range value, unknown column); never throws.
-bool vec_from_csv(const std::string& text, vec_table& t, std::string* err);
-bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t, std::string* err);
+// Readers (docs/VECTORS.md, strict): false plus "FILE:LINE: reason" (FILE = `name`, or "<text>")
+// on any malformed input: missing header, a `# field` line that is not exactly
+// `field NAME in|out BITS signed|unsigned` (BITS 1..64 in decimal), a `# field` line after the
+// header, a duplicate column name, a header that differs from the declared fields, a wrong number
+// of values, a value that is not [-]digits (no '+', blanks or carriage returns inside a line; one
+// trailing CR of a CRLF line is allowed), a value that does not fit its column (negative in an
+// unsigned column, 64-bit columns included), a wrong hex line length, a non-hex digit, no data
+// rows at all. Never throws.
+bool vec_from_csv(const std::string& text, vec_table& t, std::string* err, const std::string& name = "");
+bool vec_from_hex(const std::string& text, const vec_table& layout, vec_table& t, std::string* err,
+                  const std::string& name = "");
 
 bool read_file(const std::string& path, std::string& text, std::string* err);
 
