@@ -41,8 +41,8 @@ class dds_sincos {
 public:
     using cfg = dds_sincos_cfg;
     struct out_t {
-        dac_t sin;
-        dac_t cos;
+        dac_t sin = 0;
+        dac_t cos = 0;
     };
 
     dds_sincos() { reset(); }

@@ -85,12 +85,12 @@ class error_map {
 public:
     using cfg = error_map_cfg;
     struct out_t {
-        cfg::corr_t corr;     // correction in whole output counts (0 while inactive)
-        cfg::cdelta_t delta;  // corr' - corr: counts to add (> 0) or remove (< 0)
-        bool active;          // map_en && homed && valid geometry (of the input call)
-        bool in_range;        // active and p inside [origin, origin + (n-1) * 2^k]
-        bool clamped;         // active and p outside: the end value is held
-        bool cfg_err;         // map_en and the selected bank's geometry is invalid
+        cfg::corr_t corr = 0;     // correction in whole output counts (0 while inactive)
+        cfg::cdelta_t delta = 0;  // corr' - corr: counts to add (> 0) or remove (< 0)
+        bool active = false;          // map_en && homed && valid geometry (of the input call)
+        bool in_range = false;        // active and p inside [origin, origin + (n-1) * 2^k]
+        bool clamped = false;         // active and p outside: the end value is held
+        bool cfg_err = false;         // map_en and the selected bank's geometry is invalid
     };
 
     error_map() {
@@ -137,9 +137,9 @@ public:
         const cfg::addr_t last_i = geom_ok ? cfg::addr_t(g.n_points - 1) : cfg::addr_t(0);
         const cfg::off_t off = cfg::off_t(p) - cfg::off_t(g.origin);
         const cfg::off_t last_off = cfg::off_t(last_i) << k;  // (n-1) * 2^k < 2^31
-        cfg::addr_t i0;
-        cfg::frac_t frac;
-        bool inr;
+        cfg::addr_t i0 = 0;
+        cfg::frac_t frac = 0;
+        bool inr = false;
         if (off < 0) {
             i0 = 0;
             frac = 0;
