@@ -114,7 +114,7 @@ inline bool axis_config_ok(const axis_regs& r) {
     }
     const bool mark_ok = r.mark_len >= (r.period >> 2) && r.mark_len <= r.period;
     return period_ok && width_ok && amp_ok && mark_ok && r.ratio != 0 && r.pace_m >= 2 &&
-           r.tbl_period == r.period;
+           r.tbl_period == r.period && !r.tbl_we;  // table writes only in the safe state (§4.6)
 }
 
 // Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
@@ -149,7 +149,6 @@ public:
     dds_sincos& dds() { return dds_; }
 
     axis_out step(const axis_pins& pins, const axis_regs& regs) {
-        if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
         // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
         // not part of the chain reset (register file state)
         if (!regs.comp_sync || regs.comp_commit) {
@@ -166,6 +165,9 @@ public:
         run_q_ = ok;
         if (!ok) {
             reset();  // safe state: every block held in reset
+            // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
+            // read the table, so its true dual-port RAM has at most two accesses per call
+            if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
             o.cfg_err = true;
             o.alarm = true;
             o.stage = 1;

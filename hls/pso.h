@@ -25,6 +25,9 @@
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
 
+#include <cstddef>
+#include <utility>  // std::index_sequence (compile-time only: the chord ROM initialiser)
+
 #include "hls/axis_config.h"
 
 namespace lx {
@@ -81,18 +84,12 @@ struct pso_cfg {
     using bad_t = uint<ARR_DEPTH>;
 };
 
-// Chord ROM: v[s] = round(sqrt(s) * 2^D_FRAC), s = 0..S_MAX, computed at compile time with the
-// digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
+// Chord ROM: chord[s] = round(sqrt(s) * 2^D_FRAC), s = 0..S_MAX, computed at compile time with
+// the digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
 // partial remainder stays below 2 * root + 1 < 2^40). Ties cannot occur (sqrt(s) * 2^32 is an
 // integer or irrational), so "round to nearest" needs no tie rule: root + 1 when the remainder
 // x - root^2 exceeds root.
 struct pso_chord_rom {
-    uint64_t v[pso_cfg::S_MAX + 1];
-
-    constexpr pso_chord_rom() : v() {
-        for (int s = 0; s <= pso_cfg::S_MAX; ++s) v[s] = round_sqrt(static_cast<uint64_t>(s));
-    }
-
     static constexpr uint64_t round_sqrt(uint64_t s) {
         constexpr int s_pairs = (pso_cfg::W_S + 1) / 2;
         uint64_t root = 0;
@@ -110,12 +107,19 @@ struct pso_chord_rom {
         }
         return rem > root ? root + 1 : root;
     }
+
+    // The ROM is the array `rom` itself (a function-local static with a constant initialiser,
+    // one element per s), so BIND_STORAGE names the array where it is declared.
+    template <std::size_t... S>
+    static pso_cfg::chord_t lookup(pso_cfg::s_t s, std::index_sequence<S...>) {
+        static const uint64_t rom[sizeof...(S)] = {round_sqrt(S)...};
+#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
+        return rom[s.to_uint()];
+    }
 };
 
 inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
-    static constexpr pso_chord_rom rom{};
-#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
-    return rom.v[s.to_uint()];
+    return pso_chord_rom::lookup(s, std::make_index_sequence<pso_cfg::S_MAX + 1>());
 }
 
 // Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched

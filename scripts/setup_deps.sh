@@ -21,6 +21,7 @@ missing_packages() {
     command -v iverilog       >/dev/null 2>&1 || echo iverilog
     command -v yosys          >/dev/null 2>&1 || echo yosys
     command -v nextpnr-ice40  >/dev/null 2>&1 || echo nextpnr-ice40
+    command -v valgrind       >/dev/null 2>&1 || echo valgrind
     if [ ! -x "$PY" ]; then
         echo python3; echo python3-numpy; echo python3-matplotlib
     elif ! "$PY" -c 'import numpy, matplotlib' >/dev/null 2>&1; then
@@ -31,7 +32,7 @@ missing_packages() {
 
 mapfile -t missing < <(missing_packages)
 if [ "${#missing[@]}" -eq 0 ]; then
-    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 $PY+numpy+matplotlib)"
+    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 valgrind $PY+numpy+matplotlib)"
     exit 0
 fi
 
