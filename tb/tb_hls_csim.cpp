@@ -1,3 +1,4 @@
+// ctest-args-O0: --calls 40000
 // ctest-args-valgrind: --calls 12000
 // tb_hls_csim — testbench of the synthesis top function laserax_top() (also the Vitis HLS C
 // simulation testbench of scripts/run_hls.tcl). It uses only the top function (through the
