@@ -16,6 +16,7 @@ bool config_ok(const axis_regs& r) {
            r.dac_width >= 12 && r.dac_width <= 18 &&                       //
            r.amplitude >= 1 && r.amplitude <= (int64_t{1} << (r.dac_width - 1)) - 1 &&  //
            r.tbl_period == P &&                                            //
+           !r.tbl_we &&                                                    //
            r.mark_len >= P / 4 && r.mark_len <= P &&                       //
            r.min_spacing > std::max<int64_t>(r.glitch_n, 1);  // count integrity (DESIGN 4.2)
 }

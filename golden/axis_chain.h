@@ -48,6 +48,9 @@ struct axis_regs {
     int64_t dac_width = 16;
     int64_t amplitude = 32767;
     int64_t tbl_period = 256;
+    // DDS table write enable: the golden chain has no table RAM (its sin/cos are computed), but a
+    // call with tbl_we = 1 is in the safe state (DESIGN 4.6, 4.7)
+    bool tbl_we = false;
     bool rehome = false;
     bool clear = false;
     error_map_regs emap;  // map_en, bank_sel, geometries, table write port; reset: disabled
@@ -80,7 +83,7 @@ struct axis_out {
 };
 
 // DESIGN 4.7: 8 <= P <= 4096, P % 8 == 0, ratio != 0, 2 <= pace_m, 12 <= dac_width <= 18,
-// 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P,
+// 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P, tbl_we == 0,
 // min_spacing > max(glitch_n, 1) (count integrity, DESIGN 4.2).
 bool config_ok(const axis_regs& r);
 

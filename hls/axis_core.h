@@ -70,31 +70,31 @@ struct axis_pins {
 };
 
 struct axis_out {
-    dac_t sin, cos;
-    bool ref_mark, qa, qb, qz;
+    dac_t sin = 0, cos = 0;
+    bool ref_mark = false, qa = false, qb = false, qz = false;
     // status
-    bool cfg_err;
-    rephase_cfg::stage_t stage;
-    bool homed, lerr_alarm, illegal_st;
-    quad_decoder_cfg::errcnt_t err_cnt;
-    bool ovs_edge_st, ovs_backlog_st, glitch_st, alarm;
-    bool dac_clip_st;  // sticky: a DDS code outside +-(2^(dac_width-1) - 1) was clamped (DAC range guard)
+    bool cfg_err = false;
+    rephase_cfg::stage_t stage = 0;
+    bool homed = false, lerr_alarm = false, illegal_st = false;
+    quad_decoder_cfg::errcnt_t err_cnt = 0;
+    bool ovs_edge_st = false, ovs_backlog_st = false, glitch_st = false, alarm = false;
+    bool dac_clip_st = false;  // sticky: a DDS code outside +-(2^(dac_width-1) - 1) was clamped (DAC range guard)
     // taps: registered outputs of each block at this call
-    raw_t raw_count;
-    step_t step;
-    pos_t comp_pos;
-    delta_t delta;
-    backlog_t backlog;
-    step_t pstep;
-    pos_t paced_pos;
-    step_t ostep;
-    pos_t out_pos, adj, a_pos, b_pos, c_pos, z_pos;
-    rephase_cfg::ph_t d;
-    bool rep_mark;
+    raw_t raw_count = 0;
+    step_t step = 0;
+    pos_t comp_pos = 0;
+    delta_t delta = 0;
+    backlog_t backlog = 0;
+    step_t pstep = 0;
+    pos_t paced_pos = 0;
+    step_t ostep = 0;
+    pos_t out_pos = 0, adj = 0, a_pos = 0, b_pos = 0, c_pos = 0, z_pos = 0;
+    rephase_cfg::ph_t d = 0;
+    bool rep_mark = false;
     // error map (docs/ERROR_MAP.md §8)
-    bool map_cfg_err;               // map_en with an invalid geometry of the selected bank
-    error_map_cfg::corr_t corr;     // correction of the comp of call t-2, output counts
-    error_map_cfg::cdelta_t map_delta;  // corr(t) - corr(t-1), added to the pacer input
+    bool map_cfg_err = false;               // map_en with an invalid geometry of the selected bank
+    error_map_cfg::corr_t corr = 0;     // correction of the comp of call t-2, output counts
+    error_map_cfg::cdelta_t map_delta = 0;  // corr(t) - corr(t-1), added to the pacer input
 };
 
 // The pacer input mul_q_.delta + emap_q_.delta fits delta_t: a multiplier delta is at most one
@@ -120,7 +120,7 @@ inline bool axis_config_ok(const axis_regs& r) {
         (r.glitch_n == 0) ? quad_decoder_cfg::spacing_t(1) : quad_decoder_cfg::spacing_t(r.glitch_n);
     const bool spacing_ok = r.min_spacing > glitch_floor;
     return period_ok && width_ok && amp_ok && mark_ok && spacing_ok && r.ratio != 0 && r.pace_m >= 2 &&
-           r.tbl_period == r.period;
+           r.tbl_period == r.period && !r.tbl_we;  // table writes only in the safe state (§4.6)
 }
 
 // Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
@@ -143,6 +143,7 @@ public:
         dds_.reset();
         emap_.reset();  // pipeline only, not the table RAM
         dac_clip_st_ = false;
+        // inter-block registers: every out_t member has a default member initialiser (0 / false)
         swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
         dec_q_ = quad_decoder::out_t{};
         mul_q_ = pulse_multiplier::out_t{};
@@ -155,14 +156,13 @@ public:
     dds_sincos& dds() { return dds_; }
 
     axis_out step(const axis_pins& pins, const axis_regs& regs) {
-        if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
         // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
         // not part of the chain reset (register file state)
         if (!regs.comp_sync || regs.comp_commit) {
             ratio_h_ = regs.ratio;
             offset_h_ = regs.comp_offset;
         }
-        axis_out o = axis_out{};
+        axis_out o;  // every field 0 / false (default member initialisers)
         // A period change while running is a reconfiguration: the phase counters of the old
         // period are meaningless for the next one, so the chain restarts (one call in the safe
         // state). Coming out of reset or of an invalid configuration the blocks are already reset.
@@ -172,6 +172,9 @@ public:
         run_q_ = ok;
         if (!ok) {
             reset();  // safe state: every block held in reset
+            // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
+            // read the table, so its true dual-port RAM has at most two accesses per call
+            if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
             o.cfg_err = true;
             o.alarm = true;
             o.stage = 1;

@@ -41,8 +41,8 @@ class dds_sincos {
 public:
     using cfg = dds_sincos_cfg;
     struct out_t {
-        dac_t sin;
-        dac_t cos;
+        dac_t sin = 0;
+        dac_t cos = 0;
     };
 
     dds_sincos() { reset(); }
@@ -60,7 +60,6 @@ public:
     tbl_word_t read(tbl_addr_t addr) const { return tbl_[addr.to_uint()]; }
 
     out_t step(step_t ostep, period_t period, cfg::amp_t amp) {
-#pragma HLS BIND_STORAGE variable=tbl_ type=ram_t2p impl=bram
         const cfg::r_t quarter = period >> 2;
         const cfg::r_t r_mirror = quarter - r_;  // 1..P/4
         const dac_t t_dir = dac_t(tbl_[r_.to_uint()]);  // r < P/4 <= 1024
@@ -98,6 +97,7 @@ private:
     cfg::r_t r_;
     dac_t sin_, cos_;
     tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
+#pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
 };
 
 }  // namespace lx

@@ -107,6 +107,13 @@ struct encoder_counter_in {
     step_t qstep[encoder_counter_cfg::N_CH];          // from the quadrature decoders
     bool trig;                                        // start trigger (pulse)
     encoder_counter_cfg::posin_t pos[encoder_counter_cfg::N_CH];  // nominal output position, bits
+
+    encoder_counter_in() : trig(false) {
+        for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+            qstep[c] = 0;
+            pos[c] = 0;
+        }
+    }
 };
 
 inline bool encoder_counter_config_ok(const encoder_counter_regs& r) {
@@ -131,6 +138,16 @@ public:
         bool waiting;
         bool reached;                  // pulse: the awaited counter passed the value
         bool cfg_err;
+
+        out_t() : tick(false), waiting(false), reached(false), cfg_err(false) {
+            for (int c = 0; c < cfg::N_CH; ++c) {
+                cnt[c] = 0;
+                step[c] = 0;
+                rst_done[c] = false;
+                rst_pending[c] = false;
+                corr[c] = 0;
+            }
+        }
     };
 
     encoder_counter() { reset(); }
@@ -159,7 +176,7 @@ public:
     }
 
     out_t step(const encoder_counter_in& in, const encoder_counter_regs& r) {
-        out_t o = out_t{};
+        out_t o;  // every field 0 / false (out_t())
         if (!encoder_counter_config_ok(r)) {
             reset();
             o.cfg_err = true;

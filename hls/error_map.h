@@ -12,10 +12,12 @@
 //                                  corr' = active ? floor(num / 2^(F+k) + 1/2) : 0
 //                                  delta = corr' - corr
 //
-// Two banks: the table write port always writes the bank that is *not* selected by bank_sel in
-// that call, and each bank has its own geometry (origin, spacing_log2, n_points). Both reads of a
-// call and the geometry they use come from the bank selected in that call, so a flip of bank_sel
-// switches table and geometry together at one call boundary and a reload can never mix tables.
+// Two banks, two separate arrays (RAMs): the table write port always writes the bank that is
+// *not* selected by bank_sel in that call (so each true dual-port RAM sees at most two accesses
+// per call: two reads, or one write), and each bank has its own geometry (origin, spacing_log2,
+// n_points). Both reads of a call and the geometry they use come from the bank selected in
+// that call, so a flip of bank_sel switches table and geometry together at one call boundary
+// and a reload can never mix tables.
 //
 // Widths (derived in error_map_cfg): table words 24 bits signed Q15.8 counts, offset 39 signed,
 // frac 20 unsigned, interpolation numerator 46 signed, corr 17 signed, delta 18 signed.
@@ -85,17 +87,19 @@ class error_map {
 public:
     using cfg = error_map_cfg;
     struct out_t {
-        cfg::corr_t corr;     // correction in whole output counts (0 while inactive)
-        cfg::cdelta_t delta;  // corr' - corr: counts to add (> 0) or remove (< 0)
-        bool active;          // map_en && homed && valid geometry (of the input call)
-        bool in_range;        // active and p inside [origin, origin + (n-1) * 2^k]
-        bool clamped;         // active and p outside: the end value is held
-        bool cfg_err;         // map_en and the selected bank's geometry is invalid
+        cfg::corr_t corr = 0;     // correction in whole output counts (0 while inactive)
+        cfg::cdelta_t delta = 0;  // corr' - corr: counts to add (> 0) or remove (< 0)
+        bool active = false;          // map_en && homed && valid geometry (of the input call)
+        bool in_range = false;        // active and p inside [origin, origin + (n-1) * 2^k]
+        bool clamped = false;         // active and p outside: the end value is held
+        bool cfg_err = false;         // map_en and the selected bank's geometry is invalid
     };
 
     error_map() {
-        for (int b = 0; b < cfg::N_BANKS; ++b)
-            for (int a = 0; a < cfg::TBL_DEPTH; ++a) tbl_[b][a] = 0;
+        for (int a = 0; a < cfg::TBL_DEPTH; ++a) {
+            tbl0_[a] = 0;
+            tbl1_[a] = 0;
+        }
         reset();
     }
 
@@ -112,7 +116,6 @@ public:
     }
 
     out_t step(pos_t p, bool homed, const error_map_regs& r) {
-#pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
         // ---- stage B: interpolate the reads registered by the previous call -----------------
         const cfg::one_t one = cfg::one_t(1) << k_q_.to_uint();  // 2^k
         const cfg::num_t diff = cfg::num_t(t1_q_) - cfg::num_t(t0_q_);
@@ -137,9 +140,9 @@ public:
         const cfg::addr_t last_i = geom_ok ? cfg::addr_t(g.n_points - 1) : cfg::addr_t(0);
         const cfg::off_t off = cfg::off_t(p) - cfg::off_t(g.origin);
         const cfg::off_t last_off = cfg::off_t(last_i) << k;  // (n-1) * 2^k < 2^31
-        cfg::addr_t i0;
-        cfg::frac_t frac;
-        bool inr;
+        cfg::addr_t i0 = 0;
+        cfg::frac_t frac = 0;
+        bool inr = false;
         if (off < 0) {
             i0 = 0;
             frac = 0;
@@ -154,8 +157,15 @@ public:
             inr = true;
         }
         const cfg::addr_t i1 = (i0 == last_i) ? i0 : cfg::addr_t(i0 + 1);
-        t0_q_ = tbl_[bs][i0.to_uint()];
-        t1_q_ = tbl_[bs][i1.to_uint()];
+        // Two separate RAMs: the selected bank sees the two reads, the other one at most the
+        // write port (below), so neither has more than two accesses in a call.
+        if (bs == 0) {
+            t0_q_ = tbl0_[i0.to_uint()];
+            t1_q_ = tbl0_[i1.to_uint()];
+        } else {
+            t0_q_ = tbl1_[i0.to_uint()];
+            t1_q_ = tbl1_[i1.to_uint()];
+        }
         frac_q_ = frac;
         k_q_ = k;
         act_q_ = r.map_en && homed && geom_ok;
@@ -163,12 +173,20 @@ public:
         err_q_ = r.map_en && !geom_ok;
 
         // ---- write port: the inactive bank only (never read in this call) --------------------
-        if (r.we) tbl_[1 - bs][r.addr.to_uint()] = r.data;
+        if (r.we) {
+            if (bs == 0) tbl1_[r.addr.to_uint()] = r.data;
+            else tbl0_[r.addr.to_uint()] = r.data;
+        }
         return o;
     }
 
 private:
-    cfg::word_t tbl_[cfg::N_BANKS][cfg::TBL_DEPTH];
+    // the two banks, each its own true dual-port BRAM (2048 x 24 bits)
+    static_assert(cfg::N_BANKS == 2, "error_map: banks tbl0_, tbl1_");
+    cfg::word_t tbl0_[cfg::TBL_DEPTH];
+#pragma HLS BIND_STORAGE variable = tbl0_ type = ram_t2p impl = bram
+    cfg::word_t tbl1_[cfg::TBL_DEPTH];
+#pragma HLS BIND_STORAGE variable = tbl1_ type = ram_t2p impl = bram
     cfg::word_t t0_q_, t1_q_;  // T[i], T[i+1] (registered BRAM outputs)
     cfg::frac_t frac_q_;
     cfg::k_t k_q_;

@@ -29,9 +29,9 @@ public:
     using cfg = input_filter_cfg<W_CNT>;
     using cnt_t = typename cfg::cnt_t;
     struct out_t {
-        bool f;
-        bool valid;
-        bool glitch;  // pulse: a change shorter than max(N,1) calls was suppressed
+        bool f = false;
+        bool valid = false;
+        bool glitch = false;  // pulse: a change shorter than max(N,1) calls was suppressed
     };
 
     input_filter() { reset(); }

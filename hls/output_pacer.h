@@ -28,11 +28,11 @@ class output_pacer {
 public:
     using cfg = output_pacer_cfg;
     struct out_t {
-        step_t pstep;
-        pos_t paced;
-        backlog_t backlog;
-        bool ovs;
-        bool ovs_st;
+        step_t pstep = 0;
+        pos_t paced = 0;
+        backlog_t backlog = 0;
+        bool ovs = false;
+        bool ovs_st = false;
     };
 
     output_pacer() { reset(); }

@@ -25,6 +25,9 @@
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
 
+#include <cstddef>
+#include <utility>  // std::index_sequence (compile-time only: the chord ROM initialiser)
+
 #include "hls/axis_config.h"
 
 namespace lx {
@@ -81,18 +84,12 @@ struct pso_cfg {
     using bad_t = uint<ARR_DEPTH>;
 };
 
-// Chord ROM: v[s] = round(sqrt(s) * 2^D_FRAC), s = 0..S_MAX, computed at compile time with the
-// digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
+// Chord ROM: chord[s] = round(sqrt(s) * 2^D_FRAC), s = 0..S_MAX, computed at compile time with
+// the digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
 // partial remainder stays below 2 * root + 1 < 2^40). Ties cannot occur (sqrt(s) * 2^32 is an
 // integer or irrational), so "round to nearest" needs no tie rule: root + 1 when the remainder
 // x - root^2 exceeds root.
 struct pso_chord_rom {
-    uint64_t v[pso_cfg::S_MAX + 1];
-
-    constexpr pso_chord_rom() : v() {
-        for (int s = 0; s <= pso_cfg::S_MAX; ++s) v[s] = round_sqrt(static_cast<uint64_t>(s));
-    }
-
     static constexpr uint64_t round_sqrt(uint64_t s) {
         constexpr int s_pairs = (pso_cfg::W_S + 1) / 2;
         uint64_t root = 0;
@@ -110,12 +107,19 @@ struct pso_chord_rom {
         }
         return rem > root ? root + 1 : root;
     }
+
+    // The ROM is the array `rom` itself (a function-local static with a constant initialiser,
+    // one element per s), so BIND_STORAGE names the array where it is declared.
+    template <std::size_t... S>
+    static pso_cfg::chord_t lookup(pso_cfg::s_t s, std::index_sequence<S...>) {
+        static const uint64_t rom[sizeof...(S)] = {round_sqrt(S)...};
+#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
+        return rom[s.to_uint()];
+    }
 };
 
 inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
-    static constexpr pso_chord_rom rom{};
-#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
-    return rom.v[s.to_uint()];
+    return pso_chord_rom::lookup(s, std::make_index_sequence<pso_cfg::S_MAX + 1>());
 }
 
 // Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched
@@ -145,13 +149,20 @@ struct pso_in {
     step_t step[pso_cfg::N_AXES];  // tracked axis steps (-1, 0, +1)
     pos_t pos[pso_cfg::N_AXES];    // axis positions after the step (window comparison)
     pso_cfg::inc_t ps_inc;         // part-speed commanded vector rate, Q0.32 counts per clock
+
+    pso_in() : ps_inc(0) {
+        for (int i = 0; i < pso_cfg::N_AXES; ++i) {
+            step[i] = 0;
+            pos[i] = 0;
+        }
+    }
 };
 
 // Configuration check (combinational, every call).
 inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
     const bool k_ok = r.win_k >= 1 && r.win_k <= pso_cfg::K_MAX;
     const bool axes_ok = r.part_speed || r.axis_mask != 0;
-    bool thr_ok;
+    bool thr_ok = false;
     if (r.arr_en) {
         const bool len_ok = r.arr_len >= 1 && r.arr_len <= pso_cfg::ARR_DEPTH;
         pso_cfg::bad_t used = ~pso_cfg::bad_t(0);
@@ -168,22 +179,22 @@ class pso {
 public:
     using cfg = pso_cfg;
     struct out_t {
-        bool fire;          // the tracked distance crossed the threshold (stage B)
-        bool emit;          // fire inside the window: a pulse starts
-        bool pulse;         // output level (pulse_w calls from the emit)
-        bool in_win;        // window condition used by this call's fire
-        cfg::rem_t dist;    // distance since the last fire, Q.32 counts (after this call's fire)
-        cfg::len_t idx;     // array: index of the entry that gives the next threshold
-        bool arr_done;      // array without wrap: every entry has fired
-        cfg::fcnt_t fire_cnt;     // emitted pulses (wraps)
-        cfg::ovl_t overlap_cnt;   // emits while the previous pulse was still high (saturating)
-        bool overlap, overlap_st;
-        bool rate_over, rate_over_st;   // part-speed command above 24 MHz (clamped)
-        bool spacing_err, spacing_st;   // threshold below rate * min_period (part-speed)
-        bool freq_err, freq_st;         // emit fewer than min_period calls after the previous one
-        bool ps_pulse;                  // pulse-generator output of this call
-        pos_t ps_count;                 // pulse-generator count since the run started
-        bool cfg_err;
+        bool fire = false;          // the tracked distance crossed the threshold (stage B)
+        bool emit = false;          // fire inside the window: a pulse starts
+        bool pulse = false;         // output level (pulse_w calls from the emit)
+        bool in_win = false;        // window condition used by this call's fire
+        cfg::rem_t dist = 0;    // distance since the last fire, Q.32 counts (after this call's fire)
+        cfg::len_t idx = 0;     // array: index of the entry that gives the next threshold
+        bool arr_done = false;      // array without wrap: every entry has fired
+        cfg::fcnt_t fire_cnt = 0;     // emitted pulses (wraps)
+        cfg::ovl_t overlap_cnt = 0;   // emits while the previous pulse was still high (saturating)
+        bool overlap = false, overlap_st = false;
+        bool rate_over = false, rate_over_st = false;   // part-speed command above 24 MHz (clamped)
+        bool spacing_err = false, spacing_st = false;   // threshold below rate * min_period (part-speed)
+        bool freq_err = false, freq_st = false;         // emit fewer than min_period calls after the previous one
+        bool ps_pulse = false;                  // pulse-generator output of this call
+        pos_t ps_count = 0;                 // pulse-generator count since the run started
+        bool cfg_err = false;
     };
 
     pso() {
@@ -210,7 +221,7 @@ public:
             const cfg::bad_t bit = cfg::bad_t(1) << r.arr_addr.to_uint();
             arr_bad_ = (r.arr_data < cfg::MIN_DIST) ? cfg::bad_t(arr_bad_ | bit) : cfg::bad_t(arr_bad_ & ~bit);
         }
-        out_t o = out_t{};
+        out_t o;  // every field 0 / false (default member initialisers)
         if (!pso_config_ok(r, arr_bad_)) {
             reset();
             o.cfg_err = true;

@@ -75,8 +75,8 @@ class pulse_multiplier {
 public:
     using cfg = pulse_multiplier_cfg;
     struct out_t {
-        pos_t comp;
-        delta_t delta;
+        pos_t comp = 0;
+        delta_t delta = 0;
     };
 
     pulse_multiplier() { reset(); }

@@ -33,16 +33,16 @@ class quad_decoder {
 public:
     using cfg = quad_decoder_cfg;
     struct out_t {
-        step_t step;
-        raw_t raw_count;
-        bool illegal;
-        bool ovs;
-        cfg::errcnt_t err_cnt;
-        bool illegal_st;
-        bool ovs_st;
-        bool lerr;
-        bool lerr_alarm;
-        bool glitch_st;  // sticky: the A or B glitch filter suppressed a pulse
+        step_t step = 0;
+        raw_t raw_count = 0;
+        bool illegal = false;
+        bool ovs = false;
+        cfg::errcnt_t err_cnt = 0;
+        bool illegal_st = false;
+        bool ovs_st = false;
+        bool lerr = false;
+        bool lerr_alarm = false;
+        bool glitch_st = false;  // sticky: the A or B glitch filter suppressed a pulse
     };
 
     quad_decoder() { reset(); }

@@ -38,13 +38,13 @@ class rephase {
 public:
     using cfg = rephase_cfg;
     struct out_t {
-        step_t ostep;
-        pos_t out_pos;
-        bool mark;
-        cfg::stage_t stage;
-        pos_t a, b, c, z, adj;
-        cfg::ph_t d;
-        bool homed;
+        step_t ostep = 0;
+        pos_t out_pos = 0;
+        bool mark = false;
+        cfg::stage_t stage = 0;
+        pos_t a = 0, b = 0, c = 0, z = 0, adj = 0;
+        cfg::ph_t d = 0;
+        bool homed = false;
     };
 
     rephase() { reset(); }

@@ -2,9 +2,10 @@
 //
 // A correction table over equally spaced positions, linear interpolation between points, the
 // correction delivered as whole output counts (corr) and as the change since the previous call
-// (delta). Two banks of 2048 x 24-bit words (one 4096-word RAM, bank = address MSB) with their
-// own geometry (origin, spacing_log2 k, n_points); the write port always writes the bank that is
-// not selected in that call, so a reload can never mix tables.
+// (delta). Two banks of 2048 x 24-bit words (two RAMs, tbl0 and tbl1, as the two arrays of
+// hls/error_map.h) with their own geometry (origin, spacing_log2 k, n_points); the write port
+// always writes the bank that is not selected in that call, so a reload can never mix tables and
+// each RAM sees at most two accesses per edge (the two reads, or the write).
 //
 // Timing (one rising edge = one call of error_map::step()):
 //   stage A (edge t):   off = p - origin, clamp to [0, (n-1) 2^k], i = off >> k,
@@ -59,10 +60,11 @@ module error_map (
     localparam integer W_CDELTA  = 18;
 
     // ---- table RAM (not reset) ---------------------------------------------------------------
-    reg signed [W_CORR-1:0] tbl [0:2*TBL_DEPTH-1];
+    reg signed [W_CORR-1:0] tbl0 [0:TBL_DEPTH-1];   // bank 0
+    reg signed [W_CORR-1:0] tbl1 [0:TBL_DEPTH-1];   // bank 1
 
     // ---- registers ---------------------------------------------------------------------------
-    reg signed [W_CORR-1:0]   t0_q, t1_q;   // T[i], T[i+1] (registered RAM outputs)
+    wire signed [W_CORR-1:0]  t0_q, t1_q;   // T[i], T[i+1] (registered RAM outputs, bank mux)
     reg        [W_FRAC-1:0]   frac_q;
     reg        [4:0]          k_q;
     reg                       act_q, inr_q, err_q;
@@ -102,19 +104,38 @@ module error_map (
     wire                      inr      = below ? 1'b0 : above ? (off == last_off) : 1'b1;
     wire        [W_ADDR-1:0]  i1       = (i0 == last_i) ? i0 : i0 + {{(W_ADDR-1){1'b0}}, 1'b1};
 
-    // RAM: two registered reads of the selected bank, one write of the other bank
+    // RAMs: two registered reads of the selected bank, one write of the other bank
     always @(posedge i_clk) begin
-        if (!i_rst && i_we) tbl[{!i_bank_sel, i_addr}] <= i_data;
+        if (!i_rst && i_we && i_bank_sel) tbl0[i_addr] <= i_data;
     end
+    always @(posedge i_clk) begin
+        if (!i_rst && i_we && !i_bank_sel) tbl1[i_addr] <= i_data;
+    end
+    // registered reads (BRAM read registers with read enable: only the selected bank is read, so
+    // the other RAM sees at most the write) and the bank they were taken for
+    reg signed [W_CORR-1:0] rd0_0_q, rd0_1_q, rd1_0_q, rd1_1_q;
+    reg                     rd_sel_q;
     always @(posedge i_clk) begin
         if (i_rst) begin
-            t0_q <= {W_CORR{1'b0}};
-            t1_q <= {W_CORR{1'b0}};
+            rd0_0_q  <= {W_CORR{1'b0}};
+            rd0_1_q  <= {W_CORR{1'b0}};
+            rd1_0_q  <= {W_CORR{1'b0}};
+            rd1_1_q  <= {W_CORR{1'b0}};
+            rd_sel_q <= 1'b0;
         end else begin
-            t0_q <= tbl[{i_bank_sel, i0}];
-            t1_q <= tbl[{i_bank_sel, i1}];
+            if (!i_bank_sel) begin
+                rd0_0_q <= tbl0[i0];
+                rd0_1_q <= tbl0[i1];
+            end
+            if (i_bank_sel) begin
+                rd1_0_q <= tbl1[i0];
+                rd1_1_q <= tbl1[i1];
+            end
+            rd_sel_q <= i_bank_sel;
         end
     end
+    assign t0_q = rd_sel_q ? rd1_0_q : rd0_0_q;
+    assign t1_q = rd_sel_q ? rd1_1_q : rd0_1_q;
 
     always @(posedge i_clk) begin
         if (i_rst) begin

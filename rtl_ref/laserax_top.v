@@ -17,8 +17,9 @@
 // first appears after a running call (period_q != period with run_q = 1; coming out of power-up
 // or of an invalid configuration the blocks are already reset, so no extra call), every block is
 // reset at the edge (the C++ axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz =
-// ref_mark = 0, stage 1. The table write port works in every call, before the table read of the
-// same call (hls: dds_.write() precedes dds_.step()).
+// ref_mark = 0, stage 1. A table write (i_tbl_we = 1) fails the configuration check, so it is
+// made only in a safe-state edge, in which the DDS is in reset (hls: dds_.write() only in the
+// safe state of axis_core::step(); DESIGN 4.6).
 //
 // i_rst (synchronous, active high) is the power-up state of the C++ object: every block reset,
 // period_q = 0, run_q = 0, cfg_err = 0. The table RAM is not affected by any reset.
@@ -153,7 +154,7 @@ module laserax_top #(
     wire        spacing_ok = i_min_spacing > {8'd0, glitch_fl};
     wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && spacing_ok && i_ratio != 37'd0 &&
                             ratio_eff != 37'd0 &&
-                            i_pace_m >= 16'd2 && i_tbl_period == i_period;
+                            i_pace_m >= 16'd2 && i_tbl_period == i_period && !i_tbl_we;
 
     // a period change between two running calls is a reconfiguration: one call in the safe state
     reg  [12:0] period_q;                             // period register of the previous call

@@ -6,8 +6,9 @@
 #       golden/  must not include anything from hls/ or rtl_ref/ (the golden models are written
 #                from docs/DESIGN.md, never from the bit-true code);
 #       hls/     must not include anything from golden/, tb/ or tools/, and may include only
-#                hls/ headers, <cstdint>, <climits>, <type_traits> and the Vitis headers
-#                ap_int.h, ap_fixed.h, hls_stream.h.
+#                hls/ headers, <cstdint>, <cstddef>, <climits>, <type_traits>, <utility> (compile-time
+#                std::index_sequence only) and the Vitis headers
+#                ap_int.h, ap_fixed.h, hls_stream.h and the Catapult headers ac_int.h, ac_fixed.h.
 #   --lint                synthesisability lint of hls/ (CTest: lint_hls): no float, double,
 #                malloc/calloc/realloc/free/alloca, new/delete, std::vector/map/string/cout/cerr
 #                (and other std containers, std::function, smart pointers, threads), iostream,
@@ -94,11 +95,11 @@ function check_include(folder, t, quoted,   base) {
     if (folder != "hls" || exempt) return
     if (t ~ /^(\.\.\/)*(golden|tb|tools)\//) { report("include", "hls/ must not include golden/, tb/ or tools/"); return }
     if (t ~ /\.\./) { report("include", "hls/ include with '..' (use paths from the repo root)"); return }
-    if (t == "cstdint" || t == "climits" || t == "type_traits") return
-    if (t == "ap_int.h" || t == "ap_fixed.h" || t == "hls_stream.h") return
+    if (t == "cstdint" || t == "climits" || t == "type_traits" || t == "cstddef" || t == "utility") return
+    if (t == "ap_int.h" || t == "ap_fixed.h" || t == "hls_stream.h" || t == "ac_int.h" || t == "ac_fixed.h") return
     if (t ~ /^hls\//) return
     if (quoted && t !~ /\// && index(hlsnames, " " t " ")) return
-    report("include", "header not allowed in hls/ (only hls/*, <cstdint>, <climits>, <type_traits>, ap_int.h, ap_fixed.h, hls_stream.h outside #ifndef __SYNTHESIS__)")
+    report("include", "header not allowed in hls/ (only hls/*, <cstdint>, <cstddef>, <climits>, <type_traits>, <utility>, ap_int.h, ap_fixed.h, hls_stream.h, ac_int.h, ac_fixed.h outside #ifndef __SYNTHESIS__)")
 }
 function lint(s,   t) {
     t = s
@@ -212,7 +213,7 @@ selftest() {
         fi
     }
     local clean_hls
-    clean_hls='hls/a.h|#pragma once\n#include <cstdint>\n#include <climits>\n#include <type_traits>\n#include "hls/b.h"\n#include "b.h"\n#ifdef LASERAX_USE_AP_TYPES\n#include <ap_int.h>\n#include "ap_fixed.h"\n#include <hls_stream.h>\n#endif\n// no float, double, new or printf here\n/* block comment: std::vector<float> v;\n   throw new double; */\nstruct X { X(const X&) = delete; int32_t new_pos; int to_double; };\ninline const char* name() { return "float new try"; }\nconstexpr int kSep = 1'"'"'000;\n#ifndef __SYNTHESIS__\n#include <iostream>\n#include <vector>\n#ifdef FOO\n#endif\ninline void dbg(double v) { std::cout << v; std::vector<float> q; printf("x"); }\n#endif\n#ifdef __SYNTHESIS__\nint synth_only;\n#else\n#include <cstdio>\ninline void dbg2() { float f = 0; (void)f; }\n#endif\n#if !defined(__SYNTHESIS__) && defined(DEBUG)\ninline void dbg3() { throw 1; }\n#endif'
+    clean_hls='hls/a.h|#pragma once\n#include <cstdint>\n#include <climits>\n#include <type_traits>\n#include <cstddef>\n#include <utility>\n#include "hls/b.h"\n#include "b.h"\n#ifdef LASERAX_USE_AP_TYPES\n#include <ap_int.h>\n#include "ap_fixed.h"\n#include <hls_stream.h>\n#elif defined(LASERAX_USE_AC_TYPES)\n#include <ac_int.h>\n#endif\n// no float, double, new or printf here\n/* block comment: std::vector<float> v;\n   throw new double; */\nstruct X { X(const X&) = delete; int32_t new_pos; int to_double; };\ninline const char* name() { return "float new try"; }\nconstexpr int kSep = 1'"'"'000;\n#ifndef __SYNTHESIS__\n#include <iostream>\n#include <vector>\n#ifdef FOO\n#endif\ninline void dbg(double v) { std::cout << v; std::vector<float> q; printf("x"); }\n#endif\n#ifdef __SYNTHESIS__\nint synth_only;\n#else\n#include <cstdio>\ninline void dbg2() { float f = 0; (void)f; }\n#endif\n#if !defined(__SYNTHESIS__) && defined(DEBUG)\ninline void dbg3() { throw 1; }\n#endif'
     local clean_all="$clean_hls"$'\n''hls/b.h|#pragma once\n#include <cstdint>'$'\n''golden/g.cpp|#include "golden/g.h"\n#include <Eigen/Core>\n#include <cmath>\n#include <vector>'$'\n''tb/tb_x.cpp|#include "hls/a.h"\n#include "golden/g.h"'$'\n''tools/t.cpp|#include "hls/a.h"'
 
     expect includes pass clean          <<<"$clean_all"

@@ -308,12 +308,15 @@ def gen_top_cpp(regs):
 //
 // %s
 //
-// One call = one clock (free-running pipeline, II = 1, no block-level handshake). Pins are plain
-// wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
+// One call = one clock (pipeline, II = 1). Pins are plain wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
 // slave at its fixed offset (a register wider than 32 bits takes consecutive words, low word
 // first); the outputs are wires. The state of the axis lives in one static axis_core, so the
-// function is the whole IP. Build for Vitis with -DLASERAX_USE_AP_TYPES (see scripts/run_hls.tcl);
-// the default build uses lx_types' own classes.
+// function is the whole IP. The block-level control is on the same s_axilite slave (port=return:
+// ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
+// Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
+// the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
+// pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
+// scripts/run_hls.tcl); the default build uses lx_types' own classes.
 #include "hls/laserax_top.h"
 
 #include "hls/laserax_regmap.h"
@@ -321,7 +324,7 @@ def gen_top_cpp(regs):
 void laserax_top(bool a, bool b, bool sw, bool lerr,
 %s,
                  lx::axis_out& out) {
-#pragma HLS INTERFACE mode=ap_ctrl_none port=return
+#pragma HLS INTERFACE mode=s_axilite port=return bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=a
 #pragma HLS INTERFACE mode=ap_none port=b
 #pragma HLS INTERFACE mode=ap_none port=sw
@@ -979,8 +982,10 @@ Edit the CSV, never the generated files; CTest `regmap_generated` fails until th
 Conventions:
 
 * Byte offsets on the AXI4-lite slave `s_axi_ctrl` (bundle `ctrl`); the first register is at 0x%02X
-  (Vitis HLS reserves 0x00..0x0F of an s_axilite slave for its block-control registers, unused
-  here: the top has `ap_ctrl_none`). The word after each register's data words is reserved: Vitis
+  (Vitis HLS reserves 0x00..0x0F of an s_axilite slave for its block-control registers: the
+  top's return is on this slave; software writes 0x81 = ap_start | auto_restart to 0x00 once,
+  then the II = 1 pipeline runs one call per clock; the reference RTL `laserax_regs.v` has no
+  such word). The word after each register's data words is reserved: Vitis
   HLS keeps one control word per s_axilite scalar, even with `ap_none` (UG1399, "S_AXILITE Offset
   Option"), so a register of W bits occupies ceil(W/32) + 1 words. Other unused words: %s.
   Write 0 to reserved words.

@@ -8,7 +8,11 @@
 #   clock_ns  LASERAX_CLOCK_NS  default 10 (100 MHz)
 #   csim      CSIM              default 1   C simulation of tb/tb_hls_csim.cpp
 #   csynth    CSYNTH            default 1   C synthesis
-#   cosim     COSIM             default 0   C/RTL co-simulation (needs csynth results)
+#   cosim     COSIM             default 0   C/RTL co-simulation (needs csynth results): the same
+#                                           testbench; possible because the top's return is on
+#                                           the s_axilite slave with its arguments (ap_ctrl_hs
+#                                           through AXI4-Lite; the II = 1 pipeline free-runs once
+#                                           started with auto_restart, see hls/laserax_top.cpp)
 #   export    EXPORT            default 0   export_design -format ip_catalog
 #   reset     RESET             default 0   open the project with -reset (drops earlier results)
 # The project folder laserax_hls/ is created in the repository root (ignored by git).
@@ -44,7 +48,31 @@ if {[info exists argv]} {
 # Work from the repository root (the folder above this script), so paths are stable.
 set root [file normalize [file join [file dirname [info script]] ..]]
 cd $root
+
+# The files of the C simulation: the design, and the testbench with the golden chain it compares
+# against: exactly the sources CMake compiles for tb_hls_csim (the .cpp files tb/tb_hls_csim.cpp
+# reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
+# <build>/hls_csim_sources.txt, so they cannot drift (scripts/check_hls_tcl.py).
+set design_files {
+    hls/laserax_top.cpp
+}
+set tb_files {
+    tb/tb_hls_csim.cpp
+    golden/axis_chain.cpp
+    golden/dds_sincos.cpp
+    golden/error_map.cpp
+    golden/input_filter.cpp
+    golden/output_pacer.cpp
+    golden/pulse_multiplier.cpp
+    golden/quad_decoder.cpp
+    golden/rephase.cpp
+}
+
+# Compile flags, the same for design and testbench: C++14 (the Vitis front end), the ap_int back
+# end of hls/lx_types.h (Vitis supplies ap_int.h itself), includes from the repository root.
 # Absolute -I: csim compiles inside the solution folder, where a relative -I. would not resolve.
+# csim_design compiles without optimisation (its default, no -O); `make test` runs the same
+# testbench built with the vendor ap_int.h at -O0 and -O2 (CTest tb_hls_csim.ap_O0 / .ap_O2).
 set cflags "-std=c++14 -DLASERAX_USE_AP_TYPES -I$root"
 
 puts "run_hls.tcl: part=$part clock=${clock_ns}ns csim=$csim csynth=$csynth cosim=$cosim export=$export"
@@ -55,10 +83,8 @@ if {$reset} {
     open_project laserax_hls
 }
 set_top laserax_top
-add_files hls/laserax_top.cpp -cflags $cflags
-add_files -tb tb/tb_hls_csim.cpp -cflags $cflags
-# the C-simulation testbench compares the top with the golden chain
-foreach f [glob -nocomplain golden/*.cpp] { add_files -tb $f -cflags $cflags }
+foreach f $design_files { add_files $f -cflags $cflags }
+foreach f $tb_files { add_files -tb $f -cflags $cflags }
 
 open_solution solution1 -flow_target vivado
 set_part $part

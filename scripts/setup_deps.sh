@@ -27,6 +27,7 @@ missing_packages() {
             >/dev/null 2>&1; then
         echo "libclang-rt-$(clang++ -dumpversion | cut -d. -f1)-dev"
     fi
+    command -v valgrind       >/dev/null 2>&1 || echo valgrind
     if [ ! -x "$PY" ]; then
         echo python3; echo python3-numpy; echo python3-matplotlib
     elif ! "$PY" -c 'import numpy, matplotlib' >/dev/null 2>&1; then
@@ -37,7 +38,7 @@ missing_packages() {
 
 mapfile -t missing < <(missing_packages)
 if [ "${#missing[@]}" -eq 0 ]; then
-    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 clang+libFuzzer $PY+numpy+matplotlib)"
+    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 valgrind clang+libFuzzer $PY+numpy+matplotlib)"
     exit 0
 fi
 

@@ -1,4 +1,5 @@
 // ctest-args: --cycles 4000000
+// ctest-args-O0: --cycles 200000
 // tb_chain_error_map — the whole single-axis chain with the error map enabled (docs/ERROR_MAP.md
 // §8), hls against golden.
 //

@@ -1,4 +1,5 @@
 // ctest-args: --cycles 10000000
+// ctest-args-O0: --cycles 300000
 // tb_chain_random — long seeded random run of the whole single-axis chain, hls against golden.
 //
 // Stimulus (pin level, one call per clock): a fringe index that moves with random speeds, stops

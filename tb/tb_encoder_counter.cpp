@@ -1,4 +1,5 @@
 // ctest-args: --seed 4 --runs 40
+// ctest-args-O0: --seed 4 --runs 6
 // tb_encoder_counter — encoder counter block (hls/encoder_counter.h) against its golden model
 // (golden/encoder_counter.h) on every call, plus the behaviour it promises
 // (docs/PSO_COUNTERS.md §3).

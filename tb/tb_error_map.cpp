@@ -1,4 +1,5 @@
 // ctest-args: --seed 11 --runs 40 --calls 100000
+// ctest-args-O0: --seed 11 --runs 6 --calls 20000
 // tb_error_map — error mapping block (hls/error_map.h) against its golden model
 // (golden/error_map.h), every output on every call, plus the behaviour the block promises
 // (docs/ERROR_MAP.md).

@@ -1,3 +1,4 @@
+// ctest-args-O0: --samples-div 8
 // tb_gantry — twin-axis (gantry) referencing with two compensators (docs/GANTRY.md): the
 // cycle-accurate system (two lx::axis_core, a controller that decodes their sin/cos, coupled
 // mechanics) against the floating-point golden model golden/gantry_model, over the power-up
@@ -194,6 +195,13 @@ int main(int argc, char** argv) {
 
     // ---- sampled: seeded random phases + the two extreme combinations -------------------------
     const int sample_n[5] = {64, 48, 32, 32, 20};
+    // --samples-div D: 1/D of the random combinations (the -O0 type back-end build); the two
+    // extreme combinations of every period and the exhaustive part are always run
+    const long long samples_div = tbu::arg_ll(argc, argv, "--samples-div", 1);
+    if (samples_div < 1 || samples_div > 64) {
+        std::printf("tb_gantry: --samples-div must be 1..64\n");
+        return 2;
+    }
     const int periods[5] = {256, 320, 512, 640, 1280};
     for (int k = 0; k < 5; ++k) {
         const int p = periods[k];
@@ -201,7 +209,7 @@ int main(int argc, char** argv) {
         std::vector<std::pair<int, int>> combos = {{phase_for_d(p, p - 1), phase_for_d(p, 0)},
                                                    {phase_for_d(p, 0), phase_for_d(p, p - 1)}};
         std::uniform_int_distribution<int> ph(0, p - 1);
-        for (int i = 0; i < sample_n[k]; ++i) combos.push_back({ph(rng), ph(rng)});
+        for (int i = 0; i < sample_n[k] / samples_div; ++i) combos.push_back({ph(rng), ph(rng)});
         for (const auto& cb : combos) {
             lxt::gantry_config c = base(p);
             c.phase[0] = cb.first;

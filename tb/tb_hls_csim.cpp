@@ -1,3 +1,5 @@
+// ctest-args-O0: --calls 40000
+// ctest-args-valgrind: --calls 12000
 // tb_hls_csim — testbench of the synthesis top function laserax_top() (also the Vitis HLS C
 // simulation testbench of scripts/run_hls.tcl). It uses only the top function (through the
 // generated header-only tools/common/laserax_top_call.h, which passes the registers of an
@@ -7,14 +9,30 @@
 // One homing through the switch with the reset register values (P = 256, ratio for a HeNe laser
 // in standard air) at the power-up table contents: every output compared with the golden chain
 // on every call; then Z - A = 320 and sin == cos > 0 with the mark active at Z. Returns 1 on
-// failure, like the Vitis examples.
+// failure, like the Vitis examples. Optional argument `--calls N` (default 400000; homing and Z
+// are reached within the first 10000 calls): the shorter run of the valgrind test.
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 
 #include "golden/axis_chain.h"
 #include "hls/laserax_top.h"
 #include "tools/common/laserax_top_call.h"
 
-int main() {
+int main(int argc, char** argv) {
+    long calls = 400000;
+    for (int i = 1; i < argc; ++i) {
+        if (std::strcmp(argv[i], "--calls") == 0 && i + 1 < argc) {
+            calls = std::strtol(argv[++i], nullptr, 10);
+        } else {
+            std::printf("usage: tb_hls_csim [--calls N]\n");
+            return 2;
+        }
+    }
+    if (calls < 10000) {
+        std::printf("tb_hls_csim: --calls must be >= 10000 (homing and Z need them)\n");
+        return 2;
+    }
     const lx::axis_regs regs;  // reset values
     golden::axis_chain gold;
     gold.reset();
@@ -24,7 +42,7 @@ int main() {
     bool homed = false, z_ok = false;
     long long n = 0;                     // raw fringe index
     lx::axis_out prev2{}, prev1{};
-    for (long t = 0; t < 400000 && fails < 5; ++t) {
+    for (long t = 0; t < calls && fails < 5; ++t) {
         if (t > 100 && t % 60 == 0 && n < 130) ++n;
         static const bool qa[4] = {false, true, true, false};
         static const bool qb[4] = {false, false, true, true};

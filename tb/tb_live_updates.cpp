@@ -1,4 +1,5 @@
 // ctest-args: --calls 6000000
+// ctest-args-O0: --calls 1200000 --update-every 40000
 // tb_live_updates — sensor readings arriving while the axis moves (issue 3, "live updates").
 //
 // The axis moves back and forth over ~15 mm with a realistic laser (632.991 nm in air, ratio
@@ -28,6 +29,13 @@
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 23);
     const long long calls = tbu::arg_ll(argc, argv, "--calls", 6000000);
+    // calls between two updates (the -O0 type back-end build: a shorter run with the same number
+    // of updates, 10 times closer)
+    const long long every = tbu::arg_ll(argc, argv, "--update-every", 200000);
+    if (every < 10000) {
+        std::printf("tb_live_updates: --update-every must be >= 10000\n");
+        return 2;
+    }
     tbu::result res("tb_live_updates", seed);
     std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
@@ -59,7 +67,7 @@ int main(int argc, char** argv) {
     for (long long t = 0; t < calls; ++t) {
         if (motion.done() && rest_left == 0) {
             if (rng() % 2 == 0) {
-                rest_left = 250000;  // stand still across at least one update
+                rest_left = every + every / 4;  // stand still across at least one update
             } else {
                 // 0.2 .. 1 mm moves either way inside 0 .. 15 mm, at 50 .. 300 mm/s (nm per clock)
                 const double len = 2e5 + 8e5 * (0.5 + 0.5 * u(rng));
@@ -72,7 +80,7 @@ int main(int argc, char** argv) {
         if (rest_left > 0) --rest_left;
         const bool moving = !motion.done();
         motion.tick();
-        if (t > 0 && t % 200000 == 0) {
+        if (t > 0 && t % every == 0) {
             env.air_temp_c = std::min(30.0, std::max(15.0, env.air_temp_c + 0.5 * u(rng)));
             env.pressure_pa = std::min(110000.0, std::max(90000.0, env.pressure_pa + 300.0 * u(rng)));
             env.rh_percent = std::min(90.0, std::max(0.0, env.rh_percent + 5.0 * u(rng)));
@@ -94,7 +102,7 @@ int main(int argc, char** argv) {
         if (!res.expect(m.empty(), [&] { return "call " + std::to_string(t) + ": " + m; })) break;
         const lx::axis_out& h = ax.hls();
         const int64_t comp = h.comp_pos.to_int64();
-        if (t > 0 && t % 200000 == 0) max_jump = std::max<long long>(max_jump, std::llabs(comp - comp_prev));
+        if (t > 0 && t % every == 0) max_jump = std::max<long long>(max_jump, std::llabs(comp - comp_prev));
         stable = (comp == comp_prev && h.step == 0) ? stable + 1 : 0;
         comp_prev = comp;
         if (h.pstep != 0) {

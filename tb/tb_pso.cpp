@@ -1,4 +1,5 @@
 // ctest-args: --seed 6 --runs 48
+// ctest-args-O0: --seed 6 --runs 4
 // tb_pso — PSO block (hls/pso.h) against its golden model (golden/pso.h), every output on every
 // call, plus the behaviour the block promises (docs/PSO_COUNTERS.md §2).
 //

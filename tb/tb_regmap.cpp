@@ -35,6 +35,7 @@
 //    quadrant mapping of DESIGN §4.6), every phase 0..P-1 visited. Negative controls: the same
 //    load with one tbl_addr off by one, and without its first write, must fail those checks.
 // ctest-args: --seed 5 --samples 3000
+// ctest-args-O0: --seed 5 --samples 300
 #include <algorithm>
 #include <cctype>
 #include <cmath>

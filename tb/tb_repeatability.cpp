@@ -1,3 +1,4 @@
+// ctest-args-O0: --seeds 8
 // ctest-labels: slow_asan
 // tb_repeatability — the point of rephasing: whatever the power-up phase, Z lands at the same
 // physical position to within one raw count.

@@ -23,6 +23,7 @@
 // 4. Host helper round trip: settings -> register -> effective scale / ppm -> register.
 // 5. `laserax compensate`: output for three conditions, and exit 2 with a message on bad input.
 // ctest-args: --seed 3 --samples 1000000
+// ctest-args-O0: --seed 3 --samples 50000
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

@@ -577,7 +577,8 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
                 }
                 case 3: pulse(rm::idx::clear); break;
                 case 4:  // a stray table word while the chain runs (tbl_period == period, against
-                         // DESIGN 4.6): the DDS shows it at once; put back at the next host step
+                         // DESIGN 4.6): written, and that call is in the safe state (cfg_err), so
+                         // the chain restarts unhomed; put back at the next host step
                     stray_addr = r.range(0, host.get(rm::idx::period) / 4 - 1);
                     table_word(stray_addr, static_cast<int64_t>(r.u() & 0x1FFFF));
                     ++n_stray;

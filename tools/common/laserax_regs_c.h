@@ -118,12 +118,14 @@
 #define LASERAX_REG_CLEAR_WORDS 1
 #define LASERAX_REG_CLEAR_SIGNED 0
 #define LASERAX_REG_CLEAR_RESET 0LL
-/* tbl_we: quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1. Bad value: a write outside the safe-state window changes the table in use; codes outside the DAC range are clamped and flagged (dac_clip_st) */
+/* tbl_we: quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1; each such clock is in the safe state (cfg_err: DESIGN 4.6), so load the table while tbl_period != period. Bad value: a write while running puts that clock in the safe state (cfg_err, the chain restarts un-homed); the table is never changed under a running chain without a flag */
 #define LASERAX_REG_TBL_WE_OFFSET 0x90u
 #define LASERAX_REG_TBL_WE_WIDTH 1
 #define LASERAX_REG_TBL_WE_WORDS 1
 #define LASERAX_REG_TBL_WE_SIGNED 0
 #define LASERAX_REG_TBL_WE_RESET 0LL
+#define LASERAX_REG_TBL_WE_MIN 0LL
+#define LASERAX_REG_TBL_WE_MAX 0LL
 /* tbl_addr: quarter-wave table address 0 .. P/4-1. Bad value: an address >= P/4 writes a word the current period does not read */
 #define LASERAX_REG_TBL_ADDR_OFFSET 0x98u
 #define LASERAX_REG_TBL_ADDR_WIDTH 10

@@ -111,6 +111,7 @@ bool get(const golden::axis_regs& r, int i, int64_t* value) {
         case idx::amplitude: *value = static_cast<int64_t>(r.amplitude); return true;
         case idx::rehome: *value = static_cast<int64_t>(r.rehome); return true;
         case idx::clear: *value = static_cast<int64_t>(r.clear); return true;
+        case idx::tbl_we: *value = static_cast<int64_t>(r.tbl_we); return true;
         case idx::map_en: *value = static_cast<int64_t>(r.emap.map_en); return true;
         case idx::bank_sel: *value = static_cast<int64_t>(r.emap.bank_sel); return true;
         case idx::map_origin0: *value = static_cast<int64_t>(r.emap.geom[0].origin); return true;
@@ -145,6 +146,7 @@ bool set(golden::axis_regs& r, int i, int64_t value) {
         case idx::amplitude: assign(r.amplitude, value); return true;
         case idx::rehome: assign(r.rehome, value); return true;
         case idx::clear: assign(r.clear, value); return true;
+        case idx::tbl_we: assign(r.tbl_we, value); return true;
         case idx::map_en: assign(r.emap.map_en, value); return true;
         case idx::bank_sel: assign(r.emap.bank_sel, value); return true;
         case idx::map_origin0: assign(r.emap.geom[0].origin, value); return true;
@@ -180,6 +182,7 @@ lx::axis_regs to_hls(const golden::axis_regs& s) {
     r.amplitude = s.amplitude;
     r.rehome = s.rehome;
     r.clear = s.clear;
+    r.tbl_we = s.tbl_we;
     r.emap.map_en = s.emap.map_en;
     r.emap.bank_sel = s.emap.bank_sel;
     r.emap.geom[0].origin = s.emap.geom[0].origin;

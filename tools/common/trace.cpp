@@ -87,10 +87,12 @@ void trace_writer::add(const trace_row& r) {
     }
     have_prev_ = true;
     if (changed || every_) {
+        // to_int64() is long long under ap_int / ac_int, int64_t (long) under the own types
+        const auto i64 = [](const auto& x) { return static_cast<int64_t>(x.to_int64()); };
         std::fprintf(csv_, "%lld,%.3f,%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%" PRId64 ",%d,%d,%d,%d,%" PRId64 ",%" PRId64 ",%d,%d\n",
-                     r.cycle, r.true_nm, o.raw_count.to_int64(), o.comp_pos.to_int64(), o.paced_pos.to_int64(),
-                     o.out_pos.to_int64(), o.sin.to_int64(), o.cos.to_int64(), o.ref_mark ? 1 : 0, r.sw ? 1 : 0,
-                     o.stage.to_int(), o.alarm ? 1 : 0, o.backlog.to_int64(), o.adj.to_int64(), r.pin_a ? 1 : 0,
+                     r.cycle, r.true_nm, i64(o.raw_count), i64(o.comp_pos), i64(o.paced_pos),
+                     i64(o.out_pos), i64(o.sin), i64(o.cos), o.ref_mark ? 1 : 0, r.sw ? 1 : 0,
+                     o.stage.to_int(), o.alarm ? 1 : 0, i64(o.backlog), i64(o.adj), r.pin_a ? 1 : 0,
                      r.pin_b ? 1 : 0);
         ++rows_;
     }
