@@ -1,4 +1,4 @@
-// ctest-args-O0: --samples-div 8
+// ctest-args-O0: --samples-div 64 --small-sweeps 0
 // tb_gantry — twin-axis (gantry) referencing with two compensators (docs/GANTRY.md): the
 // cycle-accurate system (two lx::axis_core, a controller that decodes their sin/cos, coupled
 // mechanics) against the floating-point golden model golden/gantry_model, over the power-up
@@ -198,6 +198,9 @@ int main(int argc, char** argv) {
     // --samples-div D: 1/D of the random combinations (the -O0 type back-end build); the two
     // extreme combinations of every period and the exhaustive part are always run
     const long long samples_div = tbu::arg_ll(argc, argv, "--samples-div", 1);
+    // --small-sweeps 0: leave out the repeated P = 8 / 16 sweeps (P = 8 at three alarm limits, the
+    // two other arming variants); the first exhaustive sweep and the P = 16 alarm sweep always run
+    const bool small_sweeps = tbu::arg_ll(argc, argv, "--small-sweeps", 1) != 0;
     if (samples_div < 1 || samples_div > 64) {
         std::printf("tb_gantry: --samples-div must be 1..64\n");
         return 2;
@@ -265,7 +268,7 @@ int main(int argc, char** argv) {
         // expected count by counting |d2 - d1| > 9 over all d1, d2 in 0..15: 2 * (1 + 2 + ... + 6) = 42
         res.check(expected == 42, "P=16, limit 9: expected 42 exceeding combinations, got " + std::to_string(expected));
     }
-    {
+    if (small_sweeps) {
         const int p = 8;
         int alarms = 0;
         for (int lim : {p - 1, p, p + 1})
@@ -304,6 +307,7 @@ int main(int argc, char** argv) {
 
     // ---- arming variants -------------------------------------------------------------------------
     for (golden::gantry_arm arm : {golden::gantry_arm::both, golden::gantry_arm::hold}) {
+        if (!small_sweeps) break;
         for (int p : {8, 16}) {
             stats st;
             for (int a = 0; a < p; ++a)

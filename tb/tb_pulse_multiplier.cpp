@@ -1,3 +1,4 @@
+// ctest-args-O0: --calls 300000
 // tb_pulse_multiplier — pulse_multiplier (DESIGN §4.3): hls against golden and against an __int128
 // reference of the Definition written here, plus the re-base theorem checked directly.
 //

@@ -1,4 +1,4 @@
-// ctest-args-O0: --seeds 8
+// ctest-args-O0: --seeds 8 --presets 2
 // ctest-labels: slow_asan
 // tb_repeatability — the point of rephasing: whatever the power-up phase, Z lands at the same
 // physical position to within one raw count.
@@ -22,9 +22,16 @@
 int main(int argc, char** argv) {
     const uint64_t seed0 = tbu::seed_from(argc, argv, 100);
     const long long seeds = tbu::arg_ll(argc, argv, "--seeds", 12);
+    // --presets N: the first N period presets only (the -O0 type back-end build)
+    const long long n_presets = tbu::arg_ll(argc, argv, "--presets", 5);
     tbu::result res("tb_repeatability", seed0);
+    if (n_presets < 1 || n_presets > 5) {
+        std::printf("tb_repeatability: --presets must be 1..5\n");
+        return 2;
+    }
     const int presets[5] = {256, 320, 512, 640, 1280};
-    for (int P : presets) {
+    for (int pi = 0; pi < n_presets; ++pi) {
+        const int P = presets[pi];
         for (int dir = 1; dir >= -1; dir -= 2) {
             double zmin = 1e300, zmax = -1e300, dmax = 0;
             int ph_min = P, ph_max = -1;
