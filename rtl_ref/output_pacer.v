@@ -81,6 +81,61 @@ module output_pacer (
     assign o_ovs     = ovs_q;
     assign o_ovs_st  = ovs_st_q;
 
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Checked after the first reset. The f_* registers record what the pacer saw in each call.
+    // Conservation (backlog + paced = sum of the deltas) is checked in the harness
+    // rtl_ref/formal/fv_output_pacer.v, which tracks the input sum.
+    reg                   f_init, f_rst_p, f_clear_p, f_ovs_st_p;
+    reg [W_THR-1:0]       f_thr_p;
+    reg [W_PACE:0]        f_m;      // M in force at the last emitted count (0 read as 2^16)
+    reg [W_PACE+1:0]      f_since;  // calls since the last emitted count, saturating
+    initial f_init = 1'b0;
+
+    localparam [W_PACE+1:0] F_SINCE_MAX = {(W_PACE+2){1'b1}};
+    wire [W_PACE:0] f_m_now = (i_pace_m == {W_PACE{1'b0}}) ? {1'b1, {W_PACE{1'b0}}}
+                                                            : {1'b0, i_pace_m};
+    // |backlog| computed independently, one bit wider
+    wire [W_BACKLOG:0] f_mag = backlog_q[W_BACKLOG-1] ? ({1'b0, ~backlog_q} + 1'b1)
+                                                      : {1'b0, backlog_q};
+
+    always @(posedge i_clk) begin
+        if (i_rst) f_init <= 1'b1;
+        f_rst_p    <= i_rst;
+        f_clear_p  <= i_clear;
+        f_ovs_st_p <= ovs_st_q;
+        f_thr_p    <= i_thr;
+        if (i_rst) begin
+            f_since <= F_SINCE_MAX;
+            f_m     <= {(W_PACE+1){1'b0}};
+        end else if (emit_nz) begin
+            f_since <= {{(W_PACE+1){1'b0}}, 1'b1};
+            f_m     <= f_m_now;
+        end else if (f_since != F_SINCE_MAX) begin
+            f_since <= f_since + 1'b1;
+        end
+    end
+
+    always @* begin
+        if (f_init && !f_rst_p) begin
+            // alarm exactly when |backlog| > threshold (threshold of the same call)
+            assert(ovs_q == (f_mag > {{(W_BACKLOG-W_THR+1){1'b0}}, f_thr_p}));
+            assert(ovs_st_q == (ovs_q || (f_ovs_st_p && !f_clear_p)));
+        end
+        if (f_init) begin
+            // at most one count per M calls: a count leaves only M or more calls after the
+            // previous one (M as set at the previous count)
+            if (emit_nz) assert(f_since >= {1'b0, f_m});
+            // the count has the sign of the backlog
+            if (emit_nz) assert(emit == (backlog_q[W_BACKLOG-1] ? -2'sd1 : 2'sd1));
+            // helper invariant (induction): the timer is what is left of the gap
+            assert(timer_q == ((f_since >= {1'b0, f_m}) ? {W_PACE{1'b0}}
+                                                         : (f_m - f_since[W_PACE:0])));
+            if (!f_rst_p) assert(pstep_q == 2'sd0 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
+        end
+    end
+`endif
+
 endmodule
 
 `default_nettype wire

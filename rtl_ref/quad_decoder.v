@@ -183,6 +183,74 @@ module quad_decoder (
     assign o_lerr_alarm = lerr_alarm_q;
     assign o_glitch_st  = glitch_st_q;
 
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Checked after the first reset. The f_* registers record, at each edge, what the decoder
+    // saw in that call; the asserts compare the outputs of the call with an independent decode:
+    // the filtered (A,B) pair as a position on the cycle 00 -> 10 -> 11 -> 01 (index 0..3), the
+    // move is the index difference mod 4 (1: +1, 3: -1, 2: illegal, 0: none).
+    reg                    f_init, f_rst_p, f_en_p, f_clear_p, f_glitch_p;
+    reg [1:0]              f_move_p;
+    reg signed [W_RAW-1:0] f_raw_p, f_ref;
+    reg [W_ERRCNT-1:0]     f_err_p;
+    reg                    f_ill_st_p;
+    initial f_init = 1'b0;
+
+    function [1:0] f_idx;                       // position of (a,b) on the quadrature cycle
+        input fa, fb;
+        f_idx = {fb, fa ^ fb};                  // 00->0, 10->1, 11->2, 01->3
+    endfunction
+
+    wire [1:0] f_move = f_idx(fa_f_d, fb_f_d) - f_idx(pa_q, pb_q);
+
+    always @(posedge i_clk) begin
+        if (i_rst) f_init <= 1'b1;
+        f_rst_p    <= i_rst;
+        f_en_p     <= primed_q && !fe_f_d;
+        f_move_p   <= f_move;
+        f_clear_p  <= i_clear;
+        f_glitch_p <= fa_glitch_d || fb_glitch_d;
+        f_raw_p    <= raw_q;
+        f_err_p    <= err_cnt_q;
+        f_ill_st_p <= illegal_st_q;
+        // tiny reference counter: +1 / -1 on legal moves while counting is enabled
+        if (i_rst)
+            f_ref <= {W_RAW{1'b0}};
+        else if (primed_q && !fe_f_d && f_move == 2'd1)
+            f_ref <= f_ref + 1;
+        else if (primed_q && !fe_f_d && f_move == 2'd3)
+            f_ref <= f_ref - 1;
+    end
+
+    always @* begin
+        if (f_init && !f_rst_p) begin
+            // the position is the reference counter, always
+            assert(raw_q == f_ref);
+            // each call: the step is the decoded move, the raw count moves by exactly it
+            assert(raw_q == f_raw_p + {{(W_RAW-2){step_q[1]}}, step_q});
+            if (f_en_p && f_move_p == 2'd1) assert(step_q == 2'sd1 && !illegal_q);
+            if (f_en_p && f_move_p == 2'd3) assert(step_q == -2'sd1 && !illegal_q);
+            if (!f_en_p || f_move_p == 2'd0) assert(step_q == 2'sd0 && !illegal_q);
+            // illegal transition (both lines changed): flag, sticky flag, no count
+            if (f_en_p && f_move_p == 2'd2) begin
+                assert(illegal_q && illegal_st_q);
+                assert(step_q == 2'sd0 && raw_q == f_raw_p);
+            end
+            // error counter: +1 per illegal transition, saturating at 255, cleared by clear
+            if (f_clear_p)
+                assert(err_cnt_q == {{(W_ERRCNT-1){1'b0}}, illegal_q});
+            else if (illegal_q)
+                assert(err_cnt_q == ((f_err_p == ERRCNT_MAX) ? ERRCNT_MAX : f_err_p + 1'b1));
+            else
+                assert(err_cnt_q == f_err_p);
+            // sticky illegal flag: set by the event, held until clear
+            assert(illegal_st_q == (illegal_q || (f_ill_st_p && !f_clear_p)));
+            if (f_glitch_p) assert(glitch_st_q);
+        end
+        if (f_init) assert(illegal_st_q || !illegal_q);
+    end
+`endif
+
 endmodule
 
 `default_nettype wire

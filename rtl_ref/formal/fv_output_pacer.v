@@ -1,0 +1,73 @@
+// fv_output_pacer.v — formal harness of output_pacer (scripts/formal.sh; docs/FORMAL.md).
+//
+// The pacing and alarm properties are in rtl_ref/output_pacer.v under `ifdef FORMAL. This harness
+// checks conservation: it sums the input deltas since reset and asserts, at every call,
+//     backlog + paced == sum of the deltas          (exact, 42-bit integers)
+// under the assumption that the input sum stays within +-2^35 (the widths then cannot wrap;
+// a real axis stays far inside: 2^35 counts). Reset in the first call, none later.
+`timescale 1ns / 1ps
+`default_nettype none
+
+module fv_output_pacer (
+    input wire               i_clk,
+    input wire               i_rst,
+    input wire signed [38:0] i_delta,
+    input wire [15:0]        i_pace_m,
+    input wire [31:0]        i_thr,
+    input wire               i_clear
+);
+    localparam integer W = 42;
+    localparam signed [W-1:0] LIM = 42'sd34359738368;   // 2^35
+
+    wire signed [1:0]  pstep;
+    wire signed [37:0] paced;
+    wire signed [39:0] backlog;
+    wire ovs, ovs_st;
+
+    output_pacer dut (
+        .i_clk(i_clk), .i_rst(i_rst), .i_delta(i_delta), .i_pace_m(i_pace_m), .i_thr(i_thr),
+        .i_clear(i_clear), .o_pstep(pstep), .o_paced(paced), .o_backlog(backlog), .o_ovs(ovs),
+        .o_ovs_st(ovs_st));
+
+    reg f_started;
+    reg signed [W-1:0] f_sum;                 // sum of the deltas since reset
+    reg signed [W-1:0] f_emitted;             // sum of the emitted counts since reset
+    initial f_started = 1'b0;
+
+    wire signed [W-1:0] delta_x   = {{(W-39){i_delta[38]}}, i_delta};
+    wire signed [W-1:0] sum_next  = f_sum + delta_x;
+    wire signed [W-1:0] backlog_x = {{(W-40){backlog[39]}}, backlog};
+    wire signed [W-1:0] paced_x   = {{(W-38){paced[37]}}, paced};
+
+    always @* begin
+        if (!f_started) assume(i_rst);
+        else assume(!i_rst);
+        // the input sum stays within +-2^35 (bounds the widths; see the header)
+        assume(sum_next <= LIM && sum_next >= -LIM);
+        assume(delta_x <= LIM && delta_x >= -LIM);
+    end
+
+    always @(posedge i_clk) begin
+        f_started <= 1'b1;
+        if (i_rst) begin
+            f_sum     <= {W{1'b0}};
+            f_emitted <= {W{1'b0}};
+        end else begin
+            f_sum     <= sum_next;
+            f_emitted <= f_emitted + {{(W-2){pstep[1]}}, pstep};
+        end
+    end
+
+    always @* begin
+        if (f_started) begin
+            assert(backlog_x + paced_x == f_sum);               // conservation
+            assert(f_sum <= LIM && f_sum >= -LIM);
+            // helper invariant (induction): the paced position never runs past the input bound
+            // by more than one count
+            assert(paced_x <= LIM + 1 && paced_x >= -LIM - 1);
+            assert(paced_x == f_emitted + {{(W-2){pstep[1]}}, pstep});   // paced = emitted counts
+        end
+    end
+endmodule
+
+`default_nettype wire

@@ -1,0 +1,96 @@
+#!/usr/bin/env bash
+# formal.sh — formal proofs of the reference RTL (CTest formal and formal_selftest; docs/FORMAL.md).
+#
+# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all), exit 1 on failure
+#        scripts/formal.sh --selftest                each scripted mutation of rtl_ref/ (made in a
+#                                                    temp dir) must make its proof fail
+# Engine: Yosys' built-in SAT solver (`sat -tempinduct`: BMC base case plus k-induction;
+# `sat -seq N`: bounded check of N calls). Flow per proof:
+#   read_verilog -formal FILES; prep -top TOP; flatten; async2sync; dffunmap; sat ...
+# (yosys-smtbmc -s z3 with Debian's z3 4.8.12 was tried first and did not finish even step 0 on
+# quad_decoder — see docs/FORMAL.md.)
+set -uo pipefail
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+RTL="$ROOT/rtl_ref"
+ALL=(quad_decoder quad_decoder_pins output_pacer output_pacer_sum)
+
+die() { echo "formal: $*" >&2; exit 1; }
+command -v yosys >/dev/null || die "yosys not installed (make deps)"
+
+# proof NAME -> "TOP|FILES (relative to the RTL dir)|sat options"
+proof_spec() {
+    case "$1" in
+    quad_decoder)      echo "quad_decoder|input_filter.v quad_decoder.v|-tempinduct -maxsteps 8" ;;
+    quad_decoder_pins) echo "fv_quad_decoder|input_filter.v quad_decoder.v formal/fv_quad_decoder.v|-seq 16" ;;
+    output_pacer)      echo "output_pacer|output_pacer.v|-tempinduct -maxsteps 8" ;;
+    output_pacer_sum)  echo "fv_output_pacer|output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
+    *) return 1 ;;
+    esac
+}
+
+# run_proof RTLDIR NAME LOGDIR — 0 if the proof succeeds
+run_proof() {
+    local rtl="$1" name="$2" logdir="$3" spec top files opts f list=""
+    spec="$(proof_spec "$name")" || die "unknown proof $name"
+    IFS='|' read -r top files opts <<<"$spec"
+    for f in $files; do list="$list $rtl/$f"; done
+    yosys -q -l "$logdir/$name.log" -p "read_verilog -formal$list; prep -top $top; flatten; async2sync; dffunmap; sat $opts -prove-asserts -set-assumes" >/dev/null 2>&1 || return 1
+    grep -q 'SUCCESS!' "$logdir/$name.log"
+}
+
+# mutations: NAME|FILE|PROOF|SED-EXPRESSION (each must make PROOF fail)
+MUTATIONS=(
+  "qd_direction|quad_decoder.v|quad_decoder|s/step_d = (fa_f_d != fb_f_d) ? 2'sd1 : -2'sd1;/step_d = (fa_f_d == fb_f_d) ? 2'sd1 : -2'sd1;/"
+  "qd_count_illegal|quad_decoder.v|quad_decoder|s/if (da \&\& db)/if (1'b0)/"
+  "qd_err_wraps|quad_decoder.v|quad_decoder|s/if (err_cnt_d != ERRCNT_MAX) err_cnt_d/if (1'b1) err_cnt_d/"
+  "qd_pins_latency|input_filter.v|quad_decoder_pins|s/end else if (seen >= need) begin/end else if (seen > need) begin/"
+  "op_gap|output_pacer.v|output_pacer|s/emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/emit_nz ? i_pace_m - {{(W_PACE-2){1'b0}}, 2'd2}/"
+  "op_alarm|output_pacer.v|output_pacer|s/ovs_d   = mag > /ovs_d   = mag >= /"
+  "op_conservation|output_pacer.v|output_pacer_sum|s/paced_q + {{(W_POS-2){emit\[1\]}}, emit}/paced_q + {{(W_POS-1){1'b0}}, emit[0]}/"
+)
+
+selftest() {
+    local tmp m name file proof expr fails=0 n=0
+    tmp="$(mktemp -d /tmp/formal_selftest.XXXXXX)"
+    for m in "${MUTATIONS[@]}"; do
+        IFS='|' read -r name file proof expr <<<"$m"
+        n=$((n + 1))
+        rm -rf "$tmp/rtl"; mkdir -p "$tmp/rtl/formal"
+        cp "$RTL"/*.v "$tmp/rtl/"; cp "$RTL"/formal/*.v "$tmp/rtl/formal/"
+        sed -i "$expr" "$tmp/rtl/$file"
+        if cmp -s "$RTL/$file" "$tmp/rtl/$file"; then
+            echo "formal selftest: $name: the mutation did not apply"; fails=$((fails + 1)); continue
+        fi
+        if run_proof "$tmp/rtl" "$proof" "$tmp"; then
+            echo "formal selftest: $name: proof $proof still PASSES on the broken copy"; fails=$((fails + 1))
+        elif grep -q '^ERROR' "$tmp/$proof.log" || ! grep -qE 'FAIL!|Induction step failed' "$tmp/$proof.log"; then
+            echo "formal selftest: $name: proof $proof did not run"; fails=$((fails + 1))
+        elif grep -q 'FAIL!' "$tmp/$proof.log"; then
+            echo "formal selftest: $name: proof $proof fails with a counterexample, as it should"
+        else
+            echo "formal selftest: $name: proof $proof fails (induction does not close), as it should"
+        fi
+    done
+    rm -rf "$tmp"
+    if [ $fails -eq 0 ]; then echo "formal selftest: PASS ($n mutations caught)"; return 0; fi
+    echo "formal selftest: FAIL ($fails of $n)"; return 1
+}
+
+if [ "${1:-}" = "--selftest" ]; then selftest; exit $?; fi
+if [ "${1:-}" = "--rtl" ]; then RTL="$(cd "$2" && pwd)"; shift 2; fi
+proofs=("${ALL[@]}")
+[ $# -gt 0 ] && proofs=("$@")
+logdir="$(mktemp -d /tmp/formal.XXXXXX)"
+fails=0
+for p in "${proofs[@]}"; do
+    t0=$(date +%s.%N)
+    if run_proof "$RTL" "$p" "$logdir"; then st=PASS; else st=FAIL; fails=$((fails + 1)); fi
+    how="$(grep -E 'Induction step proven|SAT proof finished' "$logdir/$p.log" | tail -1)"
+    len="$(grep -oE 'Trying induction with length [0-9]+' "$logdir/$p.log" | tail -1 | grep -oE '[0-9]+$')"
+    printf 'formal: %-18s %s  (%s%s, %.1f s)\n' "$p" "$st" "$(proof_spec "$p" | cut -d'|' -f3)" \
+        "${len:+, induction length $len}" "$(echo "$(date +%s.%N) - $t0" | bc)"
+    [ $st = PASS ] || { grep -E 'FAIL|failed|ERROR' "$logdir/$p.log" | head -5; }
+done
+rm -rf "$logdir"
+[ $fails -eq 0 ] && { echo "formal: PASS (${#proofs[@]} proofs)"; exit 0; }
+echo "formal: FAIL ($fails of ${#proofs[@]})"; exit 1
