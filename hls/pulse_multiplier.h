@@ -6,10 +6,11 @@
 //        carry into the 38-bit integer part `hi` one call later) — no multiplier in the loop;
 //   T    the base: the offset plus the re-base products N0 * (R' - R), changed only by the
 //        re-base sequencer.
-// A ratio / offset change starts a re-base: steps count at the new ratio from the start call on,
-// and a serial shift-and-add multiplier (one bit of N0 per call, 39-bit adder) forms N0 * dR over
-// 32 calls; X = T + dOFF and T_new = X + P follow in 18-bit quarters; T is replaced K_REBASE = 40 calls after
-// the start, from when V = N * R' + OFF' exactly again (the re-base theorem, DESIGN §4.3).
+// A ratio / offset change (seen by a registered compare) starts a re-base in the next idle call:
+// steps count at the target ratio from the call after the start, a serial shift-and-add
+// multiplier (one bit of N0 per call, 39-bit adder) forms N0 * dR over 32 calls, X = T + dOFF and
+// T_new = X + P follow in 18-bit quarters, and T is replaced K_REBASE = 40 calls after the start,
+// from when V = N * R' + OFF' exactly again (the re-base theorem, DESIGN §4.3).
 // Output pipeline: stage 2 hi += inc + c, carry of lo + T_lo; stage 3 comp_int = hi + T_hi + c2;
 // stage 4 comp and delta = comp_int - comp. comp/delta of call t are those of the step of call
 // t - L_MUL (L_MUL = 3).
@@ -39,7 +40,7 @@ struct pulse_multiplier_cfg {
     static constexpr int N_TQ = 4;                            // T additions in four quarters
     static constexpr int W_TQ = (W_ACC + N_TQ - 1) / N_TQ;    // 18 bits (the last 16)
     static constexpr int W_INC = W_HI + 1;                    // 39, increment of hi per call
-    static constexpr int K_REBASE = 40;                       // calls from a start to the new T
+    static constexpr int K_REBASE = 40;                       // calls from a start to the replaced T
     static constexpr int L_MUL = 3;                           // extra calls of output latency
     static constexpr int MUL_STEPS = W_RAW;                   // 32 serial multiply calls
     static constexpr int C_DOFF0 = 1, C_DOFF1 = 2;            // sequencer call numbers (cnt)
@@ -241,7 +242,7 @@ private:
         using doffw_t = uint<cfg::W_DOFF_H + 1>;
         // dOFF = OFF_new - OFF_old (65 bits) in two 33-bit halves: low half (+1 of the negation),
         // then high half with the registered carry.
-        const acc_t off_new_x = acc_t(off_tgt_);  // the new target (no start while busy)
+        const acc_t off_new_x = acc_t(off_tgt_);  // the target loaded at the start (no start while busy)
         const acc_t off_old_x = acc_t(off_old_);
         if (cnt == cfg::C_DOFF0) {
             const doffw_t s = doffw_t(cfg::doffh_t(off_new_x)) + cfg::doffh_t(~cfg::doffh_t(off_old_x)) + 1;
