@@ -2,7 +2,9 @@
 # fuzz.sh — build the libFuzzer targets (fuzz/fuzz_*.cpp) with clang++ and run each on its
 # committed seed corpus (fuzz/corpus/<target>).
 #   bash scripts/fuzz.sh short|long FUZZ_BUILD_DIR
-#   short: CTest fuzz_short, 4 s per target (fixed -seed); long: make fuzz, $FUZZ_SECONDS (300) each.
+#   short: CTest fuzz_short, a fixed number of runs per target with a fixed -seed (a few seconds
+#          each; deterministic, so a CI machine of any speed runs the same inputs as this one);
+#   long:  make fuzz, $FUZZ_SECONDS (300) each, time-bounded.
 # New interesting inputs go to FUZZ_BUILD_DIR/corpus-new/<target> (never into the committed
 # corpus); a crash input is written to FUZZ_BUILD_DIR/crash-<target>-* and the script fails.
 set -euo pipefail
@@ -10,8 +12,10 @@ mode=${1:?usage: fuzz.sh short|long FUZZ_BUILD_DIR}
 dir=${2:?usage: fuzz.sh short|long FUZZ_BUILD_DIR}
 src=$(cd "$(dirname "$0")/.." && pwd)
 command -v clang++ >/dev/null || { echo "fuzz.sh: clang++ not installed (make deps)"; exit 1; }
+# short-mode runs per target (about 4 s each here): fuzz_regs steps both whole chains per input
+short_runs() { case "$1" in fuzz_regs) echo 800 ;; *) echo 100000 ;; esac; }
 case "$mode" in
-    short) secs=4 ;;
+    short) secs=60 ;;
     long) secs=${FUZZ_SECONDS:-300} ;;
     *) echo "fuzz.sh: mode must be short or long"; exit 2 ;;
 esac
@@ -23,10 +27,13 @@ cmake --build "$dir" -j"${JOBS:-2}" --target "${targets[@]}" >"$dir.build.log" 2
 status=0
 for t in "${targets[@]}"; do
     new="$dir/corpus-new/$t"
+    [ "$mode" = short ] && rm -rf "$new"   # short: the same inputs on every run
     mkdir -p "$new"
-    echo "fuzz.sh: $t, $secs s on fuzz/corpus/$t"
+    limit=(-max_total_time="$secs")
+    [ "$mode" = short ] && limit=(-runs="$(short_runs "$t")" -max_total_time="$secs")
+    echo "fuzz.sh: $t, ${limit[*]} on fuzz/corpus/$t"
     if ! ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
-        "$dir/$t" -seed=1 -max_total_time="$secs" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
+        "$dir/$t" -seed=1 "${limit[@]}" -timeout=20 -rss_limit_mb=2048 -print_final_stats=1 \
         -artifact_prefix="$dir/crash-$t-" "$new" "$src/fuzz/corpus/$t" >"$dir/$t.log" 2>&1; then
         echo "fuzz.sh: $t FAILED (input saved as $dir/crash-$t-*):"
         tail -40 "$dir/$t.log"

@@ -1,4 +1,5 @@
 // ctest-args: --clocks 10000000
+// ctest-args-types: --clocks 2000000
 // tb_fault_injection — pin-level fault injection into the quad decoder (hls and golden in
 // lockstep), with its own position reference: the true fringe index the testbench moves.
 //

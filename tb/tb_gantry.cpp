@@ -177,8 +177,20 @@ int main(int argc, char** argv) {
     };
     std::vector<table_row> table;
 
+    // --samples-div D: 1/D of the random combinations (the -O0 type back-end build); the two
+    // extreme combinations of every period and the exhaustive part are always run
+    const long long samples_div = tbu::arg_ll(argc, argv, "--samples-div", 1);
+    // --small-sweeps 0: leave out the repeated P = 8 / 16 sweeps (the P = 16 exhaustive skew sweep,
+    // P = 8 at three alarm limits, the two other arming variants); the P = 8 exhaustive sweep and
+    // the P = 16 alarm sweep (every combination) always run
+    const bool small_sweeps = tbu::arg_ll(argc, argv, "--small-sweeps", 1) != 0;
+    if (samples_div < 1 || samples_div > 64) {
+        std::printf("tb_gantry: --samples-div must be 1..64\n");
+        return 2;
+    }
     // ---- exhaustive: every combination of power-up phases, small periods ----------------------
     for (int p : {8, 16}) {
+        if (p == 16 && !small_sweeps) continue;  // --small-sweeps 0: P = 8 only (P = 16: the alarm sweep)
         stats st;
         for (int a = 0; a < p; ++a)
             for (int bb = 0; bb < p; ++bb) {
@@ -195,16 +207,6 @@ int main(int argc, char** argv) {
 
     // ---- sampled: seeded random phases + the two extreme combinations -------------------------
     const int sample_n[5] = {64, 48, 32, 32, 20};
-    // --samples-div D: 1/D of the random combinations (the -O0 type back-end build); the two
-    // extreme combinations of every period and the exhaustive part are always run
-    const long long samples_div = tbu::arg_ll(argc, argv, "--samples-div", 1);
-    // --small-sweeps 0: leave out the repeated P = 8 / 16 sweeps (P = 8 at three alarm limits, the
-    // two other arming variants); the first exhaustive sweep and the P = 16 alarm sweep always run
-    const bool small_sweeps = tbu::arg_ll(argc, argv, "--small-sweeps", 1) != 0;
-    if (samples_div < 1 || samples_div > 64) {
-        std::printf("tb_gantry: --samples-div must be 1..64\n");
-        return 2;
-    }
     const int periods[5] = {256, 320, 512, 640, 1280};
     for (int k = 0; k < 5; ++k) {
         const int p = periods[k];

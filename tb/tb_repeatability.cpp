@@ -1,4 +1,5 @@
-// ctest-args-O0: --seeds 8 --presets 2
+// ctest-args-types: --seeds 8 --presets 2
+// ctest-args-O0: --seeds 8 --presets 1
 // ctest-labels: slow_asan
 // tb_repeatability — the point of rephasing: whatever the power-up phase, Z lands at the same
 // physical position to within one raw count.

@@ -11,6 +11,7 @@
 // `--phase-step S` (default 1) runs only the switch positions k = 0, S, 2S, ... (the -O0 type
 // back-end build; each run keeps every check, the coverage check then asks for P/S distinct
 // phases at A).
+// ctest-args-types: --phase-step 4
 // ctest-args-O0: --phase-step 32
 #include <deque>
 #include <vector>

@@ -117,6 +117,7 @@ void controller_decoder::reset(int period, int64_t start_pos) {
     pos_sc_ = start_pos;
     pos_q_ = start_pos;
     primed_ = false;
+    sc_primed_ = true;
 }
 
 bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb) {
@@ -133,17 +134,23 @@ bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool 
         primed_ = true;
         return true;
     }
+    const int dq = ((qi - last_q_) % 4 + 4) % 4;
+    if (dq == 1) pos_q_ += 1;
+    if (dq == 3) pos_q_ -= 1;
+    if (dq == 2) ok = false;
+    last_q_ = qi;
+    if (!sc_primed_) {
+        pos_sc_ = pos_q_;
+        last_ph_ = ph;
+        sc_primed_ = true;
+        return ok;
+    }
     int dph = ph - last_ph_;
     if (dph > period_ / 2) dph -= period_;
     if (dph < -period_ / 2) dph += period_;
     if (dph > 1 || dph < -1) ok = false;
     pos_sc_ += dph;
     last_ph_ = ph;
-    const int dq = ((qi - last_q_) % 4 + 4) % 4;
-    if (dq == 1) pos_q_ += 1;
-    if (dq == 3) pos_q_ -= 1;
-    if (dq == 2) ok = false;
-    last_q_ = qi;
     return ok;
 }
 
@@ -213,6 +220,8 @@ std::string dual_axis::integrity() {
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
                 " != previous comp + corr " + std::to_string(prev_comp_ + prev_corr_);
         const bool use_sc = static_cast<double>(s_.amplitude) * 6.283185307179586 / static_cast<double>(s_.period) >= 8.0;
+        if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
+        prev_use_sc_ = use_sc;
         const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
         if (m.empty() && hist_n_ >= 2) {

@@ -87,6 +87,10 @@ public:
     // Feeds one call's outputs; returns false if a sin/cos step of more than one count (or an
     // illegal A/B transition) was seen.
     bool feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb);
+    // The sin/cos amplitude crossed the decodable limit (amp * 2pi / P >= 8 codes per count) in
+    // either direction: the sin/cos interpolator re-acquires at the next feed(), taking the
+    // position from the A/B count as a controller does when the analogue signal comes back.
+    void reacquire_sincos() { sc_primed_ = false; }
     int64_t sincos_pos() const { return pos_sc_; }
     int64_t quad_pos() const { return pos_q_; }
 
@@ -96,6 +100,7 @@ private:
     int last_ph_ = 0;
     int last_q_ = 0;
     bool primed_ = false;
+    bool sc_primed_ = true;
 };
 
 // Convenience: both models, the same settings, stepped together and compared. Every call also
@@ -145,6 +150,7 @@ private:
     static constexpr int L_MUL = golden::pulse_multiplier::L_MUL;
     int64_t raw_hist_[L_MUL + 1] = {};  // golden raw_count of calls t-1 .. t-1-L_MUL
     long long settled_ = 0;             // calls since the pair in force last changed (or restart)
+    bool prev_use_sc_ = false;          // sin/cos decoded on the previous call
     // ratio / comp_offset in force (DESIGN 4.7: loaded every call without comp_sync, else on comp_commit)
     uint64_t eff_ratio_ = golden::default_ratio();
     int64_t eff_offset_ = 0;
