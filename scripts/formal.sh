@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # formal.sh — formal proofs of the reference RTL (CTest formal and formal_selftest; docs/FORMAL.md).
 #
-# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all), exit 1 on failure
+# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all but output_pacer_sum), exit 1 on failure
 #        scripts/formal.sh --selftest                each scripted mutation of rtl_ref/ (made in a
 #                                                    temp dir) must make its proof fail
 # Engine: Yosys' built-in SAT solver (`sat -tempinduct`: BMC base case plus k-induction;
@@ -12,7 +12,10 @@
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RTL="$ROOT/rtl_ref"
-ALL=(quad_decoder quad_decoder_pins output_pacer output_pacer_sum)
+# output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
+# it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
+# (a broken copy fails in the base case within seconds).
+ALL=(quad_decoder quad_decoder_pins output_pacer)
 
 die() { echo "formal: $*" >&2; exit 1; }
 command -v yosys >/dev/null || die "yosys not installed (make deps)"
