@@ -81,6 +81,8 @@ module quad_decoder (
     reg                    illegal_d, ovs_d, lerr_d;
 
     reg                    da, db;
+    wire signed [W_RAW-1:0] raw_inc = raw_q + {{(W_RAW-1){1'b0}}, 1'b1};
+    wire signed [W_RAW-1:0] raw_dec = raw_q - {{(W_RAW-1){1'b0}}, 1'b1};
     reg [W_SPACING:0]      spacing;
 
     always @* begin
@@ -135,7 +137,9 @@ module quad_decoder (
         if (ovs_d) ovs_st_d = 1'b1;
         if (fa_glitch_d || fb_glitch_d) glitch_st_d = 1'b1;
         if (lerr_d) lerr_alarm_d = 1'b1;
-        raw_d = raw_q + step_d;                  // both signed: step sign-extended
+        // raw +- 1 are formed from the register alone (in parallel with the filter and step
+        // logic); the step only selects: no carry chain after the step decision
+        raw_d = (step_d == 2'sd1) ? raw_inc : ((step_d == -2'sd1) ? raw_dec : raw_q);
     end
 
     always @(posedge i_clk) begin
