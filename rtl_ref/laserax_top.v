@@ -9,9 +9,10 @@
 // Register stages: in the C++ model a block consumes the outputs its upstream block returned at
 // the previous call (the *_q members of axis_core). Every block's outputs here are its own output
 // registers, so they *are* that one register stage: each block is wired straight to the output
-// registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-2 (the
-// extra rep_q2 stage of the C++ plus the output register), so they change in the same call as
-// the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
+// registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-3 (the
+// extra rep_q2 and rep_q3 stages of the C++ plus the output register), so they change in the same
+// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1,
+// DESIGN 4.7).
 //
 // Safe state: while the configuration check fails, and in the call in which a new period value
 // first appears after a running call (period_q != period with run_q = 1; coming out of power-up
@@ -255,20 +256,24 @@ module laserax_top #(
         .i_amplitude(i_amplitude), .i_tbl_we(i_tbl_we), .i_tbl_addr(i_tbl_addr),
         .i_tbl_data(i_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
 
-    // ---- digital A/B/Z: rephase outputs of call t-2 ------------------------------------------
-    reg [1:0] rep_pos2_q, out_pos2_q;   // out_pos mod 4: rep_q2 stage, output stage
-    reg       rep_mark2_q, out_mark2_q;
+    // ---- digital A/B/Z: rephase outputs of call t-3 ------------------------------------------
+    reg [1:0] rep_pos2_q, rep_pos3_q, out_pos2_q;   // out_pos mod 4: rep_q2, rep_q3, output stage
+    reg       rep_mark2_q, rep_mark3_q, out_mark2_q;
     always @(posedge i_clk) begin
         if (blk_rst) begin
             rep_pos2_q  <= 2'd0;
             rep_mark2_q <= 1'b0;
+            rep_pos3_q  <= 2'd0;
+            rep_mark3_q <= 1'b0;
             out_pos2_q  <= 2'd0;
             out_mark2_q <= 1'b0;
         end else begin
             rep_pos2_q  <= rep_out_pos[1:0];
             rep_mark2_q <= rep_mark;
-            out_pos2_q  <= rep_pos2_q;
-            out_mark2_q <= rep_mark2_q;
+            rep_pos3_q  <= rep_pos2_q;
+            rep_mark3_q <= rep_mark2_q;
+            out_pos2_q  <= rep_pos3_q;
+            out_mark2_q <= rep_mark3_q;
         end
     end
 
