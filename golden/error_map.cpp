@@ -12,7 +12,7 @@ error_map::error_map() {
 }
 
 void error_map::reset() {
-    pending_ = out{};
+    pending_.assign(kLat - 1, out{});
     corr_ = 0;
 }
 
@@ -38,8 +38,9 @@ long double error_map::interp(const std::vector<int32_t>& tbl, const error_map_g
 }
 
 error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
-    // output of this call: the value computed from the previous call's inputs
-    out o = pending_;
+    // output of this call: the value computed from the inputs of call t - (kLat - 1)
+    out o = pending_.front();
+    pending_.pop_front();
     o.delta = o.corr - corr_;
     corr_ = o.corr;
 
@@ -57,10 +58,10 @@ error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
         n.in_range = inr;
         n.clamped = !inr;
     }
-    pending_ = n;
+    pending_.push_back(n);
 
-    // Reading: the write port of a call acts after that call's reads and only on the bank not
-    // selected in the call, so it can never change what the call reads.
+    // Reading: the reads of a call see every write of the earlier calls; the write port of a
+    // call acts after that call's reads and only on the bank not selected in the call.
     if (r.we) tbl_[1 - b][static_cast<size_t>(r.addr) % kDepth] = r.data;
     return o;
 }

@@ -7,8 +7,8 @@
 //            T[n-1] / 256                                 x > o + (n-1) s
 //            (T[i] + (T[i+1] - T[i]) * (x - o - i s) / s) / 256, i = floor((x - o) / s), otherwise
 // (at x = o + (n-1) s the last point itself), evaluated in long double and rounded to
-// corr = floor(c + 1/2). The value returned by call t belongs to the inputs of call t-1
-// (2-call latency); it is 0 when that call was not active (map_en && homed && valid geometry of
+// corr = floor(c + 1/2). The value returned by call t belongs to the inputs of call t-7
+// (L_MAP = 8 calls of latency, ERROR_MAP.md §6); it is 0 when that call was not active (map_en && homed && valid geometry of
 // the bank selected in that call). delta = corr(t) - corr(t-1).
 //
 // Exactness: every table value is an integer times 2^-8 with |T| < 2^23, (x - o - i s) is an
@@ -19,6 +19,7 @@
 // holds all of them exactly, so floorl gives the exact rounded value.
 #pragma once
 #include <cstdint>
+#include <deque>
 #include <vector>
 
 namespace golden {
@@ -26,7 +27,7 @@ namespace golden {
 struct error_map_geom {
     int64_t origin = 0;
     int spacing_log2 = 10;
-    int n_points = 2048;
+    int n_points = 1024;
 };
 
 struct error_map_regs {
@@ -34,13 +35,14 @@ struct error_map_regs {
     bool bank_sel = false;
     error_map_geom geom[2];
     bool we = false;        // writes the bank not selected in this call
-    int addr = 0;           // 0..2047
+    int addr = 0;           // 0..kDepth-1
     int32_t data = 0;       // Q15.8 counts, 24-bit signed range
 };
 
 class error_map {
 public:
-    static constexpr int kDepth = 2048;
+    static constexpr int kDepth = 1024;  // points per bank (ERROR_MAP.md §2)
+    static constexpr int kLat = 8;       // L_MAP: inputs of call t -> output of call t + kLat - 1
     static constexpr int kFrac = 8;
 
     struct out {
@@ -62,7 +64,7 @@ public:
 
 private:
     std::vector<int32_t> tbl_[2];
-    out pending_;       // result for the inputs of the previous call
+    std::deque<out> pending_;  // results for the inputs of the previous kLat - 1 calls, oldest first
     int64_t corr_ = 0;  // corr returned by the previous call
 };
 

@@ -2,23 +2,32 @@
 //
 // A correction table over equally spaced positions, linear interpolation between points, the
 // correction delivered as whole output counts (corr) and as the change since the previous call
-// (delta). Two banks of 2048 x 24-bit words (two RAMs, tbl0 and tbl1, as the two arrays of
-// hls/error_map.h) with their own geometry (origin, spacing_log2 k, n_points); the write port
-// always writes the bank that is not selected in that call, so a reload can never mix tables and
-// each RAM sees at most two accesses per edge (the two reads, or the write).
+// (delta). Two banks of TBL_DEPTH = 1024 x 24-bit words with their own geometry (origin,
+// spacing_log2 k, n_points); each bank is two RAMs of 512 x 24 bits, the even and the odd words
+// (tbl0e/tbl0o, tbl1e/tbl1o: the four arrays of hls/error_map.h), so the two points T[i], T[i+1]
+// of an interval are one read of each RAM of the selected bank. The write port always writes the
+// bank that is not selected in that call, delayed by two registers (w1, w2) so that it is done in
+// the same clock as that call's reads: each RAM sees one access per clock (read or write) and a
+// reload can never mix tables. iCE40: each RAM is three SB_RAM40_4K (512 x 8), 12 in all; the
+// RAMs start at 0 (initial contents), as the C++ tables.
 //
-// Timing (one rising edge = one call of error_map::step()):
-//   stage A (edge t):   off = p - origin, clamp to [0, (n-1) 2^k], i = off >> k,
-//                       frac = off mod 2^k; the two RAM reads T[i], T[i+1] of the selected bank,
-//                       frac, k and the flags are registered (t0_q, t1_q, frac_q, k_q, act_q,
-//                       inr_q, err_q).
-//   stage B (edge t+1): num = T[i] 2^k + (T[i+1] - T[i]) frac (46 bits, exact),
-//                       corr = act ? floor(num / 2^(8+k) + 1/2) : 0, delta = corr - corr_prev:
-//                       output registers.
-// Latency: p presented before edge t is reflected in the outputs after edge t+1 (2 calls).
+// Timing (one rising edge = one call of error_map::step()); stage X of call t at edge t + (X - A):
+//   A  a_off = p - origin (39 bits), geometry check, k, last, flags, bank; w1 = the write port
+//   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
+//   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; registered RAM reads at (i+1)/2
+//      (even) and i/2 (odd) of the selected bank; the write of w2 (other bank)
+//   D  bank multiplexer, d_e = even word, d_diff = odd - even (25 bits), d_v = i odd ? 2^20 - u : u
+//   E  three partial products d_diff * d_v[7j+6:7j] (25 x 7 each)
+//   F  f_s1 = pp0 + pp1 * 2^7, f_s2 = e * 2^20 + pp2 * 2^14 + 2^27
+//   G  num = f_s1 + f_s2 (46 bits), corr = act ? num[44:28] : 0   (floor(num / 2^28))
+//   H  output registers: corr, delta = corr - corr_prev, active, in_range, cfg_err
+// Latency: p presented before edge t is reflected in the outputs after edge t+7 (8 calls, L_MAP).
 //
-// i_rst (synchronous, active high) is error_map::reset(): the pipeline only, never the RAM. The
-// write port is disabled in a reset call (the C++ step() is not called in the safe state).
+// i_rst (synchronous, active high) is error_map::reset(): the pipeline's control and output
+// registers only, never the RAM. The data registers of the stages are not reset: their values are
+// only used while the stage's act flag (reset to 0) is 1. During a reset call the write port takes
+// no new write (the C++ step() is not called in the safe state) but the writes already in w1/w2
+// still reach the RAM (the C++ reset() performs them): a write of a running call is never lost.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -31,12 +40,12 @@ module error_map (
     input  wire               i_bank_sel,  // active bank of this call
     input  wire signed [37:0] i_origin0,   // bank 0 geometry
     input  wire [4:0]         i_k0,
-    input  wire [11:0]        i_n0,
+    input  wire [10:0]        i_n0,
     input  wire signed [37:0] i_origin1,   // bank 1 geometry
     input  wire [4:0]         i_k1,
-    input  wire [11:0]        i_n1,
+    input  wire [10:0]        i_n1,
     input  wire               i_we,        // table write port: writes bank !bank_sel
-    input  wire [10:0]        i_addr,
+    input  wire [9:0]         i_addr,
     input  wire signed [23:0] i_data,      // Q15.8 output counts
     output wire signed [16:0] o_corr,
     output wire signed [17:0] o_delta,
@@ -47,121 +56,269 @@ module error_map (
 );
 
     // ---- fixed widths (hls: error_map_cfg) ---------------------------------------------------
-    localparam integer TBL_DEPTH = 2048;
+    localparam integer TBL_DEPTH = 1024;
     localparam integer W_CORR    = 24;
-    localparam integer F         = 8;
     localparam [4:0]   K_MIN     = 5'd4;
     localparam [4:0]   K_MAX     = 5'd20;
-    localparam integer W_ADDR    = 11;
+    localparam integer W_ADDR    = 10;
+    localparam integer W_HADDR   = 9;
+    localparam integer W_N       = 11;
     localparam integer W_OFF     = 39;
     localparam integer W_FRAC    = 20;
+    localparam integer W_V       = 21;
+    localparam integer W_DIG     = 7;
+    localparam integer W_DIFF    = 25;
+    localparam integer W_PP      = 32;
+    localparam integer W_S1      = 40;
     localparam integer W_NUM     = 46;
+    localparam integer SH        = 28;
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
-    // ---- table RAM (not reset) ---------------------------------------------------------------
-    reg signed [W_CORR-1:0] tbl0 [0:TBL_DEPTH-1];   // bank 0
-    reg signed [W_CORR-1:0] tbl1 [0:TBL_DEPTH-1];   // bank 1
-
-    // ---- registers ---------------------------------------------------------------------------
-    wire signed [W_CORR-1:0]  t0_q, t1_q;   // T[i], T[i+1] (registered RAM outputs, bank mux)
-    reg        [W_FRAC-1:0]   frac_q;
-    reg        [4:0]          k_q;
-    reg                       act_q, inr_q, err_q;
-    reg signed [W_C-1:0]      corr_q;       // output corr (= corr of the previous call's output)
-    reg signed [W_CDELTA-1:0] delta_q;
-    reg                       active_oq, inr_oq, err_oq;
-
-    // ---- stage B: interpolation of the stage A registers -------------------------------------
-    wire signed [W_CORR:0]    diff    = {t1_q[W_CORR-1], t1_q} - {t0_q[W_CORR-1], t0_q};
-    wire signed [W_FRAC:0]    frac_s  = {1'b0, frac_q};
-    wire signed [W_NUM-1:0]   t0_x    = {{(W_NUM-W_CORR){t0_q[W_CORR-1]}}, t0_q};
-    wire signed [W_NUM-1:0]   prod    = diff * frac_s;
-    wire signed [W_NUM-1:0]   num     = (t0_x <<< k_q) + prod;
-    wire        [5:0]         sh      = 6'd8 + {1'b0, k_q};
-    wire signed [W_NUM-1:0]   half    = {{(W_NUM-1){1'b0}}, 1'b1} <<< (sh - 6'd1);
-    wire signed [W_NUM-1:0]   rnd     = (num + half) >>> sh;
-    wire signed [W_C-1:0]     c_next  = act_q ? rnd[W_C-1:0] : {W_C{1'b0}};
-    wire signed [W_CDELTA-1:0] d_next = {c_next[W_C-1], c_next} - {corr_q[W_C-1], corr_q};
-
-    // ---- stage A: geometry of the selected bank, clamp, addresses ----------------------------
-    wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
-    wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
-    wire        [11:0]        g_n      = i_bank_sel ? i_n1 : i_n0;
-    wire                      geom_ok  = g_k >= K_MIN && g_k <= K_MAX && g_n >= 12'd2 && g_n <= 12'd2048;
-    wire        [4:0]         k        = geom_ok ? g_k : K_MIN;
-    wire        [11:0]        n_m1     = g_n - 12'd1;
-    wire        [W_ADDR-1:0]  last_i   = geom_ok ? n_m1[W_ADDR-1:0] : {W_ADDR{1'b0}};
-    wire signed [W_OFF-1:0]   off      = {i_p[37], i_p} - {g_origin[37], g_origin};
-    wire signed [W_OFF-1:0]   last_off = {{(W_OFF-W_ADDR){1'b0}}, last_i} <<< k;
-    wire signed [W_OFF-1:0]   off_sh   = off >>> k;
-    wire signed [W_OFF-1:0]   mask     = ({{(W_OFF-1){1'b0}}, 1'b1} <<< k) - {{(W_OFF-1){1'b0}}, 1'b1};
-    wire signed [W_OFF-1:0]   off_fr   = off & mask;
-    wire                      below    = off < 0;
-    wire                      above    = !below && off >= last_off;
-    wire        [W_ADDR-1:0]  i0       = below ? {W_ADDR{1'b0}} : above ? last_i : off_sh[W_ADDR-1:0];
-    wire        [W_FRAC-1:0]  frac     = (below || above) ? {W_FRAC{1'b0}} : off_fr[W_FRAC-1:0];
-    wire                      inr      = below ? 1'b0 : above ? (off == last_off) : 1'b1;
-    wire        [W_ADDR-1:0]  i1       = (i0 == last_i) ? i0 : i0 + {{(W_ADDR-1){1'b0}}, 1'b1};
-
-    // RAMs: two registered reads of the selected bank, one write of the other bank
-    always @(posedge i_clk) begin
-        if (!i_rst && i_we && i_bank_sel) tbl0[i_addr] <= i_data;
-    end
-    always @(posedge i_clk) begin
-        if (!i_rst && i_we && !i_bank_sel) tbl1[i_addr] <= i_data;
-    end
-    // registered reads (BRAM read registers with read enable: only the selected bank is read, so
-    // the other RAM sees at most the write) and the bank they were taken for
-    reg signed [W_CORR-1:0] rd0_0_q, rd0_1_q, rd1_0_q, rd1_1_q;
-    reg                     rd_sel_q;
-    always @(posedge i_clk) begin
-        if (i_rst) begin
-            rd0_0_q  <= {W_CORR{1'b0}};
-            rd0_1_q  <= {W_CORR{1'b0}};
-            rd1_0_q  <= {W_CORR{1'b0}};
-            rd1_1_q  <= {W_CORR{1'b0}};
-            rd_sel_q <= 1'b0;
-        end else begin
-            if (!i_bank_sel) begin
-                rd0_0_q <= tbl0[i0];
-                rd0_1_q <= tbl0[i1];
-            end
-            if (i_bank_sel) begin
-                rd1_0_q <= tbl1[i0];
-                rd1_1_q <= tbl1[i1];
-            end
-            rd_sel_q <= i_bank_sel;
+    // ---- table RAMs (not reset): even and odd words of each bank -----------------------------
+    reg signed [W_CORR-1:0] tbl0e [0:TBL_DEPTH/2-1];
+    reg signed [W_CORR-1:0] tbl0o [0:TBL_DEPTH/2-1];
+    reg signed [W_CORR-1:0] tbl1e [0:TBL_DEPTH/2-1];
+    reg signed [W_CORR-1:0] tbl1o [0:TBL_DEPTH/2-1];
+    // Power-up contents 0, as the C++ tables (block RAM initial contents on the iCE40). At the
+    // held end of a table (i = n - 1, u = 0) the word of the other RAM is read but multiplied by
+    // 0 (or cancelled, ERROR_MAP.md §4); it may lie beyond the loaded words, so it must not be X.
+    integer ii;
+    initial begin
+        for (ii = 0; ii < TBL_DEPTH / 2; ii = ii + 1) begin
+            tbl0e[ii] = {W_CORR{1'b0}};
+            tbl0o[ii] = {W_CORR{1'b0}};
+            tbl1e[ii] = {W_CORR{1'b0}};
+            tbl1o[ii] = {W_CORR{1'b0}};
         end
     end
-    assign t0_q = rd_sel_q ? rd1_0_q : rd0_0_q;
-    assign t1_q = rd_sel_q ? rd1_1_q : rd0_1_q;
+
+    // ---- stage A: geometry of the selected bank, registered subtract -------------------------
+    wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
+    wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
+    wire        [W_N-1:0]     g_n      = i_bank_sel ? i_n1 : i_n0;
+    wire                      geom_ok  = g_k >= K_MIN && g_k <= K_MAX && g_n >= 11'd2 && g_n <= TBL_DEPTH;
+    wire        [W_N-1:0]     n_m1     = g_n - 11'd1;
+
+    reg signed [W_OFF-1:0]  a_off;
+    reg        [4:0]        a_k;
+    reg        [W_ADDR-1:0] a_last;
+    reg                     a_bank, a_act, a_err;
+    // write port, delayed to stage C
+    reg                     w1_we, w1_bank, w2_we, w2_bank;
+    reg        [W_ADDR-1:0] w1_addr, w2_addr;
+    reg signed [W_CORR-1:0] w1_data, w2_data;
 
     always @(posedge i_clk) begin
+        a_off  <= {i_p[37], i_p} - {g_origin[37], g_origin};
+        a_k    <= geom_ok ? g_k : K_MIN;
+        a_last <= geom_ok ? n_m1[W_ADDR-1:0] : {W_ADDR{1'b0}};
+        a_bank <= i_bank_sel;
+        w1_bank <= !i_bank_sel;
+        w1_addr <= i_addr;
+        w1_data <= i_data;
+        w2_we   <= w1_we;
+        w2_bank <= w1_bank;
+        w2_addr <= w1_addr;
+        w2_data <= w1_data;
         if (i_rst) begin
-            frac_q    <= {W_FRAC{1'b0}};
-            k_q       <= K_MIN;
-            act_q     <= 1'b0;
-            inr_q     <= 1'b0;
-            err_q     <= 1'b0;
+            a_act <= 1'b0;
+            a_err <= 1'b0;
+            w1_we <= 1'b0;
+        end else begin
+            a_act <= i_map_en && i_homed && geom_ok;
+            a_err <= i_map_en && !geom_ok;
+            w1_we <= i_we;
+        end
+    end
+
+    // ---- stage B: split the offset (field selects by k, no compare) --------------------------
+    // suffix OR of the offset's magnitude bits: sor[j] = |a_off[37:j]; b_hi = sor[k + 10]
+    wire [W_OFF-1:0] sor;
+    assign sor[W_OFF-1] = 1'b0;
+    genvar gj;
+    generate
+        for (gj = W_OFF - 2; gj >= 0; gj = gj - 1) begin : g_sor
+            assign sor[gj] = sor[gj+1] | a_off[gj];
+        end
+    endgenerate
+    wire [5:0]        hi_pos = {1'b0, a_k} + 6'd10;
+    wire [W_OFF-1:0]  off_u  = a_off;
+    wire [W_OFF-1:0]  off_sh = off_u >> a_k;
+    wire [W_FRAC-1:0] u_sh   = off_u[W_FRAC-1:0] << (K_MAX - a_k);
+
+    reg                     b_neg, b_hi, b_bank, b_act, b_err;
+    reg        [W_ADDR-1:0] b_i, b_last;
+    reg        [W_FRAC-1:0] b_u;
+    always @(posedge i_clk) begin
+        b_neg  <= a_off[W_OFF-1];
+        b_hi   <= sor[hi_pos];
+        b_i    <= off_sh[W_ADDR-1:0];
+        b_u    <= u_sh;
+        b_last <= a_last;
+        b_bank <= a_bank;
+        if (i_rst) begin
+            b_act <= 1'b0;
+            b_err <= 1'b0;
+        end else begin
+            b_act <= a_act;
+            b_err <= a_err;
+        end
+    end
+
+    // ---- stage C: clamp, one registered read of each RAM of the selected bank, the write ------
+    wire                above  = !b_neg && (b_hi || b_i >= b_last);
+    wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? b_last : b_i;
+    wire [W_FRAC-1:0]   cu     = (b_neg || above) ? {W_FRAC{1'b0}} : b_u;
+    wire                cinr   = !b_neg && (!above || (!b_hi && b_i == b_last && b_u == {W_FRAC{1'b0}}));
+    wire [W_ADDR:0]     ci_p1  = {1'b0, ci} + {{W_ADDR{1'b0}}, 1'b1};
+    wire [W_HADDR-1:0]  ea     = ci_p1[W_HADDR:1];   // wraps to 0 at i = 1023 (word not used)
+    wire [W_HADDR-1:0]  oa     = ci[W_ADDR-1:1];
+
+    reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+    always @(posedge i_clk) begin
+        if (!b_bank) begin
+            rd0e <= tbl0e[ea];
+            rd0o <= tbl0o[oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (b_bank) begin
+            rd1e <= tbl1e[ea];
+            rd1o <= tbl1o[oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (w2_we && !w2_bank && !w2_addr[0]) tbl0e[w2_addr[W_ADDR-1:1]] <= w2_data;
+    end
+    always @(posedge i_clk) begin
+        if (w2_we && !w2_bank && w2_addr[0]) tbl0o[w2_addr[W_ADDR-1:1]] <= w2_data;
+    end
+    always @(posedge i_clk) begin
+        if (w2_we && w2_bank && !w2_addr[0]) tbl1e[w2_addr[W_ADDR-1:1]] <= w2_data;
+    end
+    always @(posedge i_clk) begin
+        if (w2_we && w2_bank && w2_addr[0]) tbl1o[w2_addr[W_ADDR-1:1]] <= w2_data;
+    end
+
+    reg              c_lsb, c_bank, c_act, c_inr, c_err;
+    reg [W_FRAC-1:0] c_u;
+    always @(posedge i_clk) begin
+        c_lsb  <= ci[0];
+        c_u    <= cu;
+        c_bank <= b_bank;
+        c_inr  <= cinr;
+        if (i_rst) begin
+            c_act <= 1'b0;
+            c_err <= 1'b0;
+        end else begin
+            c_act <= b_act;
+            c_err <= b_err;
+        end
+    end
+
+    // ---- stage D: bank multiplexer, difference, orientation ----------------------------------
+    wire signed [W_CORR-1:0] we_m = c_bank ? rd1e : rd0e;
+    wire signed [W_CORR-1:0] wo_m = c_bank ? rd1o : rd0o;
+    reg signed [W_CORR-1:0] d_e;
+    reg signed [W_DIFF-1:0] d_diff;
+    reg        [W_V-1:0]    d_v;
+    reg                     d_act, d_inr, d_err;
+    always @(posedge i_clk) begin
+        d_e    <= we_m;
+        d_diff <= {wo_m[W_CORR-1], wo_m} - {we_m[W_CORR-1], we_m};
+        d_v    <= c_lsb ? ({1'b1, {W_FRAC{1'b0}}} - {1'b0, c_u}) : {1'b0, c_u};
+        d_inr  <= c_inr;
+        if (i_rst) begin
+            d_act <= 1'b0;
+            d_err <= 1'b0;
+        end else begin
+            d_act <= c_act;
+            d_err <= c_err;
+        end
+    end
+
+    // ---- stage E: three partial products, 25 x 7 (digit as a non-negative 8-bit signed) --------
+    wire signed [W_DIG:0] dig0 = {1'b0, d_v[W_DIG-1:0]};
+    wire signed [W_DIG:0] dig1 = {1'b0, d_v[2*W_DIG-1:W_DIG]};
+    wire signed [W_DIG:0] dig2 = {1'b0, d_v[3*W_DIG-1:2*W_DIG]};
+    wire signed [W_PP:0]  pp0_w = d_diff * dig0;   // |pp| < 2^24 * 2^7: fits W_PP bits
+    wire signed [W_PP:0]  pp1_w = d_diff * dig1;
+    wire signed [W_PP:0]  pp2_w = d_diff * dig2;
+    reg signed [W_PP-1:0]   e_pp0, e_pp1, e_pp2;
+    reg signed [W_CORR-1:0] e_e;
+    reg                     e_act, e_inr, e_err;
+    always @(posedge i_clk) begin
+        e_pp0 <= pp0_w[W_PP-1:0];
+        e_pp1 <= pp1_w[W_PP-1:0];
+        e_pp2 <= pp2_w[W_PP-1:0];
+        e_e   <= d_e;
+        e_inr <= d_inr;
+        if (i_rst) begin
+            e_act <= 1'b0;
+            e_err <= 1'b0;
+        end else begin
+            e_act <= d_act;
+            e_err <= d_err;
+        end
+    end
+
+    // ---- stage F: two partial sums -------------------------------------------------------------
+    wire signed [W_S1-1:0]  pp0_x = {{(W_S1-W_PP){e_pp0[W_PP-1]}}, e_pp0};
+    wire signed [W_S1-1:0]  pp1_x = {{(W_S1-W_PP-W_DIG){e_pp1[W_PP-1]}}, e_pp1, {W_DIG{1'b0}}};
+    wire signed [W_NUM-1:0] e_x   = {{(W_NUM-W_CORR-K_MAX){e_e[W_CORR-1]}}, e_e, {K_MAX{1'b0}}};
+    wire signed [W_NUM-1:0] pp2_x = {{(W_NUM-W_PP-2*W_DIG){e_pp2[W_PP-1]}}, e_pp2, {(2*W_DIG){1'b0}}};
+    wire signed [W_NUM-1:0] half  = {{(W_NUM-SH){1'b0}}, 1'b1, {(SH-1){1'b0}}};
+    reg signed [W_S1-1:0]  f_s1;
+    reg signed [W_NUM-1:0] f_s2;
+    reg                    f_act, f_inr, f_err;
+    always @(posedge i_clk) begin
+        f_s1  <= pp0_x + pp1_x;
+        f_s2  <= e_x + pp2_x + half;
+        f_inr <= e_inr;
+        if (i_rst) begin
+            f_act <= 1'b0;
+            f_err <= 1'b0;
+        end else begin
+            f_act <= e_act;
+            f_err <= e_err;
+        end
+    end
+
+    // ---- stage G: numerator, fixed shift, activity gate ----------------------------------------
+    wire signed [W_NUM-1:0] num = {{(W_NUM-W_S1){f_s1[W_S1-1]}}, f_s1} + f_s2;
+    reg signed [W_C-1:0] g_corr;
+    reg                  g_act, g_inr, g_err;
+    always @(posedge i_clk) begin
+        g_inr <= f_inr;
+        if (i_rst) begin
+            g_corr <= {W_C{1'b0}};
+            g_act  <= 1'b0;
+            g_err  <= 1'b0;
+        end else begin
+            g_corr <= f_act ? num[SH+W_C-1:SH] : {W_C{1'b0}};
+            g_act  <= f_act;
+            g_err  <= f_err;
+        end
+    end
+
+    // ---- stage H: output registers ---------------------------------------------------------------
+    reg signed [W_C-1:0]      corr_q;
+    reg signed [W_CDELTA-1:0] delta_q;
+    reg                       active_oq, inr_oq, err_oq;
+    always @(posedge i_clk) begin
+        if (i_rst) begin
             corr_q    <= {W_C{1'b0}};
             delta_q   <= {W_CDELTA{1'b0}};
             active_oq <= 1'b0;
             inr_oq    <= 1'b0;
             err_oq    <= 1'b0;
         end else begin
-            // stage B (from the stage A registers of the previous call)
-            corr_q    <= c_next;
-            delta_q   <= d_next;
-            active_oq <= act_q;
-            inr_oq    <= act_q && inr_q;
-            err_oq    <= err_q;
-            // stage A
-            frac_q    <= frac;
-            k_q       <= k;
-            act_q     <= i_map_en && i_homed && geom_ok;
-            inr_q     <= inr;
-            err_q     <= i_map_en && !geom_ok;
+            corr_q    <= g_corr;
+            delta_q   <= {g_corr[W_C-1], g_corr} - {corr_q[W_C-1], corr_q};
+            active_oq <= g_act;
+            inr_oq    <= g_act && g_inr;
+            err_oq    <= g_err;
         end
     end
 

@@ -5,7 +5,7 @@
 // (docs/ERROR_MAP.md).
 //
 // random:     seeded motion (random speeds up to 4 points per call, both directions, reversals,
-//             dwells, jumps) over and beyond both table ends; random geometries (k 4..20, n 2..2048,
+//             dwells, jumps) over and beyond both table ends; random geometries (k 4..20, n 2..1024,
 //             origin anywhere in +-2^30); random tables (smooth walks with large slopes, full-range
 //             noise, alternating extremes, small sinusoids, constants); homing and enable toggles;
 //             reloads of the inactive bank one word per call during motion, followed by a flip
@@ -16,8 +16,10 @@
 //             and down, several tables (noise, extremes, exact half ties, ramp), several origins.
 // directed:   a flip never mixes banks (constant tables of different value, frac != 0); writes
 //             to the inactive bank never change the output; every invalid geometry gives cfg_err
-//             and corr 0 (delta brings it back once), and recovery; latency is 2 calls.
+//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 8 calls
+//             (the output of call t + 7 belongs to the inputs of call t).
 #include <cstdio>
+#include <deque>
 #include <random>
 #include <string>
 #include <vector>
@@ -28,7 +30,12 @@
 
 namespace {
 
-constexpr int kDepth = 2048;
+constexpr int kDepth = 1024;  // ERROR_MAP.md §2
+constexpr int kLat = 8;       // ERROR_MAP.md §6: inputs of call t -> output of call t + kLat - 1
+constexpr int kNMax = 2047;   // largest value of the 11-bit n_points register
+static_assert(kDepth == lx::error_map_cfg::TBL_DEPTH && kDepth == golden::error_map::kDepth, "depth");
+static_assert(kLat == lx::error_map_cfg::L_MAP && kLat == golden::error_map::kLat, "latency");
+static_assert(kNMax == (1 << lx::error_map_cfg::W_N) - 1, "n_points register width");
 constexpr int32_t kWordMin = -(1 << 23);
 constexpr int32_t kWordMax = (1 << 23) - 1;
 
@@ -205,7 +212,7 @@ geom random_geom(std::mt19937_64& rng, bool allow_bad) {
         if (b == 0) g.k = static_cast<int>(rng() % 4);
         if (b == 1) g.k = 21 + static_cast<int>(rng() % 11);
         if (b == 2) g.n = static_cast<int>(rng() % 2);
-        if (b == 3) g.n = kDepth + 1 + static_cast<int>(rng() % 2047);
+        if (b == 3) g.n = kDepth + 1 + static_cast<int>(rng() % (kNMax - kDepth));
     }
     return g;
 }
@@ -229,7 +236,7 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
         const geom* ag = &r.g[0];
         int64_t p = ag->origin + static_cast<int64_t>(rng() % 1000);
         int64_t v = 1;
-        expect_t prev_e;
+        std::deque<expect_t> pend(kLat - 1);  // expectations of the last kLat - 1 calls (reset: inactive)
         // host reload state machine
         std::vector<int32_t> next_tbl;
         int load_pos = -1;  // < 0: idle
@@ -294,8 +301,10 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
 
             const expect_t e = expected(d, p, homed, r);
             const lx::error_map::out_t o = d.step(res, p, homed, r, "random", t);
+            const expect_t prev_e = pend.front();  // the inputs of call t - (kLat - 1)
+            pend.pop_front();
+            pend.push_back(e);
             check_expect(res, prev_e, o, "random/direct", t);
-            prev_e = e;
             ++cov.calls;
             if (o.active) ++cov.active; else ++cov.inactive;
             if (o.cfg_err) ++cov.cfg_err;
@@ -349,18 +358,29 @@ void test_exhaustive(tbu::result& res, std::mt19937_64& rng, long& points) {
             r.g[0] = g;
             load_and_flip(res, d, r, tb, g, org, true);
             const int64_t span = 7 * 16;
-            expect_t prev_e;
+            std::deque<expect_t> pend;
             long t_call = 0;
             for (int dir = 1; dir >= -1; dir -= 2) {
                 for (int64_t j = 0; j <= span + 80; ++j) {
                     const int64_t x = dir > 0 ? org - 40 + j : org + span + 40 - j;
                     const expect_t e = expected(d, x, true, r);
                     const lx::error_map::out_t o = d.step(res, x, true, r, "exhaustive", t_call);
-                    if (t_call > 0) check_expect(res, prev_e, o, "exhaustive/direct", t_call);
-                    prev_e = e;
+                    if (static_cast<int>(pend.size()) == kLat - 1) {  // the inputs of call t - (kLat - 1)
+                        check_expect(res, pend.front(), o, "exhaustive/direct", t_call);
+                        pend.pop_front();
+                    }
+                    pend.push_back(e);
                     ++t_call;
                     ++points;
                 }
+            }
+            // flush: the last kLat - 1 positions of the sweep (the table is not touched)
+            const int64_t x_end = org - 40;
+            while (!pend.empty()) {
+                const lx::error_map::out_t o = d.step(res, x_end, true, r, "exhaustive", t_call);
+                check_expect(res, pend.front(), o, "exhaustive/direct", t_call);
+                pend.pop_front();
+                ++t_call;
             }
         }
     }
@@ -378,19 +398,20 @@ void test_directed(tbu::result& res) {
         load_and_flip(res, d, r, std::vector<int32_t>(64, B), g, 0, true);   // now bank 0 = B
         // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving.
         const int64_t wantA = floordiv(A + 128, 256), wantB = floordiv(B + 128, 256);
-        bool prev_sel = r.bank_sel;
+        std::deque<bool> sel_hist;  // bank_sel of the last kLat - 1 calls
         for (long t = 0; t < 400; ++t) {
             if (t % 5 == 0) r.bank_sel = !r.bank_sel;
             const int64_t x = 1000 + 3 + 7 * t % 4000;
             const lx::error_map::out_t o = d.step(res, x, true, r, "flip", t);
-            if (t > 0) {
-                const int64_t want = prev_sel ? wantA : wantB;  // bank 1 holds A
+            if (static_cast<int>(sel_hist.size()) == kLat - 1) {
+                const int64_t want = sel_hist.front() ? wantA : wantB;  // bank 1 holds A
+                sel_hist.pop_front();
                 res.expect(o.corr.to_int64() == want, [&] {
                     return "flip call " + std::to_string(t) + ": corr " + std::to_string(o.corr.to_int64()) +
                            " want " + std::to_string(want);
                 });
             }
-            prev_sel = r.bank_sel;
+            sel_hist.push_back(r.bank_sel);
         }
     }
     // 2. writes to the inactive bank never change the output; latency is 2 calls
@@ -404,13 +425,16 @@ void test_directed(tbu::result& res) {
         load_and_flip(res, d, r, t, g, -100000, false);  // not homed while loading
         const int64_t x = -5000 + 37 * 256 + 77;
         const int64_t want = direct_corr(t, g, x);
-        // homed rises in call 0 with p = x: corr appears in call 1, not in call 0
-        const lx::error_map::out_t o0 = d.step(res, x, true, r, "latency", 0);
-        res.check(o0.corr.to_int64() == 0 && !o0.active, "latency: corr appeared in the call of the input");
-        const lx::error_map::out_t o1 = d.step(res, x, true, r, "latency", 1);
+        // homed rises in call 0 with p = x: corr appears in call kLat - 1, not before
+        for (int c = 0; c < kLat - 1; ++c) {
+            const lx::error_map::out_t o0 = d.step(res, x, true, r, "latency", c);
+            res.check(o0.corr.to_int64() == 0 && !o0.active,
+                      "latency: corr appeared in call " + std::to_string(c) + " of the input");
+        }
+        const lx::error_map::out_t o1 = d.step(res, x, true, r, "latency", kLat - 1);
         res.check(o1.corr.to_int64() == want && o1.delta.to_int64() == want && o1.active,
                   "latency: corr " + std::to_string(o1.corr.to_int64()) + " want " + std::to_string(want) +
-                      " one call after the input");
+                      " kLat - 1 calls after the input");
         for (int a = 0; a < kDepth; ++a) {
             r.we = true;
             r.addr = a;
@@ -425,7 +449,7 @@ void test_directed(tbu::result& res) {
     // 3. invalid geometries: cfg_err, corr 0 (one delta back), recovery; none when disabled
     {
         const geom bad[] = {{0, 0, 16}, {0, 3, 16}, {0, 21, 16}, {0, 31, 16}, {0, 8, 0},
-                            {0, 8, 1},  {0, 8, 2049}, {0, 8, 4095}, {0, 2, 5000}};
+                            {0, 8, 1},  {0, 8, kDepth + 1}, {0, 8, kNMax}, {0, 2, 1500}};
         for (const geom& b : bad) {
             dut d;
             host_regs r;
@@ -433,27 +457,32 @@ void test_directed(tbu::result& res) {
             r.g[0] = g;
             const int32_t v = 5000 * 256;
             load_and_flip(res, d, r, std::vector<int32_t>(16, v), g, 0, true);
-            for (int t = 0; t < 3; ++t) d.step(res, 300, true, r, "cfg", t);
+            for (int t = 0; t < kLat + 2; ++t) d.step(res, 300, true, r, "cfg", t);
             const int cur = r.bank_sel ? 1 : 0;
             const std::string name = "invalid k=" + std::to_string(b.k) + " n=" + std::to_string(b.n);
             r.g[cur] = b;
-            d.step(res, 300, true, r, "cfg", 3);  // the bad geometry enters stage A
-            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", 4);
+            // the bad geometry enters stage A in call c0; the output of call c0 + kLat - 1 is its
+            const int c0 = kLat + 2;
+            for (int t = c0; t < c0 + kLat - 1; ++t) {
+                const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", t);
+                res.check(!q.cfg_err && q.corr.to_int64() == 5000, name + ": cfg_err / corr change too early");
+            }
+            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", c0 + kLat - 1);
             res.check(o.cfg_err && !o.active && o.corr.to_int64() == 0 && o.delta.to_int64() == -5000,
                       name + ": no cfg_err / corr not 0 / delta not -5000 (delta " +
                           std::to_string(o.delta.to_int64()) + ")");
-            for (int t = 5; t < 20; ++t) {
+            for (int t = c0 + kLat; t < c0 + kLat + 15; ++t) {
                 const lx::error_map::out_t q = d.step(res, 300 + t, true, r, "cfg", t);
                 res.check(q.cfg_err && q.corr.to_int64() == 0 && q.delta.to_int64() == 0, name + ": not held at 0");
             }
             r.map_en = false;  // disabled: no error flag
-            d.step(res, 300, true, r, "cfg", 20);
-            const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", 21);
+            lx::error_map::out_t q;
+            for (int t = 0; t < kLat; ++t) q = d.step(res, 300, true, r, "cfg-off", t);
             res.check(!q.cfg_err && q.corr.to_int64() == 0, name + ": cfg_err while disabled");
             r.map_en = true;
             r.g[cur] = g;  // recovery
-            d.step(res, 300, true, r, "cfg", 22);
-            const lx::error_map::out_t w = d.step(res, 300, true, r, "cfg", 23);
+            lx::error_map::out_t w;
+            for (int t = 0; t < kLat; ++t) w = d.step(res, 300, true, r, "cfg-rec", t);
             res.check(!w.cfg_err && w.corr.to_int64() == 5000 && w.delta.to_int64() == 5000, name + ": no recovery");
         }
     }
