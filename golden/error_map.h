@@ -7,8 +7,10 @@
 //            T[n-1] / 256                                 x > o + (n-1) s
 //            (T[i] + (T[i+1] - T[i]) * (x - o - i s) / s) / 256, i = floor((x - o) / s), otherwise
 // (at x = o + (n-1) s the last point itself), evaluated in long double and rounded to
-// corr = floor(c + 1/2). The value returned by call t belongs to the inputs of call t-7
-// (L_MAP = 8 calls of latency, ERROR_MAP.md §6); it is 0 when that call was not active (map_en && homed && valid geometry of
+// corr = floor(c + 1/2). Only the inputs of the sample calls are used: the first call after a
+// reset and every kPeriod-th after it (S_MAP = 32); the value of sample call t is returned by
+// calls t + kLat - 1 .. (L_MAP = 28, ERROR_MAP.md §6) until the next one is published, and
+// before the first publication the outputs are 0 / inactive; it is 0 when that call was not active (map_en && homed && valid geometry of
 // the bank selected in that call). delta = corr(t) - corr(t-1).
 //
 // Exactness: every table value is an integer times 2^-8 with |T| < 2^23, (x - o - i s) is an
@@ -19,7 +21,6 @@
 // holds all of them exactly, so floorl gives the exact rounded value.
 #pragma once
 #include <cstdint>
-#include <deque>
 #include <vector>
 
 namespace golden {
@@ -42,7 +43,8 @@ struct error_map_regs {
 class error_map {
 public:
     static constexpr int kDepth = 1024;  // points per bank (ERROR_MAP.md §2)
-    static constexpr int kLat = 8;       // L_MAP: inputs of call t -> output of call t + kLat - 1
+    static constexpr int kPeriod = 32;   // S_MAP: one sample call in kPeriod
+    static constexpr int kLat = 28;      // L_MAP: sample call t -> outputs of calls t + kLat - 1 ..
     static constexpr int kFrac = 8;
 
     struct out {
@@ -64,7 +66,10 @@ public:
 
 private:
     std::vector<int32_t> tbl_[2];
-    std::deque<out> pending_;  // results for the inputs of the previous kLat - 1 calls, oldest first
+    long phase_ = 0;           // calls since reset, modulo kPeriod
+    out pending_;              // result of the last sample call, not yet published
+    long due_ = -1;            // calls until pending_ is published (-1: nothing pending)
+    out cur_;                  // published result
     int64_t corr_ = 0;  // corr returned by the previous call
 };
 

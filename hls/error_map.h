@@ -1,8 +1,9 @@
 // error_map.h — position error mapping: a correction table over equally spaced positions, linear
 // interpolation between points, the correction delivered as whole output counts to add or remove.
 //
-// docs/ERROR_MAP.md is the normative per-call description (§4: the eight pipeline stages A .. H,
-// one register stage per call, sized for an iCE40 HX8K clock of >= 120 MHz); in short:
+// docs/ERROR_MAP.md is the normative per-call description (§4: the inputs are sampled once every
+// S_MAP = 32 calls; stages A .. D run every call, one register stage per call, then a sequenced
+// shift-and-add multiplier; sized for an iCE40 HX8K clock of >= 120 MHz); in short:
 //
 //   A  off = p - origin (registered 39-bit subtract), geometry check, k, last, flags
 //   B  i = floor(off / 2^k) mod TBL_DEPTH, u = (off mod 2^k) * 2^(20-k), off < 0, off beyond
@@ -10,9 +11,11 @@
 //   C  clamp to [0, last] (10-bit compare), the two reads: even RAM at (i+1)/2, odd RAM at i/2
 //      of the selected bank (T[i] and T[i+1] always lie in different RAMs: one read per RAM)
 //   D  e = even word, diff = odd word - even word, v = i odd ? 2^20 - u : u (no swap mux)
-//   E  three registered partial products diff * v[7j+6 .. 7j]
-//   F  two registered partial sums;  G  num = e 2^20 + diff v + 2^27, corr = floor(num / 2^28)
-//   H  output registers: corr, delta = corr' - corr, flags
+//   M  (sample call t: calls t+4 .. t+25) load diff, v, e + 128; 21 steps of
+//      s = hi + (v bit j ? diff : 0), hi = s >> 1 (LSB first, 26-bit adder)
+//   G  (call t+26) corr = floor((2 hi + e + 128 + last bit shifted out) / 2^8)
+//      = floor((e 2^20 + diff v + 2^27) / 2^28), held until the next sample's G
+//   H  output registers: corr, delta = corr' - corr, flags (every call)
 //
 // Two banks, each two RAMs (even and odd words): the table write port always writes the bank that
 // is *not* selected by bank_sel in that call, delayed by two registers so that it is performed in
@@ -22,8 +25,10 @@
 // table and geometry together at one call boundary and a reload can never mix tables.
 //
 // Widths (derived in error_map_cfg): table words 24 bits signed Q15.8 counts, offset 39 signed,
-// u 20 unsigned, v 21, diff 25 signed, numerator 46 signed, corr 17 signed, delta 18 signed.
-// Latency: L_MAP = 8 calls — p given in call t is reflected in the corr/delta returned by call t+7.
+// u 20 unsigned, v 21, diff 25 signed, multiplier accumulator 26 signed, corr 17 signed, delta 18.
+// Sample period S_MAP = 32 calls (phase counter 0 after reset: the first call after a reset is a
+// sample call); latency L_MAP = 28 calls — the inputs of sample call t are reflected in the
+// corr/delta returned by call t+27 and held until call t+58.
 #ifndef LASERAX_HLS_ERROR_MAP_H
 #define LASERAX_HLS_ERROR_MAP_H
 
@@ -39,8 +44,8 @@ struct error_map_cfg {
     static constexpr int K_MIN = 4;         // spacing 2^k counts, k = K_MIN..K_MAX
     static constexpr int K_MAX = 20;
     static constexpr int N_BANKS = 2;
-    static constexpr int W_DIG = 7;         // digit of v per partial product (stage E)
-    static constexpr int L_MAP = 8;         // stages A .. H (latency in calls, input call included)
+    static constexpr int S_MAP = 32;        // calls per sample (a power of two: wrapping counter)
+    static constexpr int L_MAP = 28;        // sample call t -> outputs of call t + L_MAP - 1
     // derived
     static constexpr int W_ADDR = clog2p1(TBL_DEPTH - 1);        // 10
     static constexpr int HALF_DEPTH = TBL_DEPTH / 2;             // 512 words per parity RAM
@@ -50,16 +55,19 @@ struct error_map_cfg {
     static constexpr int W_OFF = axis_widths::W_POS + 1;          // 39, p - origin
     static constexpr int W_FRAC = K_MAX;                          // 20, u: frac in 2^-K_MAX units
     static constexpr int W_V = K_MAX + 1;                         // 21, v: 0 .. 2^K_MAX
-    static constexpr int N_DIG = (W_V + W_DIG - 1) / W_DIG;       // 3 partial products
+    static constexpr int W_PHM = clog2p1(S_MAP - 1);              // 5, phase counter
+    static constexpr int PH_LOAD = 4;                             // stage D holds the sample
+    static constexpr int PH_G = PH_LOAD + 1 + W_V;                // 26: after the 21 steps
     static constexpr int W_DIFF = W_CORR + 1;                     // 25, odd word - even word
-    static constexpr int W_PP = W_DIFF + W_DIG;                   // 32, one partial product
-    static constexpr int W_NUM = W_DIFF + W_V;                    // 46, interpolation numerator
-    static constexpr int W_S1 = W_DIFF + 2 * W_DIG + 1;           // 40, pp0 + pp1 * 2^W_DIG
-    static constexpr int SH = F + K_MAX;                          // 28, num / 2^SH is the value
+    static constexpr int W_MHI = W_DIFF + 1;                      // 26, multiplier accumulator
+    static constexpr int W_ME = W_CORR + 1;                       // 25, e + 2^(F-1)
+    static constexpr int W_G = W_MHI + 1;                         // 27, 2 hi + m_e + bit
     static constexpr int W_C = W_CORR - F + 1;                    // 17, rounded correction
     static constexpr int W_CDELTA = W_C + 1;                      // 18, corr' - corr
     static_assert(TBL_DEPTH % 2 == 0 && (1 << W_ADDR) == TBL_DEPTH, "error_map: depth a power of two");
-    static_assert(N_DIG == 3, "error_map: stage F adds pp0 + pp1 and e + pp2 (three digits)");
+    static_assert((S_MAP & (S_MAP - 1)) == 0 && PH_G + 1 == L_MAP - 1 && L_MAP - 1 < S_MAP,
+                  "error_map: one sample in flight, published before the next is sampled");
+    static_assert(K_MAX + 1 == W_V, "error_map: G folds the 2^(K_MAX) term of v into m_hi's bit");
     static_assert(K_MAX + W_ADDR < W_OFF - 1, "error_map: the 'beyond every address' bound fits off_t");
 
     using word_t = sint<W_CORR>;
@@ -70,11 +78,11 @@ struct error_map_cfg {
     using off_t = sint<W_OFF>;
     using frac_t = uint<W_FRAC>;
     using v_t = uint<W_V>;
-    using dig_t = uint<W_DIG>;
     using diff_t = sint<W_DIFF>;
-    using pp_t = sint<W_PP>;
-    using s1_t = sint<W_S1>;
-    using num_t = sint<W_NUM>;
+    using mhi_t = sint<W_MHI>;
+    using me_t = sint<W_ME>;
+    using g_t = sint<W_G>;
+    using phm_t = uint<W_PHM>;
     using corr_t = sint<W_C>;
     using cdelta_t = sint<W_CDELTA>;
 };
@@ -136,9 +144,9 @@ public:
         b_ = st_b{};
         c_ = st_c{};
         d_ = st_d{};
-        e_ = st_e{};
-        f_ = st_f{};
+        m_ = st_m{};
         g_ = st_g{};
+        ph_ = 0;
         corr_ = 0;
     }
 
@@ -153,28 +161,30 @@ public:
         o.cfg_err = g_.fl.err;
         corr_ = g_.corr;
 
-        // ---- G: numerator (one 46-bit addition), fixed shift, activity gate ------------------
-        st_g g;
-        const cfg::num_t num = cfg::num_t(f_.s1) + f_.s2;
-        g.corr = f_.fl.act ? cfg::corr_t(num >> cfg::SH) : cfg::corr_t(0);
-        g.fl = f_.fl;
-
-        // ---- F: two partial sums ---------------------------------------------------------------
-        st_f f;
-        f.s1 = cfg::s1_t(e_.pp[0]) + cfg::s1_t(e_.pp[1]) * cfg::s1_t(1 << cfg::W_DIG);
-        f.s2 = cfg::num_t(e_.e) * cfg::num_t(1 << cfg::K_MAX) +
-               cfg::num_t(e_.pp[2]) * cfg::num_t(1 << (2 * cfg::W_DIG)) + cfg::num_t(1 << (cfg::SH - 1));
-        f.fl = e_.fl;
-
-        // ---- E: three registered partial products (25 x 7) ------------------------------------
-        st_e e;
-        for (int j = 0; j < cfg::N_DIG; ++j) {
-#pragma HLS UNROLL
-            const cfg::dig_t dj = cfg::dig_t(d_.v >> (cfg::W_DIG * j));
-            e.pp[j] = cfg::pp_t(d_.diff) * cfg::pp_t(dj);
+        // ---- G (ph = PH_G): round the sample's product; held in every other call -----------
+        const unsigned ph = ph_.to_uint();
+        st_g g = g_;
+        if (ph == cfg::PH_G) {
+            const cfg::g_t x = cfg::g_t(m_.hi) * cfg::g_t(2) + cfg::g_t(m_.e) + cfg::g_t(m_.b ? 1 : 0);
+            g.corr = m_.fl.act ? cfg::corr_t(x >> cfg::F) : cfg::corr_t(0);
+            g.fl = m_.fl;
         }
-        e.e = d_.e;
-        e.fl = d_.fl;
+
+        // ---- M: sequenced multiply diff * v, LSB first (load at PH_LOAD, 21 steps) ------------
+        st_m m = m_;
+        if (ph == cfg::PH_LOAD) {
+            m.hi = 0;
+            m.b = false;
+            m.v = d_.v;
+            m.diff = d_.diff;
+            m.e = cfg::me_t(d_.e) + cfg::me_t(1 << (cfg::F - 1));
+            m.fl = d_.fl;
+        } else if (ph > cfg::PH_LOAD && ph < cfg::PH_G) {
+            const cfg::mhi_t sum = cfg::mhi_t(m_.hi) + ((m_.v & 1) != 0 ? cfg::mhi_t(m_.diff) : cfg::mhi_t(0));
+            m.hi = sum >> 1;
+            m.b = (sum & 1) != 0;
+            m.v = m_.v >> 1;
+        }
 
         // ---- D: difference of the two words, orientation of the interval ----------------------
         st_d d;
@@ -237,9 +247,9 @@ public:
         b_ = b;
         c_ = c;
         d_ = d;
-        e_ = e;
-        f_ = f;
+        m_ = m;
         g_ = g;
+        ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
         return o;
     }
 
@@ -279,14 +289,12 @@ private:
         cfg::v_t v = 0;
         flags_t fl;
     };
-    struct st_e {
-        cfg::pp_t pp[cfg::N_DIG] = {0, 0, 0};
-        cfg::word_t e = 0;
-        flags_t fl;
-    };
-    struct st_f {
-        cfg::s1_t s1 = 0;
-        cfg::num_t s2 = 0;
+    struct st_m {
+        cfg::mhi_t hi = 0;      // floor(partial product / 2^j)
+        bool b = false;         // the bit shifted out last (bit 20 of the product at the end)
+        cfg::v_t v = 0;         // multiplier bits still to go, LSB first
+        cfg::diff_t diff = 0;
+        cfg::me_t e = 0;        // even word + 2^(F-1) (the rounding half)
         flags_t fl;
     };
     struct st_g {
@@ -323,9 +331,9 @@ private:
     st_b b_;
     st_c c_;
     st_d d_;
-    st_e e_;
-    st_f f_;
+    st_m m_;
     st_g g_;
+    cfg::phm_t ph_;  // phase of this call in the sample period (0: sample call)
     cfg::corr_t corr_;
 };
 

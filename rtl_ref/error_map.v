@@ -11,17 +11,21 @@
 // reload can never mix tables. iCE40: each RAM is three SB_RAM40_4K (512 x 8), 12 in all; the
 // RAMs start at 0 (initial contents), as the C++ tables.
 //
-// Timing (one rising edge = one call of error_map::step()); stage X of call t at edge t + (X - A):
+// The inputs are sampled once every S_MAP = 32 calls (phase counter ph, 0 after reset: the calls
+// with ph = 0); stages A .. D run every call (one rising edge = one call of error_map::step(),
+// stage X of call t at edge t + (X - A)), the multiplier takes the sample's operands from D:
 //   A  a_off = p - origin (39 bits), geometry check, k, last, flags, bank; w1 = the write port
 //   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
 //   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; registered RAM reads at (i+1)/2
 //      (even) and i/2 (odd) of the selected bank; the write of w2 (other bank)
 //   D  bank multiplexer, d_e = even word, d_diff = odd - even (25 bits), d_v = i odd ? 2^20 - u : u
-//   E  three partial products d_diff * d_v[7j+6:7j] (25 x 7 each)
-//   F  f_s1 = pp0 + pp1 * 2^7, f_s2 = e * 2^20 + pp2 * 2^14 + 2^27
-//   G  num = f_s1 + f_s2 (46 bits), corr = act ? num[44:28] : 0   (floor(num / 2^28))
-//   H  output registers: corr, delta = corr - corr_prev, active, in_range, cfg_err
-// Latency: p presented before edge t is reflected in the outputs after edge t+7 (8 calls, L_MAP).
+//   M  ph = 4: load m_hi = 0, m_v = d_v, m_diff = d_diff, m_e = d_e + 128, flags;
+//      ph = 5 .. 25: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
+//      m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
+//   G  ph = 26: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
+//   H  every edge: output registers corr, delta = corr - corr_prev, active, in_range, cfg_err
+// Latency: the inputs of a sample call t are reflected in the outputs after edge t+27 (L_MAP = 28)
+// and held until edge t+58.
 //
 // i_rst (synchronous, active high) is error_map::reset(): the pipeline's control and output
 // registers only, never the RAM. The data registers of the stages are not reset: their values are
@@ -66,12 +70,13 @@ module error_map (
     localparam integer W_OFF     = 39;
     localparam integer W_FRAC    = 20;
     localparam integer W_V       = 21;
-    localparam integer W_DIG     = 7;
     localparam integer W_DIFF    = 25;
-    localparam integer W_PP      = 32;
-    localparam integer W_S1      = 40;
-    localparam integer W_NUM     = 46;
-    localparam integer SH        = 28;
+    localparam integer W_MHI     = 26;
+    localparam integer W_ME      = 25;
+    localparam integer W_G       = 27;
+    localparam integer F         = 8;
+    localparam [4:0]   PH_LOAD   = 5'd4;
+    localparam [4:0]   PH_G      = 5'd26;
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
@@ -238,67 +243,59 @@ module error_map (
         end
     end
 
-    // ---- stage E: three partial products, 25 x 7 (digit as a non-negative 8-bit signed) --------
-    wire signed [W_DIG:0] dig0 = {1'b0, d_v[W_DIG-1:0]};
-    wire signed [W_DIG:0] dig1 = {1'b0, d_v[2*W_DIG-1:W_DIG]};
-    wire signed [W_DIG:0] dig2 = {1'b0, d_v[3*W_DIG-1:2*W_DIG]};
-    wire signed [W_PP:0]  pp0_w = d_diff * dig0;   // |pp| < 2^24 * 2^7: fits W_PP bits
-    wire signed [W_PP:0]  pp1_w = d_diff * dig1;
-    wire signed [W_PP:0]  pp2_w = d_diff * dig2;
-    reg signed [W_PP-1:0]   e_pp0, e_pp1, e_pp2;
-    reg signed [W_CORR-1:0] e_e;
-    reg                     e_act, e_inr, e_err;
+    // ---- phase counter: ph = 0 marks a sample call ----------------------------------------------
+    reg [4:0] ph;
     always @(posedge i_clk) begin
-        e_pp0 <= pp0_w[W_PP-1:0];
-        e_pp1 <= pp1_w[W_PP-1:0];
-        e_pp2 <= pp2_w[W_PP-1:0];
-        e_e   <= d_e;
-        e_inr <= d_inr;
+        if (i_rst) ph <= 5'd0;
+        else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
+    end
+
+    // ---- M: sequenced multiply d_diff * d_v, LSB first ------------------------------------------
+    reg signed [W_MHI-1:0]  m_hi;
+    reg                     m_b;
+    reg        [W_V-1:0]    m_v;
+    reg signed [W_DIFF-1:0] m_diff;
+    reg signed [W_ME-1:0]   m_e;
+    reg                     m_act, m_inr, m_err;
+    wire                    m_step = ph > PH_LOAD && ph < PH_G;
+    wire signed [W_MHI-1:0] m_add  = m_v[0] ? {m_diff[W_DIFF-1], m_diff} : {W_MHI{1'b0}};
+    wire signed [W_MHI-1:0] m_s    = m_hi + m_add;
+    always @(posedge i_clk) begin
+        if (ph == PH_LOAD) begin
+            m_hi   <= {W_MHI{1'b0}};
+            m_b    <= 1'b0;
+            m_v    <= d_v;
+            m_diff <= d_diff;
+            m_e    <= {d_e[W_CORR-1], d_e} + {{(W_ME-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            m_inr  <= d_inr;
+        end else if (m_step) begin
+            m_hi   <= m_s >>> 1;
+            m_b    <= m_s[0];
+            m_v    <= m_v >> 1;
+        end
         if (i_rst) begin
-            e_act <= 1'b0;
-            e_err <= 1'b0;
-        end else begin
-            e_act <= d_act;
-            e_err <= d_err;
+            m_act <= 1'b0;
+            m_err <= 1'b0;
+        end else if (ph == PH_LOAD) begin
+            m_act <= d_act;
+            m_err <= d_err;
         end
     end
 
-    // ---- stage F: two partial sums -------------------------------------------------------------
-    wire signed [W_S1-1:0]  pp0_x = {{(W_S1-W_PP){e_pp0[W_PP-1]}}, e_pp0};
-    wire signed [W_S1-1:0]  pp1_x = {{(W_S1-W_PP-W_DIG){e_pp1[W_PP-1]}}, e_pp1, {W_DIG{1'b0}}};
-    wire signed [W_NUM-1:0] e_x   = {{(W_NUM-W_CORR-K_MAX){e_e[W_CORR-1]}}, e_e, {K_MAX{1'b0}}};
-    wire signed [W_NUM-1:0] pp2_x = {{(W_NUM-W_PP-2*W_DIG){e_pp2[W_PP-1]}}, e_pp2, {(2*W_DIG){1'b0}}};
-    wire signed [W_NUM-1:0] half  = {{(W_NUM-SH){1'b0}}, 1'b1, {(SH-1){1'b0}}};
-    reg signed [W_S1-1:0]  f_s1;
-    reg signed [W_NUM-1:0] f_s2;
-    reg                    f_act, f_inr, f_err;
-    always @(posedge i_clk) begin
-        f_s1  <= pp0_x + pp1_x;
-        f_s2  <= e_x + pp2_x + half;
-        f_inr <= e_inr;
-        if (i_rst) begin
-            f_act <= 1'b0;
-            f_err <= 1'b0;
-        end else begin
-            f_act <= e_act;
-            f_err <= e_err;
-        end
-    end
-
-    // ---- stage G: numerator, fixed shift, activity gate ----------------------------------------
-    wire signed [W_NUM-1:0] num = {{(W_NUM-W_S1){f_s1[W_S1-1]}}, f_s1} + f_s2;
+    // ---- stage G: round the sample's product (ph = PH_G), held otherwise ----------------------------
+    wire signed [W_G-1:0] g_x = {m_hi, 1'b0} + {{(W_G-W_ME){m_e[W_ME-1]}}, m_e} + {{(W_G-1){1'b0}}, m_b};
     reg signed [W_C-1:0] g_corr;
     reg                  g_act, g_inr, g_err;
     always @(posedge i_clk) begin
-        g_inr <= f_inr;
+        if (ph == PH_G) g_inr <= m_inr;
         if (i_rst) begin
             g_corr <= {W_C{1'b0}};
             g_act  <= 1'b0;
             g_err  <= 1'b0;
-        end else begin
-            g_corr <= f_act ? num[SH+W_C-1:SH] : {W_C{1'b0}};
-            g_act  <= f_act;
-            g_err  <= f_err;
+        end else if (ph == PH_G) begin
+            g_corr <= m_act ? g_x[F+W_C-1:F] : {W_C{1'b0}};
+            g_act  <= m_act;
+            g_err  <= m_err;
         end
     end
 

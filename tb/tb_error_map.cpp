@@ -16,8 +16,9 @@
 //             and down, several tables (noise, extremes, exact half ties, ramp), several origins.
 // directed:   a flip never mixes banks (constant tables of different value, frac != 0); writes
 //             to the inactive bank never change the output; every invalid geometry gives cfg_err
-//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 8 calls
-//             (the output of call t + 7 belongs to the inputs of call t).
+//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 28 calls
+//             from a sample call (one in S_MAP = 32; the outputs hold in between). Every call of
+//             every part is also checked against the direct formula of the last published sample.
 #include <cstdio>
 #include <deque>
 #include <random>
@@ -31,10 +32,12 @@
 namespace {
 
 constexpr int kDepth = 1024;  // ERROR_MAP.md §2
-constexpr int kLat = 8;       // ERROR_MAP.md §6: inputs of call t -> output of call t + kLat - 1
+constexpr int kPeriod = 32;   // ERROR_MAP.md §6: one sample call in kPeriod (the first after reset)
+constexpr int kLat = 28;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
 constexpr int kNMax = 2047;   // largest value of the 11-bit n_points register
 static_assert(kDepth == lx::error_map_cfg::TBL_DEPTH && kDepth == golden::error_map::kDepth, "depth");
 static_assert(kLat == lx::error_map_cfg::L_MAP && kLat == golden::error_map::kLat, "latency");
+static_assert(kPeriod == lx::error_map_cfg::S_MAP && kPeriod == golden::error_map::kPeriod, "period");
 static_assert(kNMax == (1 << lx::error_map_cfg::W_N) - 1, "n_points register width");
 constexpr int32_t kWordMin = -(1 << 23);
 constexpr int32_t kWordMax = (1 << 23) - 1;
@@ -76,12 +79,54 @@ struct host_regs {
     int32_t data = 0;
 };
 
-// One hls model and one golden model driven with the same inputs; compares every output.
+// What the outputs must be once a sample call's result is published, from that call's inputs
+// (the tables before its write).
+struct expect_t {
+    bool active = false;
+    bool cfg_err = false;
+    int64_t corr = 0;
+    int where = 0;  // -1 below the table, 0 inside, +1 beyond
+};
+
+expect_t expected(const std::vector<int32_t>* shadow, int64_t p, bool homed, const host_regs& r) {
+    expect_t e;
+    const int b = r.bank_sel ? 1 : 0;
+    const geom& g = r.g[b];
+    e.cfg_err = r.map_en && !g.ok();
+    e.active = r.map_en && homed && g.ok();
+    if (e.active) {
+        e.corr = direct_corr(shadow[b], g, p);
+        const int64_t span = int64_t{g.n - 1} << g.k;
+        e.where = p < g.origin ? -1 : (p - g.origin > span ? 1 : 0);
+    }
+    return e;
+}
+
+void check_expect(tbu::result& res, const expect_t& e, const lx::error_map::out_t& o, const char* where, long t) {
+    res.expect(o.active == e.active && o.cfg_err == e.cfg_err && o.corr.to_int64() == e.corr &&
+                   o.clamped == (e.active && e.where != 0) && o.in_range == (e.active && e.where == 0),
+               [&] {
+                   return std::string(where) + " call " + std::to_string(t) + ": corr " +
+                          std::to_string(o.corr.to_int64()) + " want " + std::to_string(e.corr) + " (active " +
+                          std::to_string(o.active) + "/" + std::to_string(e.active) + ", cfg_err " +
+                          std::to_string(o.cfg_err) + "/" + std::to_string(e.cfg_err) + ", where " +
+                          std::to_string(e.where) + ")";
+               });
+}
+
+// One hls model and one golden model driven with the same inputs; compares every output with
+// golden and with the published expectation of the sample schedule (ERROR_MAP.md §4, §6): the
+// inputs of the calls n * kPeriod after construction, each published kLat - 1 calls later.
 struct dut {
     lx::error_map h;
     golden::error_map g;
     std::vector<int32_t> shadow[2];  // the tables as the test believes them to be
     int64_t sum_delta = 0;
+    long calls = 0;             // calls since construction
+    expect_t cur;               // what the outputs must be now
+    expect_t pend;              // the last sample's expectation, not yet published
+    long publish_at = -1;       // call index at which pend becomes cur
+    int64_t sample_p = 0;       // position of the last sample call
 
     dut() {
         shadow[0].assign(kDepth, 0);
@@ -107,9 +152,17 @@ struct dut {
         gr.addr = r.addr;
         hr.data = r.data;
         gr.data = r.data;
+        if (calls % kPeriod == 0) {  // a sample call: expectation from the tables before its write
+            pend = expected(shadow, p, homed, r);
+            publish_at = calls + kLat - 1;
+            sample_p = p;
+        }
         const lx::error_map::out_t ho = h.step(p, homed, hr);
         const golden::error_map::out go = g.step(p, homed, gr);
         if (r.we) shadow[r.bank_sel ? 0 : 1][static_cast<size_t>(r.addr)] = r.data;
+        if (calls == publish_at) cur = pend;
+        check_expect(res, cur, ho, where, t);
+        ++calls;
         sum_delta += ho.delta.to_int64();
         res.expect(ho.corr.to_int64() == go.corr && ho.delta.to_int64() == go.delta && ho.active == go.active &&
                        ho.in_range == go.in_range && ho.clamped == go.clamped && ho.cfg_err == go.cfg_err,
@@ -129,40 +182,6 @@ struct dut {
         return ho;
     }
 };
-
-// What the output of the next call must be, from this call's inputs (before its write).
-struct expect_t {
-    bool active = false;
-    bool cfg_err = false;
-    int64_t corr = 0;
-    int where = 0;  // -1 below the table, 0 inside, +1 beyond
-};
-
-expect_t expected(const dut& d, int64_t p, bool homed, const host_regs& r) {
-    expect_t e;
-    const int b = r.bank_sel ? 1 : 0;
-    const geom& g = r.g[b];
-    e.cfg_err = r.map_en && !g.ok();
-    e.active = r.map_en && homed && g.ok();
-    if (e.active) {
-        e.corr = direct_corr(d.shadow[b], g, p);
-        const int64_t span = int64_t{g.n - 1} << g.k;
-        e.where = p < g.origin ? -1 : (p - g.origin > span ? 1 : 0);
-    }
-    return e;
-}
-
-void check_expect(tbu::result& res, const expect_t& e, const lx::error_map::out_t& o, const char* where, long t) {
-    res.expect(o.active == e.active && o.cfg_err == e.cfg_err && o.corr.to_int64() == e.corr &&
-                   o.clamped == (e.active && e.where != 0) && o.in_range == (e.active && e.where == 0),
-               [&] {
-                   return std::string(where) + " call " + std::to_string(t) + ": corr " +
-                          std::to_string(o.corr.to_int64()) + " want " + std::to_string(e.corr) + " (active " +
-                          std::to_string(o.active) + "/" + std::to_string(e.active) + ", cfg_err " +
-                          std::to_string(o.cfg_err) + "/" + std::to_string(e.cfg_err) + ", where " +
-                          std::to_string(e.where) + ")";
-               });
-}
 
 int32_t clamp_word(int64_t v) { return static_cast<int32_t>(v < kWordMin ? kWordMin : (v > kWordMax ? kWordMax : v)); }
 
@@ -236,7 +255,6 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
         const geom* ag = &r.g[0];
         int64_t p = ag->origin + static_cast<int64_t>(rng() % 1000);
         int64_t v = 1;
-        std::deque<expect_t> pend(kLat - 1);  // expectations of the last kLat - 1 calls (reset: inactive)
         // host reload state machine
         std::vector<int32_t> next_tbl;
         int load_pos = -1;  // < 0: idle
@@ -299,18 +317,15 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
             if (p > hi && v >= 0) { v = -(v == 0 ? 1 : v); ++cov.reversals; }
             if (p < lo && v <= 0) { v = (v == 0 ? 1 : -v); ++cov.reversals; }
 
-            const expect_t e = expected(d, p, homed, r);
+            const bool published = d.calls == d.publish_at;
             const lx::error_map::out_t o = d.step(res, p, homed, r, "random", t);
-            const expect_t prev_e = pend.front();  // the inputs of call t - (kLat - 1)
-            pend.pop_front();
-            pend.push_back(e);
-            check_expect(res, prev_e, o, "random/direct", t);
+            const expect_t& pub = d.cur;  // checked against o by d.step
             ++cov.calls;
             if (o.active) ++cov.active; else ++cov.inactive;
             if (o.cfg_err) ++cov.cfg_err;
             if (o.in_range) ++cov.inside;
-            if (prev_e.active && e.where < 0) ++cov.below;
-            if (prev_e.active && e.where > 0) ++cov.beyond;
+            if (published && pub.active && pub.where < 0) ++cov.below;
+            if (published && pub.active && pub.where > 0) ++cov.beyond;
             const int64_t ad = o.delta.to_int64() < 0 ? -o.delta.to_int64() : o.delta.to_int64();
             if (ad > cov.max_abs_delta) cov.max_abs_delta = ad;
         }
@@ -358,29 +373,18 @@ void test_exhaustive(tbu::result& res, std::mt19937_64& rng, long& points) {
             r.g[0] = g;
             load_and_flip(res, d, r, tb, g, org, true);
             const int64_t span = 7 * 16;
-            std::deque<expect_t> pend;
             long t_call = 0;
             for (int dir = 1; dir >= -1; dir -= 2) {
                 for (int64_t j = 0; j <= span + 80; ++j) {
                     const int64_t x = dir > 0 ? org - 40 + j : org + span + 40 - j;
-                    const expect_t e = expected(d, x, true, r);
-                    const lx::error_map::out_t o = d.step(res, x, true, r, "exhaustive", t_call);
-                    if (static_cast<int>(pend.size()) == kLat - 1) {  // the inputs of call t - (kLat - 1)
-                        check_expect(res, pend.front(), o, "exhaustive/direct", t_call);
-                        pend.pop_front();
-                    }
-                    pend.push_back(e);
-                    ++t_call;
+                    // hold x until a sample call has taken it and its result is published
+                    while (d.calls % kPeriod != 0) d.step(res, x, true, r, "exhaustive", t_call++);
+                    for (int c = 0; c < kLat; ++c) d.step(res, x, true, r, "exhaustive", t_call++);
+                    res.expect(d.sample_p == x && d.cur.active, [&] {
+                        return "exhaustive: position " + std::to_string(x) + " not sampled";
+                    });
                     ++points;
                 }
-            }
-            // flush: the last kLat - 1 positions of the sweep (the table is not touched)
-            const int64_t x_end = org - 40;
-            while (!pend.empty()) {
-                const lx::error_map::out_t o = d.step(res, x_end, true, r, "exhaustive", t_call);
-                check_expect(res, pend.front(), o, "exhaustive/direct", t_call);
-                pend.pop_front();
-                ++t_call;
             }
         }
     }
@@ -396,25 +400,33 @@ void test_directed(tbu::result& res) {
         const int32_t A = 100 * 256 + 17, B = -250 * 256 + 3;
         load_and_flip(res, d, r, std::vector<int32_t>(64, A), g, 0, true);   // now bank 1 = A
         load_and_flip(res, d, r, std::vector<int32_t>(64, B), g, 0, true);   // now bank 0 = B
-        // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving.
+        // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving. Each
+        // published value is that of the bank selected in its sample call.
         const int64_t wantA = floordiv(A + 128, 256), wantB = floordiv(B + 128, 256);
-        std::deque<bool> sel_hist;  // bank_sel of the last kLat - 1 calls
-        for (long t = 0; t < 400; ++t) {
+        bool sample_sel = false;
+        long pub_at = -1;
+        int seenA = 0, seenB = 0;
+        for (long t = 0; t < 4000; ++t) {
             if (t % 5 == 0) r.bank_sel = !r.bank_sel;
             const int64_t x = 1000 + 3 + 7 * t % 4000;
+            if (d.calls % kPeriod == 0) {
+                sample_sel = r.bank_sel;
+                pub_at = d.calls + kLat - 1;
+            }
+            const bool pub = d.calls == pub_at;
             const lx::error_map::out_t o = d.step(res, x, true, r, "flip", t);
-            if (static_cast<int>(sel_hist.size()) == kLat - 1) {
-                const int64_t want = sel_hist.front() ? wantA : wantB;  // bank 1 holds A
-                sel_hist.pop_front();
+            if (pub) {
+                const int64_t want = sample_sel ? wantA : wantB;  // bank 1 holds A
+                (sample_sel ? seenA : seenB)++;
                 res.expect(o.corr.to_int64() == want, [&] {
                     return "flip call " + std::to_string(t) + ": corr " + std::to_string(o.corr.to_int64()) +
                            " want " + std::to_string(want);
                 });
             }
-            sel_hist.push_back(r.bank_sel);
         }
+        res.check(seenA > 10 && seenB > 10, "flip: both banks must be published");
     }
-    // 2. writes to the inactive bank never change the output; latency is 2 calls
+    // 2. writes to the inactive bank never change the output; latency is kLat calls from a sample
     {
         dut d;
         host_regs r;
@@ -425,16 +437,17 @@ void test_directed(tbu::result& res) {
         load_and_flip(res, d, r, t, g, -100000, false);  // not homed while loading
         const int64_t x = -5000 + 37 * 256 + 77;
         const int64_t want = direct_corr(t, g, x);
-        // homed rises in call 0 with p = x: corr appears in call kLat - 1, not before
+        while (d.calls % kPeriod != 0) d.step(res, x, false, r, "align", d.calls);
+        // homed rises in a sample call (c = 0) with p = x: corr appears in call kLat - 1, not before
         for (int c = 0; c < kLat - 1; ++c) {
             const lx::error_map::out_t o0 = d.step(res, x, true, r, "latency", c);
             res.check(o0.corr.to_int64() == 0 && !o0.active,
-                      "latency: corr appeared in call " + std::to_string(c) + " of the input");
+                      "latency: corr appeared in call " + std::to_string(c) + " after the sample");
         }
         const lx::error_map::out_t o1 = d.step(res, x, true, r, "latency", kLat - 1);
         res.check(o1.corr.to_int64() == want && o1.delta.to_int64() == want && o1.active,
                   "latency: corr " + std::to_string(o1.corr.to_int64()) + " want " + std::to_string(want) +
-                      " kLat - 1 calls after the input");
+                      " kLat - 1 calls after the sample");
         for (int a = 0; a < kDepth; ++a) {
             r.we = true;
             r.addr = a;
@@ -457,32 +470,34 @@ void test_directed(tbu::result& res) {
             r.g[0] = g;
             const int32_t v = 5000 * 256;
             load_and_flip(res, d, r, std::vector<int32_t>(16, v), g, 0, true);
-            for (int t = 0; t < kLat + 2; ++t) d.step(res, 300, true, r, "cfg", t);
+            for (int t = 0; t < kPeriod + kLat; ++t) d.step(res, 300, true, r, "cfg", t);
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
             const int cur = r.bank_sel ? 1 : 0;
             const std::string name = "invalid k=" + std::to_string(b.k) + " n=" + std::to_string(b.n);
             r.g[cur] = b;
-            // the bad geometry enters stage A in call c0; the output of call c0 + kLat - 1 is its
-            const int c0 = kLat + 2;
-            for (int t = c0; t < c0 + kLat - 1; ++t) {
-                const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", t);
+            // the bad geometry enters in a sample call (c = 0); the output of call kLat - 1 is its
+            for (int c = 0; c < kLat - 1; ++c) {
+                const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", c);
                 res.check(!q.cfg_err && q.corr.to_int64() == 5000, name + ": cfg_err / corr change too early");
             }
-            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", c0 + kLat - 1);
+            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", kLat - 1);
             res.check(o.cfg_err && !o.active && o.corr.to_int64() == 0 && o.delta.to_int64() == -5000,
                       name + ": no cfg_err / corr not 0 / delta not -5000 (delta " +
                           std::to_string(o.delta.to_int64()) + ")");
-            for (int t = c0 + kLat; t < c0 + kLat + 15; ++t) {
-                const lx::error_map::out_t q = d.step(res, 300 + t, true, r, "cfg", t);
+            for (int c = kLat; c < kLat + 3 * kPeriod; ++c) {
+                const lx::error_map::out_t q = d.step(res, 300 + c, true, r, "cfg", c);
                 res.check(q.cfg_err && q.corr.to_int64() == 0 && q.delta.to_int64() == 0, name + ": not held at 0");
             }
             r.map_en = false;  // disabled: no error flag
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
             lx::error_map::out_t q;
-            for (int t = 0; t < kLat; ++t) q = d.step(res, 300, true, r, "cfg-off", t);
+            for (int c = 0; c < kLat; ++c) q = d.step(res, 300, true, r, "cfg-off", c);
             res.check(!q.cfg_err && q.corr.to_int64() == 0, name + ": cfg_err while disabled");
             r.map_en = true;
             r.g[cur] = g;  // recovery
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
             lx::error_map::out_t w;
-            for (int t = 0; t < kLat; ++t) w = d.step(res, 300, true, r, "cfg-rec", t);
+            for (int c = 0; c < kLat; ++c) w = d.step(res, 300, true, r, "cfg-rec", c);
             res.check(!w.cfg_err && w.corr.to_int64() == 5000 && w.delta.to_int64() == 5000, name + ": no recovery");
         }
     }
