@@ -8,18 +8,19 @@
 //   A  off = p - origin (registered 39-bit subtract), geometry check, k, last, flags
 //   B  i = floor(off / 2^k) mod TBL_DEPTH, u = (off mod 2^k) * 2^(20-k), off < 0, off beyond
 //      every address (no compare: field selects of the registered offset)
-//   C  clamp to [0, last] (10-bit compare), the two reads: even RAM at (i+1)/2, odd RAM at i/2
-//      of the selected bank (T[i] and T[i+1] always lie in different RAMs: one read per RAM)
-//   D  e = even word, diff = odd word - even word, v = i odd ? 2^20 - u : u (no swap mux)
-//   M  (sample call t: calls t+4 .. t+25) load diff, v, e + 128; 21 steps of
+//   C  clamp to [0, last] (10-bit compare), the addresses: even RAM (i+1)/2, odd RAM i/2
+//   R  the two reads of the selected bank (T[i] and T[i+1] always lie in different RAMs: one read
+//      per RAM), and the delayed write into the other bank
+//   D  bank multiplexer: e = even word, o = odd word; v = i odd ? 2^20 - u : u (no swap mux)
+//   M  (sample call t: calls t+5 .. t+26) load diff = o - e, v, e + 128; 21 steps of
 //      s = hi + (v bit j ? diff : 0), hi = s >> 1 (LSB first, 26-bit adder)
-//   G  (call t+26) corr = floor((2 hi + e + 128 + last bit shifted out) / 2^8)
+//   G  (call t+27) corr = floor((2 hi + e + 128 + last bit shifted out) / 2^8)
 //      = floor((e 2^20 + diff v + 2^27) / 2^28), held until the next sample's G
 //   H  output registers: corr, delta = corr' - corr, flags (every call)
 //
 // Two banks, each two RAMs (even and odd words): the table write port always writes the bank that
-// is *not* selected by bank_sel in that call, delayed by two registers so that it is performed in
-// the same call as that call's reads (stage C) — into the other bank, so each RAM sees one access
+// is *not* selected by bank_sel in that call, delayed by three registers so that it is performed
+// in the same call as that call's reads (stage R) — into the other bank, so each RAM sees one access
 // per call (a read, or a write) and the reads of call t see exactly the writes of the calls before
 // t. Each bank has its own geometry (origin, spacing_log2, n_points); a flip of bank_sel switches
 // table and geometry together at one call boundary and a reload can never mix tables.
@@ -27,8 +28,8 @@
 // Widths (derived in error_map_cfg): table words 24 bits signed Q15.8 counts, offset 39 signed,
 // u 20 unsigned, v 21, diff 25 signed, multiplier accumulator 26 signed, corr 17 signed, delta 18.
 // Sample period S_MAP = 32 calls (phase counter 0 after reset: the first call after a reset is a
-// sample call); latency L_MAP = 28 calls — the inputs of sample call t are reflected in the
-// corr/delta returned by call t+27 and held until call t+58.
+// sample call); latency L_MAP = 29 calls — the inputs of sample call t are reflected in the
+// corr/delta returned by call t+28 and held until call t+59.
 #ifndef LASERAX_HLS_ERROR_MAP_H
 #define LASERAX_HLS_ERROR_MAP_H
 
@@ -45,7 +46,7 @@ struct error_map_cfg {
     static constexpr int K_MAX = 20;
     static constexpr int N_BANKS = 2;
     static constexpr int S_MAP = 32;        // calls per sample (a power of two: wrapping counter)
-    static constexpr int L_MAP = 28;        // sample call t -> outputs of call t + L_MAP - 1
+    static constexpr int L_MAP = 29;        // sample call t -> outputs of call t + L_MAP - 1
     // derived
     static constexpr int W_ADDR = clog2p1(TBL_DEPTH - 1);        // 10
     static constexpr int HALF_DEPTH = TBL_DEPTH / 2;             // 512 words per parity RAM
@@ -56,8 +57,8 @@ struct error_map_cfg {
     static constexpr int W_FRAC = K_MAX;                          // 20, u: frac in 2^-K_MAX units
     static constexpr int W_V = K_MAX + 1;                         // 21, v: 0 .. 2^K_MAX
     static constexpr int W_PHM = clog2p1(S_MAP - 1);              // 5, phase counter
-    static constexpr int PH_LOAD = 4;                             // stage D holds the sample
-    static constexpr int PH_G = PH_LOAD + 1 + W_V;                // 26: after the 21 steps
+    static constexpr int PH_LOAD = 5;                             // stage D holds the sample
+    static constexpr int PH_G = PH_LOAD + 1 + W_V;                // 27: after the 21 steps
     static constexpr int W_DIFF = W_CORR + 1;                     // 25, odd word - even word
     static constexpr int W_MHI = W_DIFF + 1;                      // 26, multiplier accumulator
     static constexpr int W_ME = W_CORR + 1;                       // 25, e + 2^(F-1)
@@ -130,19 +131,23 @@ public:
         }
         w1_ = wr_t{};
         w2_ = wr_t{};
+        w3_ = wr_t{};
         reset();
     }
 
     // Reset of the pipeline (not of the table RAM). The writes already in the write-port
     // registers belong to running calls: they are performed, never dropped (ERROR_MAP.md §4).
     void reset() {
+        write(w3_);
         write(w2_);
         write(w1_);
         w1_ = wr_t{};
         w2_ = wr_t{};
+        w3_ = wr_t{};
         a_ = st_a{};
         b_ = st_b{};
         c_ = st_c{};
+        rd_ = st_r{};
         d_ = st_d{};
         m_ = st_m{};
         g_ = st_g{};
@@ -176,7 +181,7 @@ public:
             m.hi = 0;
             m.b = false;
             m.v = d_.v;
-            m.diff = d_.diff;
+            m.diff = cfg::diff_t(d_.o) - cfg::diff_t(d_.e);
             m.e = cfg::me_t(d_.e) + cfg::me_t(1 << (cfg::F - 1));
             m.fl = d_.fl;
         } else if (ph > cfg::PH_LOAD && ph < cfg::PH_G) {
@@ -188,12 +193,26 @@ public:
 
         // ---- D: difference of the two words, orientation of the interval ----------------------
         st_d d;
-        d.e = c_.we;
-        d.diff = cfg::diff_t(c_.wo) - cfg::diff_t(c_.we);
-        d.v = c_.lsb ? cfg::v_t(cfg::v_t(1 << cfg::K_MAX) - cfg::v_t(c_.u)) : cfg::v_t(c_.u);
-        d.fl = c_.fl;
+        d.e = rd_.we;
+        d.o = rd_.wo;
+        d.v = rd_.lsb ? cfg::v_t(cfg::v_t(1 << cfg::K_MAX) - cfg::v_t(rd_.u)) : cfg::v_t(rd_.u);
+        d.fl = rd_.fl;
 
-        // ---- C: clamp, the two reads (one per RAM of the selected bank), delayed write ---------
+        // ---- R: the two reads (one per RAM of the selected bank), the delayed write ------------
+        st_r rd;
+        if (c_.bank) {
+            rd.we = tbl1e_[c_.ea.to_uint()];
+            rd.wo = tbl1o_[c_.oa.to_uint()];
+        } else {
+            rd.we = tbl0e_[c_.ea.to_uint()];
+            rd.wo = tbl0o_[c_.oa.to_uint()];
+        }
+        rd.u = c_.u;
+        rd.lsb = c_.lsb;
+        rd.fl = c_.fl;
+        write(w3_);  // the write of the same call as these reads: always the other bank
+
+        // ---- C: clamp, the two addresses (registered) --------------------------------------------
         st_c c;
         const bool above = !b_.neg && (b_.hi || b_.i >= b_.last);
         const cfg::addr_t i = b_.neg ? cfg::addr_t(0) : (above ? b_.last : b_.i);
@@ -201,16 +220,9 @@ public:
         c.lsb = (i & 1) != 0;
         c.fl = b_.fl;
         c.fl.inr = !b_.neg && (!above || (!b_.hi && b_.i == b_.last && b_.u == 0));
-        const cfg::haddr_t ea = cfg::haddr_t((uint<cfg::W_ADDR + 1>(i) + 1) >> 1);  // wraps at the end
-        const cfg::haddr_t oa = cfg::haddr_t(i >> 1);
-        if (b_.bank) {
-            c.we = tbl1e_[ea.to_uint()];
-            c.wo = tbl1o_[oa.to_uint()];
-        } else {
-            c.we = tbl0e_[ea.to_uint()];
-            c.wo = tbl0o_[oa.to_uint()];
-        }
-        write(w2_);  // the write of the same call as these reads: always the other bank
+        c.ea = cfg::haddr_t((uint<cfg::W_ADDR + 1>(i) + 1) >> 1);  // (i + 1) / 2, wraps at the end
+        c.oa = cfg::haddr_t(i >> 1);
+        c.bank = b_.bank;
 
         // ---- B: split the registered offset (field selects by k, no compare) -------------------
         st_b b;
@@ -237,6 +249,7 @@ public:
         a.fl.err = r.map_en && !geom_ok;
 
         // ---- write port: first register (the write goes to the bank not selected now) ---------
+        w3_ = w2_;
         w2_ = w1_;
         w1_.we = r.we;
         w1_.bank = !r.bank_sel;
@@ -246,6 +259,7 @@ public:
         a_ = a;
         b_ = b;
         c_ = c;
+        rd_ = rd;
         d_ = d;
         m_ = m;
         g_ = g;
@@ -278,14 +292,20 @@ private:
         flags_t fl;
     };
     struct st_c {
+        cfg::haddr_t ea = 0, oa = 0;  // even-RAM address (i + 1) / 2, odd-RAM address i / 2
+        cfg::frac_t u = 0;
+        bool lsb = false;
+        bool bank = false;
+        flags_t fl;
+    };
+    struct st_r {
         cfg::word_t we = 0, wo = 0;  // registered RAM outputs: even and odd word
         cfg::frac_t u = 0;
         bool lsb = false;
         flags_t fl;
     };
     struct st_d {
-        cfg::word_t e = 0;
-        cfg::diff_t diff = 0;
+        cfg::word_t e = 0, o = 0;  // even and odd word of the selected bank
         cfg::v_t v = 0;
         flags_t fl;
     };
@@ -326,10 +346,11 @@ private:
 #pragma HLS BIND_STORAGE variable = tbl1e_ type = ram_s2p impl = bram
     cfg::word_t tbl1o_[cfg::HALF_DEPTH];
 #pragma HLS BIND_STORAGE variable = tbl1o_ type = ram_s2p impl = bram
-    wr_t w1_, w2_;  // write port delayed to stage C
+    wr_t w1_, w2_, w3_;  // write port delayed to stage R
     st_a a_;
     st_b b_;
     st_c c_;
+    st_r rd_;
     st_d d_;
     st_m m_;
     st_g g_;

@@ -6,7 +6,7 @@
 // spacing_log2 k, n_points); each bank is two RAMs of 512 x 24 bits, the even and the odd words
 // (tbl0e/tbl0o, tbl1e/tbl1o: the four arrays of hls/error_map.h), so the two points T[i], T[i+1]
 // of an interval are one read of each RAM of the selected bank. The write port always writes the
-// bank that is not selected in that call, delayed by two registers (w1, w2) so that it is done in
+// bank that is not selected in that call, delayed by three registers (w1..w3) so that it is done in
 // the same clock as that call's reads: each RAM sees one access per clock (read or write) and a
 // reload can never mix tables. iCE40: each RAM is three SB_RAM40_4K (512 x 8), 12 in all; the
 // RAMs start at 0 (initial contents), as the C++ tables.
@@ -14,23 +14,25 @@
 // The inputs are sampled once every S_MAP = 32 calls (phase counter ph, 0 after reset: the calls
 // with ph = 0); stages A .. D run every call (one rising edge = one call of error_map::step(),
 // stage X of call t at edge t + (X - A)), the multiplier takes the sample's operands from D:
-//   A  a_off = p - origin (39 bits), geometry check, k, last, flags, bank; w1 = the write port
+//   A  a_off = p - origin (39 bits, carry-select halves), geometry check, k, last, flags, bank;
+//      w1 = the write port
 //   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
-//   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; registered RAM reads at (i+1)/2
-//      (even) and i/2 (odd) of the selected bank; the write of w2 (other bank)
-//   D  bank multiplexer, d_e = even word, d_diff = odd - even (25 bits), d_v = i odd ? 2^20 - u : u
-//   M  ph = 4: load m_hi = 0, m_v = d_v, m_diff = d_diff, m_e = d_e + 128, flags;
-//      ph = 5 .. 25: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
+//   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; the RAM addresses (i+1)/2 (even)
+//      and i/2 (odd) registered
+//   R  registered RAM reads of the selected bank; the write of w3 (other bank)
+//   D  bank multiplexer, d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
+//   M  ph = 5: load m_hi = 0, m_v = d_v, m_diff = d_o - d_e (25 bits), m_e = d_e + 128, flags;
+//      ph = 6 .. 26: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
 //      m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
-//   G  ph = 26: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
+//   G  ph = 27: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
 //   H  every edge: output registers corr, delta = corr - corr_prev, active, in_range, cfg_err
-// Latency: the inputs of a sample call t are reflected in the outputs after edge t+27 (L_MAP = 28)
-// and held until edge t+58.
+// Latency: the inputs of a sample call t are reflected in the outputs after edge t+28 (L_MAP = 29)
+// and held until edge t+59.
 //
 // i_rst (synchronous, active high) is error_map::reset(): the pipeline's control and output
 // registers only, never the RAM. The data registers of the stages are not reset: their values are
 // only used while the stage's act flag (reset to 0) is 1. During a reset call the write port takes
-// no new write (the C++ step() is not called in the safe state) but the writes already in w1/w2
+// no new write (the C++ step() is not called in the safe state) but the writes already in w1..w3
 // still reach the RAM (the C++ reset() performs them): a write of a running call is never lost.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -75,16 +77,20 @@ module error_map (
     localparam integer W_ME      = 25;
     localparam integer W_G       = 27;
     localparam integer F         = 8;
-    localparam [4:0]   PH_LOAD   = 5'd4;
-    localparam [4:0]   PH_G      = 5'd26;
+    localparam [4:0]   PH_LOAD   = 5'd5;
+    localparam [4:0]   PH_G      = 5'd27;
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
     // ---- table RAMs (not reset): even and odd words of each bank -----------------------------
-    reg signed [W_CORR-1:0] tbl0e [0:TBL_DEPTH/2-1];
-    reg signed [W_CORR-1:0] tbl0o [0:TBL_DEPTH/2-1];
-    reg signed [W_CORR-1:0] tbl1e [0:TBL_DEPTH/2-1];
-    reg signed [W_CORR-1:0] tbl1o [0:TBL_DEPTH/2-1];
+    // A RAM is read only while its bank is selected and written only while it is not (the write
+    // port is delayed to the clock of the reads, see above): a read and a write never meet in one
+    // RAM in one clock. no_rw_check tells Yosys so; without it, it adds an address comparator and
+    // a bypass multiplexer for a collision that cannot happen (measured: 2 ns of the read-address path).
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0e [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0o [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1e [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1o [0:TBL_DEPTH/2-1];
     // Power-up contents 0, as the C++ tables (block RAM initial contents on the iCE40). At the
     // held end of a table (i = n - 1, u = 0) the word of the other RAM is read but multiplied by
     // 0 (or cancelled, ERROR_MAP.md §4); it may lie beyond the loaded words, so it must not be X.
@@ -102,22 +108,38 @@ module error_map (
     wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
     wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
     wire        [W_N-1:0]     g_n      = i_bank_sel ? i_n1 : i_n0;
-    wire                      geom_ok  = g_k >= K_MIN && g_k <= K_MAX && g_n >= 11'd2 && g_n <= TBL_DEPTH;
+    // geometry check of each bank as plain logic (no carry chains), then the bank multiplexer:
+    // 4 <= k <= 20 and 2 <= n <= 1024
+    wire k0_ok = (i_k0[4] ? (i_k0[3:0] <= 4'd4) : (i_k0[3:2] != 2'b00));
+    wire k1_ok = (i_k1[4] ? (i_k1[3:0] <= 4'd4) : (i_k1[3:2] != 2'b00));
+    wire n0_ok = i_n0[10] ? (i_n0[9:0] == 10'd0) : (i_n0[9:1] != 9'd0);
+    wire n1_ok = i_n1[10] ? (i_n1[9:0] == 10'd0) : (i_n1[9:1] != 9'd0);
+    wire                      geom_ok  = i_bank_sel ? (k1_ok && n1_ok) : (k0_ok && n0_ok);
     wire        [W_N-1:0]     n_m1     = g_n - 11'd1;
 
     reg signed [W_OFF-1:0]  a_off;
     reg        [4:0]        a_k;
     reg        [W_ADDR-1:0] a_last;
     reg                     a_bank, a_act, a_err;
-    // write port, delayed to stage C
-    reg                     w1_we, w1_bank, w2_we, w2_bank;
-    reg        [W_ADDR-1:0] w1_addr, w2_addr;
-    reg signed [W_CORR-1:0] w1_data, w2_data;
+    // write port, delayed to stage R
+    reg                     w1_we, w1_bank, w2_we, w2_bank, w3_we, w3_bank;
+    reg        [W_ADDR-1:0] w1_addr, w2_addr, w3_addr;
+    reg signed [W_CORR-1:0] w1_data, w2_data, w3_data;
 
+    // p - origin as a carry-select subtract: the low 20 bits and both candidates of the high 19
+    // bits (borrow 0 / 1) side by side, then the select (two 20-bit carry chains instead of one of 39)
+    localparam integer W_LO = 20;
+    wire [W_LO:0]           off_lo  = {1'b0, i_p[W_LO-1:0]} - {1'b0, g_origin[W_LO-1:0]};  // [W_LO]: borrow
+    wire [W_OFF-W_LO-1:0]   p_hi    = {i_p[37], i_p[37:W_LO]};
+    wire [W_OFF-W_LO-1:0]   o_hi    = {g_origin[37], g_origin[37:W_LO]};
+    wire [W_OFF-W_LO-1:0]   off_hi0 = p_hi - o_hi;
+    wire [W_OFF-W_LO-1:0]   off_hi1 = p_hi + ~o_hi;   // p_hi - o_hi - 1
     always @(posedge i_clk) begin
-        a_off  <= {i_p[37], i_p} - {g_origin[37], g_origin};
-        a_k    <= geom_ok ? g_k : K_MIN;
-        a_last <= geom_ok ? n_m1[W_ADDR-1:0] : {W_ADDR{1'b0}};
+        a_off  <= {off_lo[W_LO] ? off_hi1 : off_hi0, off_lo[W_LO-1:0]};
+        // with an invalid geometry the sample is inactive (a_act = 0) and k, last are not used:
+        // they are taken raw here (the C++ model substitutes K_MIN / 0 to keep its shifts defined)
+        a_k    <= g_k;
+        a_last <= n_m1[W_ADDR-1:0];
         a_bank <= i_bank_sel;
         w1_bank <= !i_bank_sel;
         w1_addr <= i_addr;
@@ -126,6 +148,10 @@ module error_map (
         w2_bank <= w1_bank;
         w2_addr <= w1_addr;
         w2_data <= w1_data;
+        w3_we   <= w2_we;
+        w3_bank <= w2_bank;
+        w3_addr <= w2_addr;
+        w3_data <= w2_data;
         if (i_rst) begin
             a_act <= 1'b0;
             a_err <= 1'b0;
@@ -147,18 +173,22 @@ module error_map (
             assign sor[gj] = sor[gj+1] | a_off[gj];
         end
     endgenerate
-    wire [5:0]        hi_pos = {1'b0, a_k} + 6'd10;
+    wire [31:0]       sor_hi = {{(32-W_OFF+W_ADDR){1'b0}}, sor[W_OFF-1:W_ADDR]};  // [k] = |a_off[37:k+10]
     wire [W_OFF-1:0]  off_u  = a_off;
     wire [W_OFF-1:0]  off_sh = off_u >> a_k;
     wire [W_FRAC-1:0] u_sh   = off_u[W_FRAC-1:0] << (K_MAX - a_k);
+    // even-RAM address (last + 1) / 2 of the clamp candidate last (that of i is formed in C)
+    wire [W_ADDR:0]   last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
 
     reg                     b_neg, b_hi, b_bank, b_act, b_err;
     reg        [W_ADDR-1:0] b_i, b_last;
+    reg        [W_HADDR-1:0] b_laste;             // (last + 1) / 2
     reg        [W_FRAC-1:0] b_u;
     always @(posedge i_clk) begin
         b_neg  <= a_off[W_OFF-1];
-        b_hi   <= sor[hi_pos];
+        b_hi   <= sor_hi[a_k];
         b_i    <= off_sh[W_ADDR-1:0];
+        b_laste <= last_p1[W_HADDR:1];
         b_u    <= u_sh;
         b_last <= a_last;
         b_bank <= a_bank;
@@ -171,44 +201,21 @@ module error_map (
         end
     end
 
-    // ---- stage C: clamp, one registered read of each RAM of the selected bank, the write ------
+    // ---- stage C: clamp, the two RAM addresses (registered) --------------------------------------
     wire                above  = !b_neg && (b_hi || b_i >= b_last);
     wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? b_last : b_i;
     wire [W_FRAC-1:0]   cu     = (b_neg || above) ? {W_FRAC{1'b0}} : b_u;
     wire                cinr   = !b_neg && (!above || (!b_hi && b_i == b_last && b_u == {W_FRAC{1'b0}}));
-    wire [W_ADDR:0]     ci_p1  = {1'b0, ci} + {{W_ADDR{1'b0}}, 1'b1};
-    wire [W_HADDR-1:0]  ea     = ci_p1[W_HADDR:1];   // wraps to 0 at i = 1023 (word not used)
+    wire [W_ADDR:0]     bi_p1  = {1'b0, b_i} + {{W_ADDR{1'b0}}, 1'b1};   // beside the compare
+    wire [W_HADDR-1:0]  ea     = b_neg ? {W_HADDR{1'b0}} : above ? b_laste : bi_p1[W_HADDR:1];  // (i+1)/2
     wire [W_HADDR-1:0]  oa     = ci[W_ADDR-1:1];
 
-    reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+    reg [W_HADDR-1:0] c_ea, c_oa;
+    reg               c_lsb, c_bank, c_act, c_inr, c_err;
+    reg [W_FRAC-1:0]  c_u;
     always @(posedge i_clk) begin
-        if (!b_bank) begin
-            rd0e <= tbl0e[ea];
-            rd0o <= tbl0o[oa];
-        end
-    end
-    always @(posedge i_clk) begin
-        if (b_bank) begin
-            rd1e <= tbl1e[ea];
-            rd1o <= tbl1o[oa];
-        end
-    end
-    always @(posedge i_clk) begin
-        if (w2_we && !w2_bank && !w2_addr[0]) tbl0e[w2_addr[W_ADDR-1:1]] <= w2_data;
-    end
-    always @(posedge i_clk) begin
-        if (w2_we && !w2_bank && w2_addr[0]) tbl0o[w2_addr[W_ADDR-1:1]] <= w2_data;
-    end
-    always @(posedge i_clk) begin
-        if (w2_we && w2_bank && !w2_addr[0]) tbl1e[w2_addr[W_ADDR-1:1]] <= w2_data;
-    end
-    always @(posedge i_clk) begin
-        if (w2_we && w2_bank && w2_addr[0]) tbl1o[w2_addr[W_ADDR-1:1]] <= w2_data;
-    end
-
-    reg              c_lsb, c_bank, c_act, c_inr, c_err;
-    reg [W_FRAC-1:0] c_u;
-    always @(posedge i_clk) begin
+        c_ea   <= ea;
+        c_oa   <= oa;
         c_lsb  <= ci[0];
         c_u    <= cu;
         c_bank <= b_bank;
@@ -222,24 +229,66 @@ module error_map (
         end
     end
 
-    // ---- stage D: bank multiplexer, difference, orientation ----------------------------------
-    wire signed [W_CORR-1:0] we_m = c_bank ? rd1e : rd0e;
-    wire signed [W_CORR-1:0] wo_m = c_bank ? rd1o : rd0o;
-    reg signed [W_CORR-1:0] d_e;
-    reg signed [W_DIFF-1:0] d_diff;
+    // ---- stage R: one registered read of each RAM of the selected bank, the delayed write ------
+    reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+    always @(posedge i_clk) begin
+        if (!c_bank) begin
+            rd0e <= tbl0e[c_ea];
+            rd0o <= tbl0o[c_oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (c_bank) begin
+            rd1e <= tbl1e[c_ea];
+            rd1o <= tbl1o[c_oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && !w3_bank && !w3_addr[0]) tbl0e[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && !w3_bank && w3_addr[0]) tbl0o[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && w3_bank && !w3_addr[0]) tbl1e[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && w3_bank && w3_addr[0]) tbl1o[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+
+    reg              r_lsb, r_bank, r_act, r_inr, r_err;
+    reg [W_FRAC-1:0] r_u;
+    always @(posedge i_clk) begin
+        r_lsb  <= c_lsb;
+        r_u    <= c_u;
+        r_bank <= c_bank;
+        r_inr  <= c_inr;
+        if (i_rst) begin
+            r_act <= 1'b0;
+            r_err <= 1'b0;
+        end else begin
+            r_act <= c_act;
+            r_err <= c_err;
+        end
+    end
+
+    // ---- stage D: bank multiplexer, orientation (the difference is formed by the M load) ------
+    wire signed [W_CORR-1:0] we_m = r_bank ? rd1e : rd0e;
+    wire signed [W_CORR-1:0] wo_m = r_bank ? rd1o : rd0o;
+    reg signed [W_CORR-1:0] d_e, d_o;
     reg        [W_V-1:0]    d_v;
     reg                     d_act, d_inr, d_err;
     always @(posedge i_clk) begin
         d_e    <= we_m;
-        d_diff <= {wo_m[W_CORR-1], wo_m} - {we_m[W_CORR-1], we_m};
-        d_v    <= c_lsb ? ({1'b1, {W_FRAC{1'b0}}} - {1'b0, c_u}) : {1'b0, c_u};
-        d_inr  <= c_inr;
+        d_o    <= wo_m;
+        d_v    <= r_lsb ? ({1'b1, {W_FRAC{1'b0}}} - {1'b0, r_u}) : {1'b0, r_u};
+        d_inr  <= r_inr;
         if (i_rst) begin
             d_act <= 1'b0;
             d_err <= 1'b0;
         end else begin
-            d_act <= c_act;
-            d_err <= c_err;
+            d_act <= r_act;
+            d_err <= r_err;
         end
     end
 
@@ -250,7 +299,7 @@ module error_map (
         else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
     end
 
-    // ---- M: sequenced multiply d_diff * d_v, LSB first ------------------------------------------
+    // ---- M: sequenced multiply (d_o - d_e) * d_v, LSB first ------------------------------------------
     reg signed [W_MHI-1:0]  m_hi;
     reg                     m_b;
     reg        [W_V-1:0]    m_v;
@@ -265,7 +314,7 @@ module error_map (
             m_hi   <= {W_MHI{1'b0}};
             m_b    <= 1'b0;
             m_v    <= d_v;
-            m_diff <= d_diff;
+            m_diff <= {d_o[W_CORR-1], d_o} - {d_e[W_CORR-1], d_e};
             m_e    <= {d_e[W_CORR-1], d_e} + {{(W_ME-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
             m_inr  <= d_inr;
         end else if (m_step) begin

@@ -16,7 +16,7 @@
 //             and down, several tables (noise, extremes, exact half ties, ramp), several origins.
 // directed:   a flip never mixes banks (constant tables of different value, frac != 0); writes
 //             to the inactive bank never change the output; every invalid geometry gives cfg_err
-//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 28 calls
+//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 29 calls
 //             from a sample call (one in S_MAP = 32; the outputs hold in between). Every call of
 //             every part is also checked against the direct formula of the last published sample.
 #include <cstdio>
@@ -33,7 +33,7 @@ namespace {
 
 constexpr int kDepth = 1024;  // ERROR_MAP.md §2
 constexpr int kPeriod = 32;   // ERROR_MAP.md §6: one sample call in kPeriod (the first after reset)
-constexpr int kLat = 28;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
+constexpr int kLat = 29;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
 constexpr int kNMax = 2047;   // largest value of the 11-bit n_points register
 static_assert(kDepth == lx::error_map_cfg::TBL_DEPTH && kDepth == golden::error_map::kDepth, "depth");
 static_assert(kLat == lx::error_map_cfg::L_MAP && kLat == golden::error_map::kLat, "latency");
