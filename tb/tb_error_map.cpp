@@ -20,7 +20,6 @@
 //             from a sample call (one in S_MAP = 32; the outputs hold in between). Every call of
 //             every part is also checked against the direct formula of the last published sample.
 #include <cstdio>
-#include <deque>
 #include <random>
 #include <string>
 #include <vector>
