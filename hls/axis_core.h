@@ -93,7 +93,7 @@ struct axis_out {
     bool rep_mark = false;
     // error map (docs/ERROR_MAP.md §8)
     bool map_cfg_err = false;               // map_en with an invalid geometry of the selected bank
-    error_map_cfg::corr_t corr = 0;     // correction of the comp of call t-2, output counts
+    error_map_cfg::corr_t corr = 0;     // correction of the last sampled comp (sampled in call t-28), output counts
     error_map_cfg::cdelta_t map_delta = 0;  // corr(t) - corr(t-1), added to the pacer input
 };
 
@@ -187,7 +187,7 @@ public:
         const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta joins the multiplier delta at the
-        // pacer input (2 calls of map latency, DESIGN §4.7)
+        // pacer input (L_MAP = 29 calls of map latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
         const delta_t pdelta = delta_t(mul_q_.delta + emap_q_.delta);
         const output_pacer::out_t pac = pac_.step(pdelta, regs.pace_m, regs.backlog_thr, regs.clear);

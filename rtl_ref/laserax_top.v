@@ -65,12 +65,12 @@ module laserax_top #(
     input  wire               i_bank_sel,       // active bank; the write port writes the other
     input  wire signed [37:0] i_map_origin0,    // bank 0: position of point 0, comp coordinates
     input  wire [4:0]         i_map_k0,         // bank 0: spacing 2^k counts, 4..20
-    input  wire [11:0]        i_map_n0,         // bank 0: points, 2..2048
+    input  wire [10:0]        i_map_n0,         // bank 0: points, 2..1024
     input  wire signed [37:0] i_map_origin1,
     input  wire [4:0]         i_map_k1,
-    input  wire [11:0]        i_map_n1,
+    input  wire [10:0]        i_map_n1,
     input  wire               i_map_we,
-    input  wire [10:0]        i_map_addr,
+    input  wire [9:0]         i_map_addr,
     input  wire signed [23:0] i_map_data,       // Q15.8 output counts
     // outputs
     output wire signed [17:0] o_sin,
@@ -213,7 +213,7 @@ module laserax_top #(
     wire [11:0]        rep_d;
 
     // error map: uncorrected comp and rephase homed status of the previous call (the blocks'
-    // output registers); 2 calls of latency
+    // output registers); a sample every 32 calls, 29 calls of latency (docs/ERROR_MAP.md §6)
     wire signed [16:0] map_corr;
     wire signed [17:0] map_delta;
     wire               map_active, map_in_range, map_clamped, map_cfg_err;

@@ -619,7 +619,7 @@ int main(int argc, char** argv) {
         for (long long t = 0; t < samples / 10 + 5; ++t) {
             lxt::map_table tb;
             tb.spacing_log2 = static_cast<int>(unii(4, 20));
-            const int npts = static_cast<int>(t % 7 == 0 ? (t % 2 ? 2 : 2048) : unii(2, 300));
+            const int npts = static_cast<int>(t % 7 == 0 ? (t % 2 ? 2 : lx::error_map_cfg::TBL_DEPTH) : unii(2, 300));
             tb.origin = (t % 11 == 0) ? (t % 2 ? rm::width_max(rm::kRegs[rm::idx::map_origin0])
                                                : rm::width_min(rm::kRegs[rm::idx::map_origin0]))
                                       : unii(-(int64_t(1) << 36), int64_t(1) << 36);
@@ -774,7 +774,7 @@ int main(int argc, char** argv) {
         lxt::map_table back;
         lxt::reg_image bad_geom;
         bad_geom.set(rm::idx::map_k1, 2);
-        res.check(!lxt::map_from_image(bad_geom, 1, std::vector<int32_t>(2048, 0), lxt::map_units::counts, &back, &err),
+        res.check(!lxt::map_from_image(bad_geom, 1, std::vector<int32_t>(lx::error_map_cfg::TBL_DEPTH, 0), lxt::map_units::counts, &back, &err),
                   "map_from_image accepted an invalid geometry");
 
         const auto bad_dds = [&](const char* what, int period, int amp, int mark_len, int dac_width, const char* word) {
