@@ -54,6 +54,8 @@ fuzz: deps
 bench: build
 	@test -x $(BUILD_DIR)/bench || { echo "make bench: $(BUILD_DIR)/bench was not built (no tools/bench.cpp yet?)" >&2; exit 1; }
 	$(BUILD_DIR)/bench
+	@if command -v valgrind >/dev/null; then bash scripts/bench_ipc.sh $(BUILD_DIR)/bench; \
+	 else echo "make bench: valgrind missing (make deps): no instructions-per-clock figures"; fi
 
 vectors: build
 	@test -x $(BUILD_DIR)/laserax || { echo "make vectors: $(BUILD_DIR)/laserax was not built (no tools/laserax.cpp yet?)" >&2; exit 1; }

@@ -51,7 +51,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     last_period_ = regs.period;
     was_running_ = running;
     if (!running) {
-        // safe state: every block and every inter-block register (including the t-2 delay of
+        // safe state: every block and every inter-block register (including the t-3 delay of
         // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
         reset();
         o.cfg_err = true;
@@ -87,13 +87,13 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     if (clip) dac_clip_st_ = true;
     o.dac_clip_st = dac_clip_st_;
 
-    // digital outputs from the rephase output of call t-2: index = out_pos mod 4 (true modulo),
+    // digital outputs from the rephase output of call t-3: index = out_pos mod 4 (true modulo),
     // 0->(0,0), 1->(1,0), 2->(1,1), 3->(0,1)
-    const int64_t qi = ((rep_q2_.out_pos % 4) + 4) % 4;
+    const int64_t qi = ((rep_q3_.out_pos % 4) + 4) % 4;
     o.qa = qi == 1 || qi == 2;
     o.qb = qi == 2 || qi == 3;
-    o.qz = rep_q2_.mark;
-    o.ref_mark = rep_q2_.mark;
+    o.qz = rep_q3_.mark;
+    o.ref_mark = rep_q3_.mark;
 
     o.cfg_err = false;
     o.stage = rep_o.stage;
@@ -133,6 +133,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     mul_q_ = mul_o;
     pac_q_ = pac_o;
     emap_q_ = emap_o;
+    rep_q3_ = rep_q2_;
     rep_q2_ = rep_q_;
     rep_q_ = rep_o;
     return o;

@@ -11,7 +11,7 @@
 //   rep.step(pac_q.pstep, swf_q.f, swf_q.valid, rehome of this call, unhome = dec_q.lerr)
 //   dds.step(rep_q.ostep)
 // sin/cos: the DDS outputs of this call; qa, qb (quadrature of out_pos mod 4), qz and ref_mark
-// (= rephase mark) from the rephase outputs of call t-2. While !config_ok every block and every
+// (= rephase mark) from the rephase outputs of call t-3. While !config_ok every block and every
 // inter-block register is reset in each call and the outputs are the safe state.
 #pragma once
 #include <cmath>
@@ -107,7 +107,8 @@ private:
     output_pacer::out pac_q_{};
     error_map::out emap_q_{};
     rephase::out rep_q_{};   // rephase output of call t-1
-    rephase::out rep_q2_{};  // rephase output of call t-2 (qa, qb, qz, ref_mark)
+    rephase::out rep_q2_{};  // rephase output of call t-2
+    rephase::out rep_q3_{};  // rephase output of call t-3 (qa, qb, qz, ref_mark: DESIGN 4.7)
     int64_t last_period_ = 0;    // period register of the previous call
     uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
     int64_t offset_held_ = 0;                // comp_offset in force

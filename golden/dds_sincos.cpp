@@ -44,18 +44,20 @@ void dds_sincos::reset() { *this = dds_sincos{}; }
 
 dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
     const int64_t P = period;
+    sin_q_ = s1_;  // the output stage: the codes of the previous call
+    cos_q_ = c1_;
     if (P > 0) {
         // outputs from the phase before this call's update. Reading: amplitude and P of this
         // call; ph is reduced mod the current P (only matters if P changed while running).
         const int64_t k = mod(ph_, P);
         const long double amp = static_cast<long double>(amplitude);
-        sin_q_ = rha(amp * sincos_turn(k, P, false));
-        cos_q_ = rha(amp * sincos_turn(k, P, true));
+        s1_ = rha(amp * sincos_turn(k, P, false));
+        c1_ = rha(amp * sincos_turn(k, P, true));
         ph_ = mod(ph_ + ostep, P);
     } else {
         // invalid configuration (never reached through axis_chain): hold, no division by 0
-        sin_q_ = 0;
-        cos_q_ = 0;
+        s1_ = 0;
+        c1_ = 0;
         ph_ = 0;
     }
     return out{sin_q_, cos_q_};

@@ -1,8 +1,10 @@
 // golden/dds_sincos.h — golden model of DESIGN.md 4.6 (dds_sincos).
 //
 // Definition: S(ph) = rha(amp * sin(2*pi*ph/P)), C(ph) = rha(amp * cos(2*pi*ph/P)), rha =
-// round half away from zero (std::llround). The outputs of a call come from the phase before
-// the call's update; then ph' = (ph + ostep) mod P (true modulo). Reset: outputs 0/0, ph = 0.
+// round half away from zero (std::llround). The outputs of a call are the codes computed in the
+// previous call (s1, c1: the read stage); the call computes s1, c1 from the phase before its
+// update, with its P and amp; then ph' = (ph + ostep) mod P (true modulo). An ostep at call t
+// moves the outputs at call t+2. Reset: outputs and s1, c1 0/0, ph = 0.
 //
 // Computed directly with long double sin/cos over the full circle (no quarter-wave table, no
 // quadrant logic). Accuracy: the long double argument and sin/cos are within a few 1e-19 of
@@ -26,6 +28,8 @@ public:
 
 private:
     int64_t ph_ = 0;       // phase in [0, P)
+    int64_t s1_ = 0;       // codes of the read stage (reset 0/0)
+    int64_t c1_ = 0;
     int64_t sin_q_ = 0;    // output registers (reset 0/0)
     int64_t cos_q_ = 0;
 };

@@ -12,7 +12,10 @@ error_map::error_map() {
 }
 
 void error_map::reset() {
+    phase_ = 0;
     pending_ = out{};
+    due_ = -1;
+    cur_ = out{};
     corr_ = 0;
 }
 
@@ -38,29 +41,37 @@ long double error_map::interp(const std::vector<int32_t>& tbl, const error_map_g
 }
 
 error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
-    // output of this call: the value computed from the previous call's inputs
-    out o = pending_;
+    // output of this call: the last published sample result (the one of call t - (kLat - 1)
+    // is published in this call)
+    if (due_ == 0) cur_ = pending_;
+    if (due_ >= 0) --due_;
+    out o = cur_;
     o.delta = o.corr - corr_;
     corr_ = o.corr;
+    const bool sample = phase_ == 0;
+    phase_ = (phase_ + 1) % kPeriod;
 
-    // this call's inputs, delivered by the next call
+    // a sample call's inputs, published kLat - 1 calls later
     const int b = r.bank_sel ? 1 : 0;
     const error_map_geom& g = r.geom[b];
     out n;
     const bool ok = geom_ok(g);
     n.cfg_err = r.map_en && !ok;
     n.active = r.map_en && homed && ok;
-    if (n.active) {
+    if (n.active && sample) {
         bool inr = false;
         const long double c = interp(tbl_[b], g, p, &inr);
         n.corr = static_cast<int64_t>(std::floor(c + 0.5L));  // floor(c + 1/2): exact (see .h)
         n.in_range = inr;
         n.clamped = !inr;
     }
-    pending_ = n;
+    if (sample) {
+        pending_ = n;
+        due_ = kLat - 2;  // published by call t + kLat - 1
+    }
 
-    // Reading: the write port of a call acts after that call's reads and only on the bank not
-    // selected in the call, so it can never change what the call reads.
+    // Reading: the reads of a call see every write of the earlier calls; the write port of a
+    // call acts after that call's reads and only on the bank not selected in the call.
     if (r.we) tbl_[1 - b][static_cast<size_t>(r.addr) % kDepth] = r.data;
     return o;
 }

@@ -7,8 +7,10 @@
 //            T[n-1] / 256                                 x > o + (n-1) s
 //            (T[i] + (T[i+1] - T[i]) * (x - o - i s) / s) / 256, i = floor((x - o) / s), otherwise
 // (at x = o + (n-1) s the last point itself), evaluated in long double and rounded to
-// corr = floor(c + 1/2). The value returned by call t belongs to the inputs of call t-1
-// (2-call latency); it is 0 when that call was not active (map_en && homed && valid geometry of
+// corr = floor(c + 1/2). Only the inputs of the sample calls are used: the first call after a
+// reset and every kPeriod-th after it (S_MAP = 32); the value of sample call t is returned by
+// calls t + kLat - 1 .. (L_MAP = 29, ERROR_MAP.md §6) until the next one is published, and
+// before the first publication the outputs are 0 / inactive; it is 0 when that call was not active (map_en && homed && valid geometry of
 // the bank selected in that call). delta = corr(t) - corr(t-1).
 //
 // Exactness: every table value is an integer times 2^-8 with |T| < 2^23, (x - o - i s) is an
@@ -26,7 +28,7 @@ namespace golden {
 struct error_map_geom {
     int64_t origin = 0;
     int spacing_log2 = 10;
-    int n_points = 2048;
+    int n_points = 1024;
 };
 
 struct error_map_regs {
@@ -34,13 +36,15 @@ struct error_map_regs {
     bool bank_sel = false;
     error_map_geom geom[2];
     bool we = false;        // writes the bank not selected in this call
-    int addr = 0;           // 0..2047
+    int addr = 0;           // 0..kDepth-1
     int32_t data = 0;       // Q15.8 counts, 24-bit signed range
 };
 
 class error_map {
 public:
-    static constexpr int kDepth = 2048;
+    static constexpr int kDepth = 1024;  // points per bank (ERROR_MAP.md §2)
+    static constexpr int kPeriod = 32;   // S_MAP: one sample call in kPeriod
+    static constexpr int kLat = 29;      // L_MAP: sample call t -> outputs of calls t + kLat - 1 ..
     static constexpr int kFrac = 8;
 
     struct out {
@@ -62,7 +66,10 @@ public:
 
 private:
     std::vector<int32_t> tbl_[2];
-    out pending_;       // result for the inputs of the previous call
+    long phase_ = 0;           // calls since reset, modulo kPeriod
+    out pending_;              // result of the last sample call, not yet published
+    long due_ = -1;            // calls until pending_ is published (-1: nothing pending)
+    out cur_;                  // published result
     int64_t corr_ = 0;  // corr returned by the previous call
 };
 

@@ -8,7 +8,8 @@ namespace golden {
 void input_filter::reset() { *this = input_filter{}; }
 
 input_filter::out input_filter::step(bool pin, int64_t n) {
-    const int64_t need = std::max<int64_t>(n, 1);  // N = 0 and N = 1 are the same
+    const int64_t need = std::max<int64_t>(n_prev_, 1);  // N(t-1); N = 0 and N = 1 are the same
+    n_prev_ = n;
     bool glitch = false;
     if (calls_ >= 2) {
         const bool x = pin_m2_;  // x(t) = pin(t-2)

@@ -2,8 +2,9 @@
 //
 // Written from the 4.1 "Definition (golden)": with x(t) = pin(t-2) (two-flop synchroniser),
 // the output at call t takes the value x(t) once x has differed from the previous output on
-// max(N,1) consecutive calls ending at t; the first sample x(2) = pin(0) is loaded unfiltered
-// and `valid` is 1 from call index 2 on (calls counted from 0 after reset).
+// max(N(t-1),1) consecutive calls ending at t (N(t-1): the filter length of the previous call);
+// the first sample x(2) = pin(0) is loaded unfiltered and `valid` is 1 from call index 2 on
+// (calls counted from 0 after reset).
 //
 // The model keeps an explicit pin history and the length of the current run of "x differs
 // from the output"; it has no fixed-width counter (the filter length n is used as given;
@@ -31,6 +32,7 @@ private:
     bool f_ = false;
     bool valid_ = false;
     int64_t run_ = 0;     // consecutive calls (ending at the previous call) with x != f
+    int64_t n_prev_ = 0;  // N(t-1); first used at call index 3, set at every call
 };
 
 }  // namespace golden

@@ -57,12 +57,15 @@ quad_decoder::out quad_decoder::step(bool a, bool b, bool lerr, int64_t glitch_n
 
     // Overspeed: spacing = number of calls from the previous counted step to this one
     // (DESIGN: since + 1 with since reset to 65535, i.e. the first step is never overspeed;
-    // the 16-bit saturation is irrelevant because min_spacing <= 65535 (W_SPACING)).
+    // the 16-bit saturation is irrelevant because min_spacing <= 65535 (W_SPACING)), compared
+    // with min_spacing of the previous call (DESIGN 4.2: a write acts one call later).
     bool ovs = false;
+    const int64_t ms = ms_prev_;
+    ms_prev_ = min_spacing;
     if (stp != 0) {
-        if (have_last_step_ && min_spacing > 0) {
+        if (have_last_step_ && ms > 0) {
             const int64_t spacing = calls_ - last_step_call_;
-            ovs = spacing < min_spacing;
+            ovs = spacing < ms;
         }
         have_last_step_ = true;
         last_step_call_ = calls_;

@@ -36,6 +36,7 @@ private:
     int64_t calls_ = 0;              // call index since reset
     bool have_last_step_ = false;    // a step has been counted since reset
     int64_t last_step_call_ = 0;     // call index of the last counted step
+    int64_t ms_prev_ = 0;            // min_spacing of the previous call (0 after reset: no step yet)
     int64_t raw_count_ = 0;          // always kept in [-2^31, 2^31)
     int err_cnt_ = 0;
     bool illegal_st_ = false, ovs_st_ = false, lerr_alarm_ = false, glitch_st_ = false;

@@ -4,8 +4,8 @@
 //
 // One call of step() is one clock. Between two blocks there is exactly one register stage: a
 // block consumes the outputs its upstream block returned at the previous call (the *_q members).
-// qa/qb/qz/ref_mark take the rephase outputs of two calls ago so that they change in the same
-// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
+// qa/qb/qz/ref_mark take the rephase outputs of three calls ago so that they change in the same
+// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1, DESIGN 4.7).
 //
 // A class rather than a free function so that a testbench (or a gantry model) can instantiate
 // several axes; hls/laserax_top.cpp wraps one static instance as the synthesis top.
@@ -93,7 +93,7 @@ struct axis_out {
     bool rep_mark = false;
     // error map (docs/ERROR_MAP.md §8)
     bool map_cfg_err = false;               // map_en with an invalid geometry of the selected bank
-    error_map_cfg::corr_t corr = 0;     // correction of the comp of call t-2, output counts
+    error_map_cfg::corr_t corr = 0;     // correction of the last sampled comp (sampled in call t-28), output counts
     error_map_cfg::cdelta_t map_delta = 0;  // corr(t) - corr(t-1), added to the pacer input
 };
 
@@ -150,6 +150,7 @@ public:
         pac_q_ = output_pacer::out_t{};
         rep_q_ = rephase::out_t{};
         rep_q2_ = rephase::out_t{};
+        rep_q3_ = rephase::out_t{};
         emap_q_ = error_map::out_t{};
     }
 
@@ -186,7 +187,7 @@ public:
         const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta joins the multiplier delta at the
-        // pacer input (2 calls of map latency, DESIGN §4.7)
+        // pacer input (L_MAP = 29 calls of map latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
         const delta_t pdelta = delta_t(mul_q_.delta + emap_q_.delta);
         const output_pacer::out_t pac = pac_.step(pdelta, regs.pace_m, regs.backlog_thr, regs.clear);
@@ -203,9 +204,9 @@ public:
         if (regs.clear) dac_clip_st_ = false;
         if (clip) dac_clip_st_ = true;
         o.dac_clip_st = dac_clip_st_;
-        quad_levels(rep_q2_.out_pos, o.qa, o.qb);
-        o.qz = rep_q2_.mark;
-        o.ref_mark = rep_q2_.mark;
+        quad_levels(rep_q3_.out_pos, o.qa, o.qb);
+        o.qz = rep_q3_.mark;
+        o.ref_mark = rep_q3_.mark;
         o.cfg_err = false;
         o.stage = rep.stage;
         o.homed = rep.homed;
@@ -242,6 +243,7 @@ public:
         mul_q_ = mul;
         pac_q_ = pac;
         emap_q_ = emap;
+        rep_q3_ = rep_q2_;
         rep_q2_ = rep_q_;
         rep_q_ = rep;
         return o;
@@ -259,7 +261,7 @@ private:
     quad_decoder::out_t dec_q_;
     pulse_multiplier::out_t mul_q_;
     output_pacer::out_t pac_q_;
-    rephase::out_t rep_q_, rep_q2_;
+    rephase::out_t rep_q_, rep_q2_, rep_q3_;  // rephase outputs of calls t-1, t-2, t-3
     error_map::out_t emap_q_;
     period_t period_q_ = 0;  // period register of the previous call
     ratio_t ratio_h_ = axis_core_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)

@@ -17,8 +17,14 @@
 // loaded through the table port; the RAM powers up with the P = 256, amp = 32767 table
 // (hls/dds_table_default.h). Round-half-away makes the four quadrants exact mirrors.
 //
-// Latency: the outputs of a call come from the phase before the call (registered table read);
-// ostep at call t moves the outputs at call t+1.
+// Latency: two stages (DESIGN §4.6): the codes of the phase before a call are formed in that
+// call from the registered table read (s1_, c1_) and leave through the output registers in the
+// next call; ostep at call t moves the outputs at call t+2.
+// Hardware form (DESIGN §4.6): the RAM is read one call early, at the address of the next phase,
+// so the mirror address T[P/4 - r] of a call's codes is formed with the period of the previous
+// call (qtr_prev_). The period only changes through the safe state in axis_core (which resets this
+// block), so this is visible only to a caller that changes the period of a running dds_sincos,
+// as the rtl_ref stress vectors do.
 #ifndef LASERAX_HLS_DDS_SINCOS_H
 #define LASERAX_HLS_DDS_SINCOS_H
 
@@ -35,6 +41,7 @@ struct dds_sincos_cfg {
     using r_t = uint<W_R>;
     using amp_t = uint<W_AMP>;
     using quad_t = uint<2>;
+    static_assert((TBL_DEPTH & (TBL_DEPTH - 1)) == 0, "the RAM address is the low bits of r");
 };
 
 class dds_sincos {
@@ -51,6 +58,9 @@ public:
     void reset() {
         q_ = 0;
         r_ = 0;
+        qtr_prev_ = 0;  // not read: r is 0 in the first call after a reset
+        s1_ = 0;
+        c1_ = 0;
         sin_ = 0;
         cos_ = 0;
     }
@@ -61,14 +71,21 @@ public:
 
     out_t step(step_t ostep, period_t period, cfg::amp_t amp) {
         const cfg::r_t quarter = period >> 2;
-        const cfg::r_t r_mirror = quarter - r_;  // 1..P/4
-        const dac_t t_dir = dac_t(tbl_[r_.to_uint()]);  // r < P/4 <= 1024
-        const dac_t t_mir = (r_ == 0) ? dac_t(amp) : dac_t(tbl_[r_mirror.to_uint()]);
+        const cfg::r_t r_mirror = qtr_prev_ - r_;  // 1..P/4 of the previous call (r < that P/4)
+        // r < P/4 <= 1024; the address is the low W_TBL_ADDR bits, as in the RAM (a period that
+        // shrinks under a running block can take r past P/4: never out of the array)
+        const unsigned amask = cfg::TBL_DEPTH - 1;
+        const dac_t t_dir = dac_t(tbl_[r_.to_uint() & amask]);
+        const dac_t t_mir = (r_ == 0) ? dac_t(amp) : dac_t(tbl_[r_mirror.to_uint() & amask]);
+        // output stage: the codes of the previous call
+        sin_ = s1_;
+        cos_ = c1_;
+        // read stage: the codes of the phase before this call
         switch (q_.to_uint()) {
-            case 0: sin_ = t_dir; cos_ = t_mir; break;
-            case 1: sin_ = t_mir; cos_ = -t_dir; break;
-            case 2: sin_ = -t_dir; cos_ = -t_mir; break;
-            default: sin_ = -t_mir; cos_ = t_dir; break;
+            case 0: s1_ = t_dir; c1_ = t_mir; break;
+            case 1: s1_ = t_mir; c1_ = -t_dir; break;
+            case 2: s1_ = -t_dir; c1_ = -t_mir; break;
+            default: s1_ = -t_mir; c1_ = t_dir; break;
         }
         // position-in-period counter
         if (ostep > 0) {
@@ -86,6 +103,7 @@ public:
                 r_ = r_ - 1;
             }
         }
+        qtr_prev_ = quarter;
         out_t o;
         o.sin = sin_;
         o.cos = cos_;
@@ -95,7 +113,9 @@ public:
 private:
     cfg::quad_t q_;
     cfg::r_t r_;
-    dac_t sin_, cos_;
+    cfg::r_t qtr_prev_;  // P/4 of the previous call: the mirror address of this call's codes
+    dac_t s1_, c1_;    // read stage: codes of the phase before the call
+    dac_t sin_, cos_;  // output registers
     tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
 #pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
 };

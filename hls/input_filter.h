@@ -6,8 +6,11 @@
 // holds a real sample; that sample is loaded into the output unfiltered. `glitch` pulses in the
 // call where the input returns to the output level after differing for 1..N-1 calls, so every
 // suppressed pulse is reported.
+// The pass decision is a register (`ready_`, DESIGN §4.1): the comparison of the counter with the
+// filter length is made one call early, with that call's N, so the filtered level is one gate after
+// registers (a write of N takes effect one call later).
 //
-// Resources: 3 flip-flops, a W_CNT-bit counter, a 2-bit fill counter, one comparator.
+// Resources: 4 flip-flops, a W_CNT-bit counter, a 2-bit fill counter, one comparator.
 #ifndef LASERAX_HLS_INPUT_FILTER_H
 #define LASERAX_HLS_INPUT_FILTER_H
 
@@ -43,6 +46,7 @@ public:
         valid_ = false;
         cnt_ = 0;
         fill_ = 0;
+        ready_ = false;
     }
 
     out_t step(bool pin, cnt_t n) {
@@ -56,17 +60,16 @@ public:
             }
         } else if (s2_ == f_) {
             cnt_ = 0;
+        } else if (ready_) {
+            f_ = s2_;
+            cnt_ = 0;
         } else {
-            // N = 0 and N = 1 both mean "accept after one differing sample".
-            const uint<W_CNT + 1> need = (n == 0) ? uint<W_CNT + 1>(1) : uint<W_CNT + 1>(n);
-            const uint<W_CNT + 1> seen = uint<W_CNT + 1>(cnt_) + 1;
-            if (seen >= need) {
-                f_ = s2_;
-                cnt_ = 0;
-            } else {
-                cnt_ = seen;
-            }
+            cnt_ = cnt_ + 1;  // cnt + 1 < max(N(t-1), 1) <= 2^W_CNT - 1: fits
         }
+        // pass decision of the next call, with this call's N (N = 0 and N = 1 both mean "accept
+        // after one differing sample")
+        const uint<W_CNT + 1> need = (n == 0) ? uint<W_CNT + 1>(1) : uint<W_CNT + 1>(n);
+        ready_ = uint<W_CNT + 1>(cnt_) + 1 >= need;
         s2_ = s1_;
         s1_ = pin;
         out_t o;
@@ -78,6 +81,7 @@ public:
 
 private:
     bool s1_, s2_, f_, valid_;
+    bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
     cnt_t cnt_;
     typename cfg::fill_t fill_;
 };

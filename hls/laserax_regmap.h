@@ -143,12 +143,12 @@ constexpr int MAP_K0_WIDTH = 5;
 constexpr int MAP_K0_WORDS = 1;
 constexpr bool MAP_K0_SIGNED = false;
 constexpr long long MAP_K0_RESET = 10LL;
-// map_n0: 0xD8, 12 bits unsigned, rw, reset 2048
+// map_n0: 0xD8, 11 bits unsigned, rw, reset 1024
 constexpr unsigned MAP_N0_OFFSET = 0xD8;
-constexpr int MAP_N0_WIDTH = 12;
+constexpr int MAP_N0_WIDTH = 11;
 constexpr int MAP_N0_WORDS = 1;
 constexpr bool MAP_N0_SIGNED = false;
-constexpr long long MAP_N0_RESET = 2048LL;
+constexpr long long MAP_N0_RESET = 1024LL;
 // map_origin1: 0xE0, 38 bits signed, rw, reset 0
 constexpr unsigned MAP_ORIGIN1_OFFSET = 0xE0;
 constexpr int MAP_ORIGIN1_WIDTH = 38;
@@ -161,21 +161,21 @@ constexpr int MAP_K1_WIDTH = 5;
 constexpr int MAP_K1_WORDS = 1;
 constexpr bool MAP_K1_SIGNED = false;
 constexpr long long MAP_K1_RESET = 10LL;
-// map_n1: 0xF8, 12 bits unsigned, rw, reset 2048
+// map_n1: 0xF8, 11 bits unsigned, rw, reset 1024
 constexpr unsigned MAP_N1_OFFSET = 0xF8;
-constexpr int MAP_N1_WIDTH = 12;
+constexpr int MAP_N1_WIDTH = 11;
 constexpr int MAP_N1_WORDS = 1;
 constexpr bool MAP_N1_SIGNED = false;
-constexpr long long MAP_N1_RESET = 2048LL;
+constexpr long long MAP_N1_RESET = 1024LL;
 // map_we: 0x100, 1 bit unsigned, port, reset 0
 constexpr unsigned MAP_WE_OFFSET = 0x100;
 constexpr int MAP_WE_WIDTH = 1;
 constexpr int MAP_WE_WORDS = 1;
 constexpr bool MAP_WE_SIGNED = false;
 constexpr long long MAP_WE_RESET = 0LL;
-// map_addr: 0x108, 11 bits unsigned, port, reset 0
+// map_addr: 0x108, 10 bits unsigned, port, reset 0
 constexpr unsigned MAP_ADDR_OFFSET = 0x108;
-constexpr int MAP_ADDR_WIDTH = 11;
+constexpr int MAP_ADDR_WIDTH = 10;
 constexpr int MAP_ADDR_WORDS = 1;
 constexpr bool MAP_ADDR_SIGNED = false;
 constexpr long long MAP_ADDR_RESET = 0LL;
@@ -262,17 +262,17 @@ static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[0].origin)>(MAP_ORIGIN0_WIDTH
 static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[0].spacing_log2)>(MAP_K0_WIDTH, MAP_K0_SIGNED),
               "lx::axis_regs::emap.geom[0].spacing_log2 is not lx::uint<5> (register map_k0)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[0].n_points)>(MAP_N0_WIDTH, MAP_N0_SIGNED),
-              "lx::axis_regs::emap.geom[0].n_points is not lx::uint<12> (register map_n0)");
+              "lx::axis_regs::emap.geom[0].n_points is not lx::uint<11> (register map_n0)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[1].origin)>(MAP_ORIGIN1_WIDTH, MAP_ORIGIN1_SIGNED),
               "lx::axis_regs::emap.geom[1].origin is not lx::sint<38> (register map_origin1)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[1].spacing_log2)>(MAP_K1_WIDTH, MAP_K1_SIGNED),
               "lx::axis_regs::emap.geom[1].spacing_log2 is not lx::uint<5> (register map_k1)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.geom[1].n_points)>(MAP_N1_WIDTH, MAP_N1_SIGNED),
-              "lx::axis_regs::emap.geom[1].n_points is not lx::uint<12> (register map_n1)");
+              "lx::axis_regs::emap.geom[1].n_points is not lx::uint<11> (register map_n1)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.we)>(MAP_WE_WIDTH, MAP_WE_SIGNED),
               "lx::axis_regs::emap.we is not bool (register map_we)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.addr)>(MAP_ADDR_WIDTH, MAP_ADDR_SIGNED),
-              "lx::axis_regs::emap.addr is not lx::uint<11> (register map_addr)");
+              "lx::axis_regs::emap.addr is not lx::uint<10> (register map_addr)");
 static_assert(member_is<LX_REGMAP_MEMBER(emap.data)>(MAP_DATA_WIDTH, MAP_DATA_SIGNED),
               "lx::axis_regs::emap.data is not lx::sint<24> (register map_data)");
 static_assert(member_is<LX_REGMAP_MEMBER(comp_sync)>(COMP_SYNC_WIDTH, COMP_SYNC_SIGNED),

@@ -57,6 +57,7 @@ public:
         raw_ = 0;
         err_cnt_ = 0;
         since_ = cfg::SINCE_MAX;
+        close_ = false;  // since + 1 = 65536 is never below min_spacing
         illegal_st_ = false;
         ovs_st_ = false;
         lerr_alarm_ = false;
@@ -96,14 +97,15 @@ public:
         pb_ = rb.f;
         if (!primed_) primed_ = ra.valid;
 
-        bool ovs = false;
+        // overspeed: close_ (since + 1 < min_spacing) was decided in the previous call, with that
+        // call's min_spacing (DESIGN 4.2: the comparator is a register, off the step path)
+        const bool ovs = step != 0 && close_;
         if (step != 0) {
-            const uint<cfg::W_SPACING + 1> spacing = uint<cfg::W_SPACING + 1>(since_) + 1;
-            ovs = spacing < min_spacing;
             since_ = 0;
         } else if (since_ != cfg::SINCE_MAX) {
             since_ = since_ + 1;
         }
+        close_ = uint<cfg::W_SPACING + 1>(since_) + 1 < min_spacing;
         if (illegal) {
             illegal_st_ = true;
             if (err_cnt_ != cfg::ERRCNT_MAX) err_cnt_ = err_cnt_ + 1;
@@ -133,6 +135,7 @@ private:
     raw_t raw_;
     cfg::errcnt_t err_cnt_;
     cfg::spacing_t since_;
+    bool close_;  // a step in the next call is closer than min_spacing (of this call)
     bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
 };
 

@@ -2,23 +2,38 @@
 //
 // A correction table over equally spaced positions, linear interpolation between points, the
 // correction delivered as whole output counts (corr) and as the change since the previous call
-// (delta). Two banks of 2048 x 24-bit words (two RAMs, tbl0 and tbl1, as the two arrays of
-// hls/error_map.h) with their own geometry (origin, spacing_log2 k, n_points); the write port
-// always writes the bank that is not selected in that call, so a reload can never mix tables and
-// each RAM sees at most two accesses per edge (the two reads, or the write).
+// (delta). Two banks of TBL_DEPTH = 1024 x 24-bit words with their own geometry (origin,
+// spacing_log2 k, n_points); each bank is two RAMs of 512 x 24 bits, the even and the odd words
+// (tbl0e/tbl0o, tbl1e/tbl1o: the four arrays of hls/error_map.h), so the two points T[i], T[i+1]
+// of an interval are one read of each RAM of the selected bank. The write port always writes the
+// bank that is not selected in that call, delayed by three registers (w1..w3) so that it is done in
+// the same clock as that call's reads: each RAM sees one access per clock (read or write) and a
+// reload can never mix tables. iCE40: each RAM is three SB_RAM40_4K (512 x 8), 12 in all; the
+// RAMs start at 0 (initial contents), as the C++ tables.
 //
-// Timing (one rising edge = one call of error_map::step()):
-//   stage A (edge t):   off = p - origin, clamp to [0, (n-1) 2^k], i = off >> k,
-//                       frac = off mod 2^k; the two RAM reads T[i], T[i+1] of the selected bank,
-//                       frac, k and the flags are registered (t0_q, t1_q, frac_q, k_q, act_q,
-//                       inr_q, err_q).
-//   stage B (edge t+1): num = T[i] 2^k + (T[i+1] - T[i]) frac (46 bits, exact),
-//                       corr = act ? floor(num / 2^(8+k) + 1/2) : 0, delta = corr - corr_prev:
-//                       output registers.
-// Latency: p presented before edge t is reflected in the outputs after edge t+1 (2 calls).
+// The inputs are sampled once every S_MAP = 32 calls (phase counter ph, 0 after reset: the calls
+// with ph = 0); stages A .. D run every call (one rising edge = one call of error_map::step(),
+// stage X of call t at edge t + (X - A)), the multiplier takes the sample's operands from D:
+//   A  a_off = p - origin (39 bits, carry-select halves), geometry check, k, last, flags, bank;
+//      w1 = the write port
+//   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
+//   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; the RAM addresses (i+1)/2 (even)
+//      and i/2 (odd) registered
+//   R  registered RAM reads of the selected bank; the write of w3 (other bank)
+//   D  bank multiplexer, d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
+//   M  ph = 5: load m_hi = 0, m_v = d_v, m_diff = d_o - d_e (25 bits), m_e = d_e + 128, flags;
+//      ph = 6 .. 26: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
+//      m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
+//   G  ph = 27: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
+//   H  every edge: output registers corr, delta = corr - corr_prev, active, in_range, cfg_err
+// Latency: the inputs of a sample call t are reflected in the outputs after edge t+28 (L_MAP = 29)
+// and held until edge t+59.
 //
-// i_rst (synchronous, active high) is error_map::reset(): the pipeline only, never the RAM. The
-// write port is disabled in a reset call (the C++ step() is not called in the safe state).
+// i_rst (synchronous, active high) is error_map::reset(): the pipeline's control and output
+// registers only, never the RAM. The data registers of the stages are not reset: their values are
+// only used while the stage's act flag (reset to 0) is 1. During a reset call the write port takes
+// no new write (the C++ step() is not called in the safe state) but the writes already in w1..w3
+// still reach the RAM (the C++ reset() performs them): a write of a running call is never lost.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -31,12 +46,12 @@ module error_map (
     input  wire               i_bank_sel,  // active bank of this call
     input  wire signed [37:0] i_origin0,   // bank 0 geometry
     input  wire [4:0]         i_k0,
-    input  wire [11:0]        i_n0,
+    input  wire [10:0]        i_n0,
     input  wire signed [37:0] i_origin1,   // bank 1 geometry
     input  wire [4:0]         i_k1,
-    input  wire [11:0]        i_n1,
+    input  wire [10:0]        i_n1,
     input  wire               i_we,        // table write port: writes bank !bank_sel
-    input  wire [10:0]        i_addr,
+    input  wire [9:0]         i_addr,
     input  wire signed [23:0] i_data,      // Q15.8 output counts
     output wire signed [16:0] o_corr,
     output wire signed [17:0] o_delta,
@@ -47,121 +62,309 @@ module error_map (
 );
 
     // ---- fixed widths (hls: error_map_cfg) ---------------------------------------------------
-    localparam integer TBL_DEPTH = 2048;
+    localparam integer TBL_DEPTH = 1024;
     localparam integer W_CORR    = 24;
-    localparam integer F         = 8;
     localparam [4:0]   K_MIN     = 5'd4;
     localparam [4:0]   K_MAX     = 5'd20;
-    localparam integer W_ADDR    = 11;
+    localparam integer W_ADDR    = 10;
+    localparam integer W_HADDR   = 9;
+    localparam integer W_N       = 11;
     localparam integer W_OFF     = 39;
     localparam integer W_FRAC    = 20;
-    localparam integer W_NUM     = 46;
+    localparam integer W_V       = 21;
+    localparam integer W_DIFF    = 25;
+    localparam integer W_MHI     = 26;
+    localparam integer W_ME      = 25;
+    localparam integer W_G       = 27;
+    localparam integer F         = 8;
+    localparam [4:0]   PH_LOAD   = 5'd5;
+    localparam [4:0]   PH_G      = 5'd27;
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
-    // ---- table RAM (not reset) ---------------------------------------------------------------
-    reg signed [W_CORR-1:0] tbl0 [0:TBL_DEPTH-1];   // bank 0
-    reg signed [W_CORR-1:0] tbl1 [0:TBL_DEPTH-1];   // bank 1
-
-    // ---- registers ---------------------------------------------------------------------------
-    wire signed [W_CORR-1:0]  t0_q, t1_q;   // T[i], T[i+1] (registered RAM outputs, bank mux)
-    reg        [W_FRAC-1:0]   frac_q;
-    reg        [4:0]          k_q;
-    reg                       act_q, inr_q, err_q;
-    reg signed [W_C-1:0]      corr_q;       // output corr (= corr of the previous call's output)
-    reg signed [W_CDELTA-1:0] delta_q;
-    reg                       active_oq, inr_oq, err_oq;
-
-    // ---- stage B: interpolation of the stage A registers -------------------------------------
-    wire signed [W_CORR:0]    diff    = {t1_q[W_CORR-1], t1_q} - {t0_q[W_CORR-1], t0_q};
-    wire signed [W_FRAC:0]    frac_s  = {1'b0, frac_q};
-    wire signed [W_NUM-1:0]   t0_x    = {{(W_NUM-W_CORR){t0_q[W_CORR-1]}}, t0_q};
-    wire signed [W_NUM-1:0]   prod    = diff * frac_s;
-    wire signed [W_NUM-1:0]   num     = (t0_x <<< k_q) + prod;
-    wire        [5:0]         sh      = 6'd8 + {1'b0, k_q};
-    wire signed [W_NUM-1:0]   half    = {{(W_NUM-1){1'b0}}, 1'b1} <<< (sh - 6'd1);
-    wire signed [W_NUM-1:0]   rnd     = (num + half) >>> sh;
-    wire signed [W_C-1:0]     c_next  = act_q ? rnd[W_C-1:0] : {W_C{1'b0}};
-    wire signed [W_CDELTA-1:0] d_next = {c_next[W_C-1], c_next} - {corr_q[W_C-1], corr_q};
-
-    // ---- stage A: geometry of the selected bank, clamp, addresses ----------------------------
-    wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
-    wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
-    wire        [11:0]        g_n      = i_bank_sel ? i_n1 : i_n0;
-    wire                      geom_ok  = g_k >= K_MIN && g_k <= K_MAX && g_n >= 12'd2 && g_n <= 12'd2048;
-    wire        [4:0]         k        = geom_ok ? g_k : K_MIN;
-    wire        [11:0]        n_m1     = g_n - 12'd1;
-    wire        [W_ADDR-1:0]  last_i   = geom_ok ? n_m1[W_ADDR-1:0] : {W_ADDR{1'b0}};
-    wire signed [W_OFF-1:0]   off      = {i_p[37], i_p} - {g_origin[37], g_origin};
-    wire signed [W_OFF-1:0]   last_off = {{(W_OFF-W_ADDR){1'b0}}, last_i} <<< k;
-    wire signed [W_OFF-1:0]   off_sh   = off >>> k;
-    wire signed [W_OFF-1:0]   mask     = ({{(W_OFF-1){1'b0}}, 1'b1} <<< k) - {{(W_OFF-1){1'b0}}, 1'b1};
-    wire signed [W_OFF-1:0]   off_fr   = off & mask;
-    wire                      below    = off < 0;
-    wire                      above    = !below && off >= last_off;
-    wire        [W_ADDR-1:0]  i0       = below ? {W_ADDR{1'b0}} : above ? last_i : off_sh[W_ADDR-1:0];
-    wire        [W_FRAC-1:0]  frac     = (below || above) ? {W_FRAC{1'b0}} : off_fr[W_FRAC-1:0];
-    wire                      inr      = below ? 1'b0 : above ? (off == last_off) : 1'b1;
-    wire        [W_ADDR-1:0]  i1       = (i0 == last_i) ? i0 : i0 + {{(W_ADDR-1){1'b0}}, 1'b1};
-
-    // RAMs: two registered reads of the selected bank, one write of the other bank
-    always @(posedge i_clk) begin
-        if (!i_rst && i_we && i_bank_sel) tbl0[i_addr] <= i_data;
-    end
-    always @(posedge i_clk) begin
-        if (!i_rst && i_we && !i_bank_sel) tbl1[i_addr] <= i_data;
-    end
-    // registered reads (BRAM read registers with read enable: only the selected bank is read, so
-    // the other RAM sees at most the write) and the bank they were taken for
-    reg signed [W_CORR-1:0] rd0_0_q, rd0_1_q, rd1_0_q, rd1_1_q;
-    reg                     rd_sel_q;
-    always @(posedge i_clk) begin
-        if (i_rst) begin
-            rd0_0_q  <= {W_CORR{1'b0}};
-            rd0_1_q  <= {W_CORR{1'b0}};
-            rd1_0_q  <= {W_CORR{1'b0}};
-            rd1_1_q  <= {W_CORR{1'b0}};
-            rd_sel_q <= 1'b0;
-        end else begin
-            if (!i_bank_sel) begin
-                rd0_0_q <= tbl0[i0];
-                rd0_1_q <= tbl0[i1];
-            end
-            if (i_bank_sel) begin
-                rd1_0_q <= tbl1[i0];
-                rd1_1_q <= tbl1[i1];
-            end
-            rd_sel_q <= i_bank_sel;
+    // ---- table RAMs (not reset): even and odd words of each bank -----------------------------
+    // A RAM is read only while its bank is selected and written only while it is not (the write
+    // port is delayed to the clock of the reads, see above): a read and a write never meet in one
+    // RAM in one clock. no_rw_check tells Yosys so; without it, it adds an address comparator and
+    // a bypass multiplexer for a collision that cannot happen (measured: 2 ns of the read-address path).
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0e [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0o [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1e [0:TBL_DEPTH/2-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1o [0:TBL_DEPTH/2-1];
+    // Power-up contents 0, as the C++ tables (block RAM initial contents on the iCE40). At the
+    // held end of a table (i = n - 1, u = 0) the word of the other RAM is read but multiplied by
+    // 0 (or cancelled, ERROR_MAP.md §4); it may lie beyond the loaded words, so it must not be X.
+    integer ii;
+    initial begin
+        for (ii = 0; ii < TBL_DEPTH / 2; ii = ii + 1) begin
+            tbl0e[ii] = {W_CORR{1'b0}};
+            tbl0o[ii] = {W_CORR{1'b0}};
+            tbl1e[ii] = {W_CORR{1'b0}};
+            tbl1o[ii] = {W_CORR{1'b0}};
         end
     end
-    assign t0_q = rd_sel_q ? rd1_0_q : rd0_0_q;
-    assign t1_q = rd_sel_q ? rd1_1_q : rd0_1_q;
 
+    // ---- stage A: geometry of the selected bank, registered subtract -------------------------
+    wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
+    wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
+    wire        [W_N-1:0]     g_n      = i_bank_sel ? i_n1 : i_n0;
+    // geometry check of each bank as plain logic (no carry chains), then the bank multiplexer:
+    // 4 <= k <= 20 and 2 <= n <= 1024
+    wire k0_ok = (i_k0[4] ? (i_k0[3:0] <= 4'd4) : (i_k0[3:2] != 2'b00));
+    wire k1_ok = (i_k1[4] ? (i_k1[3:0] <= 4'd4) : (i_k1[3:2] != 2'b00));
+    wire n0_ok = i_n0[10] ? (i_n0[9:0] == 10'd0) : (i_n0[9:1] != 9'd0);
+    wire n1_ok = i_n1[10] ? (i_n1[9:0] == 10'd0) : (i_n1[9:1] != 9'd0);
+    wire                      geom_ok  = i_bank_sel ? (k1_ok && n1_ok) : (k0_ok && n0_ok);
+    wire        [W_N-1:0]     n_m1     = g_n - 11'd1;
+
+    reg signed [W_OFF-1:0]  a_off;
+    reg        [4:0]        a_k;
+    reg        [W_ADDR-1:0] a_last;
+    reg                     a_bank, a_act, a_err;
+    // write port, delayed to stage R
+    reg                     w1_we, w1_bank, w2_we, w2_bank, w3_we, w3_bank;
+    reg        [W_ADDR-1:0] w1_addr, w2_addr, w3_addr;
+    reg signed [W_CORR-1:0] w1_data, w2_data, w3_data;
+
+    // p - origin as a carry-select subtract: the low 20 bits and both candidates of the high 19
+    // bits (borrow 0 / 1) side by side, then the select (two 20-bit carry chains instead of one of 39)
+    localparam integer W_LO = 20;
+    wire [W_LO:0]           off_lo  = {1'b0, i_p[W_LO-1:0]} - {1'b0, g_origin[W_LO-1:0]};  // [W_LO]: borrow
+    wire [W_OFF-W_LO-1:0]   p_hi    = {i_p[37], i_p[37:W_LO]};
+    wire [W_OFF-W_LO-1:0]   o_hi    = {g_origin[37], g_origin[37:W_LO]};
+    wire [W_OFF-W_LO-1:0]   off_hi0 = p_hi - o_hi;
+    wire [W_OFF-W_LO-1:0]   off_hi1 = p_hi + ~o_hi;   // p_hi - o_hi - 1
+    always @(posedge i_clk) begin
+        a_off  <= {off_lo[W_LO] ? off_hi1 : off_hi0, off_lo[W_LO-1:0]};
+        // with an invalid geometry the sample is inactive (a_act = 0) and k, last are not used:
+        // they are taken raw here (the C++ model substitutes K_MIN / 0 to keep its shifts defined)
+        a_k    <= g_k;
+        a_last <= n_m1[W_ADDR-1:0];
+        a_bank <= i_bank_sel;
+        w1_bank <= !i_bank_sel;
+        w1_addr <= i_addr;
+        w1_data <= i_data;
+        w2_we   <= w1_we;
+        w2_bank <= w1_bank;
+        w2_addr <= w1_addr;
+        w2_data <= w1_data;
+        w3_we   <= w2_we;
+        w3_bank <= w2_bank;
+        w3_addr <= w2_addr;
+        w3_data <= w2_data;
+        if (i_rst) begin
+            a_act <= 1'b0;
+            a_err <= 1'b0;
+            w1_we <= 1'b0;
+        end else begin
+            a_act <= i_map_en && i_homed && geom_ok;
+            a_err <= i_map_en && !geom_ok;
+            w1_we <= i_we;
+        end
+    end
+
+    // ---- stage B: split the offset (field selects by k, no compare) --------------------------
+    // suffix OR of the offset's magnitude bits: sor[j] = |a_off[37:j]; b_hi = sor[k + 10]
+    wire [W_OFF-1:0] sor;
+    assign sor[W_OFF-1] = 1'b0;
+    genvar gj;
+    generate
+        for (gj = W_OFF - 2; gj >= 0; gj = gj - 1) begin : g_sor
+            assign sor[gj] = sor[gj+1] | a_off[gj];
+        end
+    endgenerate
+    wire [31:0]       sor_hi = {{(32-W_OFF+W_ADDR){1'b0}}, sor[W_OFF-1:W_ADDR]};  // [k] = |a_off[37:k+10]
+    wire [W_OFF-1:0]  off_u  = a_off;
+    wire [W_OFF-1:0]  off_sh = off_u >> a_k;
+    wire [W_FRAC-1:0] u_sh   = off_u[W_FRAC-1:0] << (K_MAX - a_k);
+    // even-RAM address (last + 1) / 2 of the clamp candidate last (that of i is formed in C)
+    wire [W_ADDR:0]   last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
+
+    reg                     b_neg, b_hi, b_bank, b_act, b_err;
+    reg        [W_ADDR-1:0] b_i, b_last;
+    reg        [W_HADDR-1:0] b_laste;             // (last + 1) / 2
+    reg        [W_FRAC-1:0] b_u;
+    always @(posedge i_clk) begin
+        b_neg  <= a_off[W_OFF-1];
+        b_hi   <= sor_hi[a_k];
+        b_i    <= off_sh[W_ADDR-1:0];
+        b_laste <= last_p1[W_HADDR:1];
+        b_u    <= u_sh;
+        b_last <= a_last;
+        b_bank <= a_bank;
+        if (i_rst) begin
+            b_act <= 1'b0;
+            b_err <= 1'b0;
+        end else begin
+            b_act <= a_act;
+            b_err <= a_err;
+        end
+    end
+
+    // ---- stage C: clamp, the two RAM addresses (registered) --------------------------------------
+    wire                above  = !b_neg && (b_hi || b_i >= b_last);
+    wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? b_last : b_i;
+    wire [W_FRAC-1:0]   cu     = (b_neg || above) ? {W_FRAC{1'b0}} : b_u;
+    wire                cinr   = !b_neg && (!above || (!b_hi && b_i == b_last && b_u == {W_FRAC{1'b0}}));
+    wire [W_ADDR:0]     bi_p1  = {1'b0, b_i} + {{W_ADDR{1'b0}}, 1'b1};   // beside the compare
+    wire [W_HADDR-1:0]  ea     = b_neg ? {W_HADDR{1'b0}} : above ? b_laste : bi_p1[W_HADDR:1];  // (i+1)/2
+    wire [W_HADDR-1:0]  oa     = ci[W_ADDR-1:1];
+
+    reg [W_HADDR-1:0] c_ea, c_oa;
+    reg               c_lsb, c_bank, c_act, c_inr, c_err;
+    reg [W_FRAC-1:0]  c_u;
+    always @(posedge i_clk) begin
+        c_ea   <= ea;
+        c_oa   <= oa;
+        c_lsb  <= ci[0];
+        c_u    <= cu;
+        c_bank <= b_bank;
+        c_inr  <= cinr;
+        if (i_rst) begin
+            c_act <= 1'b0;
+            c_err <= 1'b0;
+        end else begin
+            c_act <= b_act;
+            c_err <= b_err;
+        end
+    end
+
+    // ---- stage R: one registered read of each RAM of the selected bank, the delayed write ------
+    reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+    always @(posedge i_clk) begin
+        if (!c_bank) begin
+            rd0e <= tbl0e[c_ea];
+            rd0o <= tbl0o[c_oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (c_bank) begin
+            rd1e <= tbl1e[c_ea];
+            rd1o <= tbl1o[c_oa];
+        end
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && !w3_bank && !w3_addr[0]) tbl0e[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && !w3_bank && w3_addr[0]) tbl0o[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && w3_bank && !w3_addr[0]) tbl1e[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+    always @(posedge i_clk) begin
+        if (w3_we && w3_bank && w3_addr[0]) tbl1o[w3_addr[W_ADDR-1:1]] <= w3_data;
+    end
+
+    reg              r_lsb, r_bank, r_act, r_inr, r_err;
+    reg [W_FRAC-1:0] r_u;
+    always @(posedge i_clk) begin
+        r_lsb  <= c_lsb;
+        r_u    <= c_u;
+        r_bank <= c_bank;
+        r_inr  <= c_inr;
+        if (i_rst) begin
+            r_act <= 1'b0;
+            r_err <= 1'b0;
+        end else begin
+            r_act <= c_act;
+            r_err <= c_err;
+        end
+    end
+
+    // ---- stage D: bank multiplexer, orientation (the difference is formed by the M load) ------
+    wire signed [W_CORR-1:0] we_m = r_bank ? rd1e : rd0e;
+    wire signed [W_CORR-1:0] wo_m = r_bank ? rd1o : rd0o;
+    reg signed [W_CORR-1:0] d_e, d_o;
+    reg        [W_V-1:0]    d_v;
+    reg                     d_act, d_inr, d_err;
+    always @(posedge i_clk) begin
+        d_e    <= we_m;
+        d_o    <= wo_m;
+        d_v    <= r_lsb ? ({1'b1, {W_FRAC{1'b0}}} - {1'b0, r_u}) : {1'b0, r_u};
+        d_inr  <= r_inr;
+        if (i_rst) begin
+            d_act <= 1'b0;
+            d_err <= 1'b0;
+        end else begin
+            d_act <= r_act;
+            d_err <= r_err;
+        end
+    end
+
+    // ---- phase counter: ph = 0 marks a sample call ----------------------------------------------
+    reg [4:0] ph;
+    always @(posedge i_clk) begin
+        if (i_rst) ph <= 5'd0;
+        else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
+    end
+
+    // ---- M: sequenced multiply (d_o - d_e) * d_v, LSB first ------------------------------------------
+    reg signed [W_MHI-1:0]  m_hi;
+    reg                     m_b;
+    reg        [W_V-1:0]    m_v;
+    reg signed [W_DIFF-1:0] m_diff;
+    reg signed [W_ME-1:0]   m_e;
+    reg                     m_act, m_inr, m_err;
+    wire                    m_step = ph > PH_LOAD && ph < PH_G;
+    wire signed [W_MHI-1:0] m_add  = m_v[0] ? {m_diff[W_DIFF-1], m_diff} : {W_MHI{1'b0}};
+    wire signed [W_MHI-1:0] m_s    = m_hi + m_add;
+    always @(posedge i_clk) begin
+        if (ph == PH_LOAD) begin
+            m_hi   <= {W_MHI{1'b0}};
+            m_b    <= 1'b0;
+            m_v    <= d_v;
+            m_diff <= {d_o[W_CORR-1], d_o} - {d_e[W_CORR-1], d_e};
+            m_e    <= {d_e[W_CORR-1], d_e} + {{(W_ME-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
+            m_inr  <= d_inr;
+        end else if (m_step) begin
+            m_hi   <= m_s >>> 1;
+            m_b    <= m_s[0];
+            m_v    <= m_v >> 1;
+        end
+        if (i_rst) begin
+            m_act <= 1'b0;
+            m_err <= 1'b0;
+        end else if (ph == PH_LOAD) begin
+            m_act <= d_act;
+            m_err <= d_err;
+        end
+    end
+
+    // ---- stage G: round the sample's product (ph = PH_G), held otherwise ----------------------------
+    wire signed [W_G-1:0] g_x = {m_hi, 1'b0} + {{(W_G-W_ME){m_e[W_ME-1]}}, m_e} + {{(W_G-1){1'b0}}, m_b};
+    reg signed [W_C-1:0] g_corr;
+    reg                  g_act, g_inr, g_err;
+    always @(posedge i_clk) begin
+        if (ph == PH_G) g_inr <= m_inr;
+        if (i_rst) begin
+            g_corr <= {W_C{1'b0}};
+            g_act  <= 1'b0;
+            g_err  <= 1'b0;
+        end else if (ph == PH_G) begin
+            g_corr <= m_act ? g_x[F+W_C-1:F] : {W_C{1'b0}};
+            g_act  <= m_act;
+            g_err  <= m_err;
+        end
+    end
+
+    // ---- stage H: output registers ---------------------------------------------------------------
+    reg signed [W_C-1:0]      corr_q;
+    reg signed [W_CDELTA-1:0] delta_q;
+    reg                       active_oq, inr_oq, err_oq;
     always @(posedge i_clk) begin
         if (i_rst) begin
-            frac_q    <= {W_FRAC{1'b0}};
-            k_q       <= K_MIN;
-            act_q     <= 1'b0;
-            inr_q     <= 1'b0;
-            err_q     <= 1'b0;
             corr_q    <= {W_C{1'b0}};
             delta_q   <= {W_CDELTA{1'b0}};
             active_oq <= 1'b0;
             inr_oq    <= 1'b0;
             err_oq    <= 1'b0;
         end else begin
-            // stage B (from the stage A registers of the previous call)
-            corr_q    <= c_next;
-            delta_q   <= d_next;
-            active_oq <= act_q;
-            inr_oq    <= act_q && inr_q;
-            err_oq    <= err_q;
-            // stage A
-            frac_q    <= frac;
-            k_q       <= k;
-            act_q     <= i_map_en && i_homed && geom_ok;
-            inr_q     <= inr;
-            err_q     <= i_map_en && !geom_ok;
+            corr_q    <= g_corr;
+            delta_q   <= {g_corr[W_C-1], g_corr} - {corr_q[W_C-1], corr_q};
+            active_oq <= g_act;
+            inr_oq    <= g_act && g_inr;
+            err_oq    <= g_err;
         end
     end
 

@@ -7,7 +7,8 @@
 //   glitch = valid && s2 == f && cnt != 0                 (registers before the edge)
 //   !valid:      fill == 2 ? (f' = s2, valid' = 1) : fill' = fill + 1
 //   s2 == f:     cnt' = 0
-//   cnt+1 >= max(N,1): f' = s2, cnt' = 0;  else cnt' = cnt + 1
+//   ready:       f' = s2, cnt' = 0;  else cnt' = cnt + 1
+//   ready' = cnt' + 1 >= max(N,1)   (the pass decision of the next edge, with this edge's N)
 //   s2' = s1, s1' = pin
 //
 // o_f / o_valid / o_glitch are registers. o_f_d / o_valid_d / o_glitch_d are the values those
@@ -43,18 +44,24 @@ module input_filter #(
     endgenerate
 
     // ---- registers -------------------------------------------------------------------------
-    reg             s1_q, s2_q, f_q, valid_q, glitch_q;
+    reg             s1_q, s2_q, f_q, valid_q, glitch_q, ready_q;
     reg [W_CNT-1:0] cnt_q;
     reg [1:0]       fill_q;
 
-    reg             s1_d, s2_d, f_d, valid_d, glitch_d;
+    reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d;
     reg [W_CNT-1:0] cnt_d;
     reg [1:0]       fill_d;
 
     // need = max(N, 1) and seen = cnt + 1, both W_CNT + 1 bits (no overflow)
-    wire [W_CNT:0] need = (i_n == {W_CNT{1'b0}}) ? {{W_CNT{1'b0}}, 1'b1} : {1'b0, i_n};
-    wire [W_CNT:0] seen = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
+    // Pass decision of the next edge (DESIGN 4.1 `ready`), with this edge's N: cnt' + 1 >= max(N,1).
+    // cnt' is 0 (-> 1 >= need) or cnt + 1 (-> cnt + 2 >= need); both compares are formed from the
+    // registers and i_n in parallel with the filter logic, which only selects.
+    wire [W_CNT:0]   need    = (i_n == {W_CNT{1'b0}}) ? {{W_CNT{1'b0}}, 1'b1} : {1'b0, i_n};
+    wire [W_CNT:0]   seen    = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
     wire [W_CNT-1:0] seen_lo = seen[W_CNT-1:0];
+    wire [W_CNT+1:0] seen2   = {2'b00, cnt_q} + {{W_CNT{1'b0}}, 2'd2};
+    wire             rdy_0   = need <= {{W_CNT{1'b0}}, 1'b1};
+    wire             rdy_inc = seen2 >= {1'b0, need};
 
     always @* begin
         s1_d     = i_pin;
@@ -73,12 +80,13 @@ module input_filter #(
             end
         end else if (s2_q == f_q) begin
             cnt_d = {W_CNT{1'b0}};
-        end else if (seen >= need) begin
+        end else if (ready_q) begin
             f_d   = s2_q;
             cnt_d = {W_CNT{1'b0}};
         end else begin
-            cnt_d = seen_lo;             // seen < need <= 2^W_CNT - 1: fits
+            cnt_d = seen_lo;             // seen < max(N(t-1),1) <= 2^W_CNT - 1: fits
         end
+        ready_d = (valid_q && s2_q != f_q && !ready_q) ? rdy_inc : rdy_0;
     end
 
     always @(posedge i_clk) begin
@@ -88,6 +96,7 @@ module input_filter #(
             f_q      <= 1'b0;
             valid_q  <= 1'b0;
             glitch_q <= 1'b0;
+            ready_q  <= 1'b0;
             cnt_q    <= {W_CNT{1'b0}};
             fill_q   <= 2'd0;
         end else begin
@@ -96,6 +105,7 @@ module input_filter #(
             f_q      <= f_d;
             valid_q  <= valid_d;
             glitch_q <= glitch_d;
+            ready_q  <= ready_d;
             cnt_q    <= cnt_d;
             fill_q   <= fill_d;
         end

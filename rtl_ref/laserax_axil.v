@@ -98,8 +98,8 @@ module laserax_axil #(
     wire [9:0]         r_tbl_addr;
     wire [16:0]        r_tbl_data;
     wire signed [37:0] r_map_origin0, r_map_origin1;
-    wire [11:0]        r_map_n0, r_map_n1;
-    wire [10:0]        r_map_addr;
+    wire [10:0]        r_map_n0, r_map_n1;
+    wire [9:0]         r_map_addr;
     wire signed [23:0] r_map_data;
 
     laserax_regs #(.ADDR_W(ADDR_W)) u_regs (

@@ -71,12 +71,12 @@ module laserax_regs #(
     output wire               o_bank_sel,        // 0xB0 rw, reset 0
     output wire signed [37:0] o_map_origin0,     // 0xC0 rw, reset 0
     output wire [4:0]         o_map_k0,          // 0xD0 rw, reset 10
-    output wire [11:0]        o_map_n0,          // 0xD8 rw, reset 2048
+    output wire [10:0]        o_map_n0,          // 0xD8 rw, reset 1024
     output wire signed [37:0] o_map_origin1,     // 0xE0 rw, reset 0
     output wire [4:0]         o_map_k1,          // 0xF0 rw, reset 10
-    output wire [11:0]        o_map_n1,          // 0xF8 rw, reset 2048
+    output wire [10:0]        o_map_n1,          // 0xF8 rw, reset 1024
     output wire               o_map_we,          // 0x100 port, reset 0
-    output wire [10:0]        o_map_addr,        // 0x108 port, reset 0
+    output wire [9:0]         o_map_addr,        // 0x108 port, reset 0
     output wire signed [23:0] o_map_data,        // 0x110 port, reset 0
     output wire               o_comp_sync,       // 0x118 rw, reset 0
     output wire               o_comp_commit      // 0x120 pulse, reset 0
@@ -184,12 +184,12 @@ module laserax_regs #(
     reg                 reg_bank_sel_q;
     reg  signed [37:0]  reg_map_origin0_q;
     reg         [4:0]   reg_map_k0_q;
-    reg         [11:0]  reg_map_n0_q;
+    reg         [10:0]  reg_map_n0_q;
     reg  signed [37:0]  reg_map_origin1_q;
     reg         [4:0]   reg_map_k1_q;
-    reg         [11:0]  reg_map_n1_q;
+    reg         [10:0]  reg_map_n1_q;
     reg                 reg_map_we_q;
-    reg         [10:0]  reg_map_addr_q;
+    reg         [9:0]   reg_map_addr_q;
     reg  signed [23:0]  reg_map_data_q;
     reg                 reg_comp_sync_q;
     reg                 reg_comp_commit_q;
@@ -284,8 +284,8 @@ module laserax_regs #(
     wire wen_map_k0 = wr_fire && wr_word == A_MAP_K0;
     wire [4:0] reg_map_k0_d = (wen_map_k0 && wr_strb[0]) ? wr_data[4:0] : reg_map_k0_q[4:0];
     wire wen_map_n0 = wr_fire && wr_word == A_MAP_N0;
-    wire [11:0] reg_map_n0_d = {
-        (wen_map_n0 && wr_strb[1]) ? wr_data[11:8] : reg_map_n0_q[11:8],
+    wire [10:0] reg_map_n0_d = {
+        (wen_map_n0 && wr_strb[1]) ? wr_data[10:8] : reg_map_n0_q[10:8],
         (wen_map_n0 && wr_strb[0]) ? wr_data[7:0] : reg_map_n0_q[7:0]};
     wire wen_map_origin1_0 = wr_fire && wr_word == A_MAP_ORIGIN1_0;
     wire wen_map_origin1_1 = wr_fire && wr_word == A_MAP_ORIGIN1_1;
@@ -298,14 +298,14 @@ module laserax_regs #(
     wire wen_map_k1 = wr_fire && wr_word == A_MAP_K1;
     wire [4:0] reg_map_k1_d = (wen_map_k1 && wr_strb[0]) ? wr_data[4:0] : reg_map_k1_q[4:0];
     wire wen_map_n1 = wr_fire && wr_word == A_MAP_N1;
-    wire [11:0] reg_map_n1_d = {
-        (wen_map_n1 && wr_strb[1]) ? wr_data[11:8] : reg_map_n1_q[11:8],
+    wire [10:0] reg_map_n1_d = {
+        (wen_map_n1 && wr_strb[1]) ? wr_data[10:8] : reg_map_n1_q[10:8],
         (wen_map_n1 && wr_strb[0]) ? wr_data[7:0] : reg_map_n1_q[7:0]};
     wire wen_map_we = wr_fire && wr_word == A_MAP_WE;
     wire reg_map_we_d = (wen_map_we && wr_strb[0]) ? wr_data[0] : reg_map_we_q;
     wire wen_map_addr = wr_fire && wr_word == A_MAP_ADDR;
-    wire [10:0] reg_map_addr_d = {
-        (wen_map_addr && wr_strb[1]) ? wr_data[10:8] : reg_map_addr_q[10:8],
+    wire [9:0] reg_map_addr_d = {
+        (wen_map_addr && wr_strb[1]) ? wr_data[9:8] : reg_map_addr_q[9:8],
         (wen_map_addr && wr_strb[0]) ? wr_data[7:0] : reg_map_addr_q[7:0]};
     wire wen_map_data = wr_fire && wr_word == A_MAP_DATA;
     wire signed [23:0] reg_map_data_d = {
@@ -342,13 +342,13 @@ module laserax_regs #(
     wire [31:0] rdw_map_origin0_0    = reg_map_origin0_q[31:0];
     wire [31:0] rdw_map_origin0_1    = {26'd0, reg_map_origin0_q[37:32]};
     wire [31:0] rdw_map_k0           = {27'd0, reg_map_k0_q};
-    wire [31:0] rdw_map_n0           = {20'd0, reg_map_n0_q};
+    wire [31:0] rdw_map_n0           = {21'd0, reg_map_n0_q};
     wire [31:0] rdw_map_origin1_0    = reg_map_origin1_q[31:0];
     wire [31:0] rdw_map_origin1_1    = {26'd0, reg_map_origin1_q[37:32]};
     wire [31:0] rdw_map_k1           = {27'd0, reg_map_k1_q};
-    wire [31:0] rdw_map_n1           = {20'd0, reg_map_n1_q};
+    wire [31:0] rdw_map_n1           = {21'd0, reg_map_n1_q};
     wire [31:0] rdw_map_we           = {31'd0, reg_map_we_q};
-    wire [31:0] rdw_map_addr         = {21'd0, reg_map_addr_q};
+    wire [31:0] rdw_map_addr         = {22'd0, reg_map_addr_q};
     wire [31:0] rdw_map_data         = {8'd0, reg_map_data_q};
     wire [31:0] rdw_comp_sync        = {31'd0, reg_comp_sync_q};
     wire [31:0] rdw_comp_commit      = {31'd0, reg_comp_commit_q};
@@ -424,12 +424,12 @@ module laserax_regs #(
             reg_bank_sel_q <= 1'd0;
             reg_map_origin0_q <= 38'd0;
             reg_map_k0_q <= 5'd10;
-            reg_map_n0_q <= 12'd2048;
+            reg_map_n0_q <= 11'd1024;
             reg_map_origin1_q <= 38'd0;
             reg_map_k1_q <= 5'd10;
-            reg_map_n1_q <= 12'd2048;
+            reg_map_n1_q <= 11'd1024;
             reg_map_we_q <= 1'd0;
-            reg_map_addr_q <= 11'd0;
+            reg_map_addr_q <= 10'd0;
             reg_map_data_q <= 24'd0;
             reg_comp_sync_q <= 1'd0;
             reg_comp_commit_q <= 1'd0;

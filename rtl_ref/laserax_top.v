@@ -9,9 +9,10 @@
 // Register stages: in the C++ model a block consumes the outputs its upstream block returned at
 // the previous call (the *_q members of axis_core). Every block's outputs here are its own output
 // registers, so they *are* that one register stage: each block is wired straight to the output
-// registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-2 (the
-// extra rep_q2 stage of the C++ plus the output register), so they change in the same call as
-// the sin/cos codes they belong to. Latency pin edge -> sin/cos: 8 calls (glitch_n <= 1).
+// registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-3 (the
+// extra rep_q2 and rep_q3 stages of the C++ plus the output register), so they change in the same
+// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1,
+// DESIGN 4.7).
 //
 // Safe state: while the configuration check fails, and in the call in which a new period value
 // first appears after a running call (period_q != period with run_q = 1; coming out of power-up
@@ -64,12 +65,12 @@ module laserax_top #(
     input  wire               i_bank_sel,       // active bank; the write port writes the other
     input  wire signed [37:0] i_map_origin0,    // bank 0: position of point 0, comp coordinates
     input  wire [4:0]         i_map_k0,         // bank 0: spacing 2^k counts, 4..20
-    input  wire [11:0]        i_map_n0,         // bank 0: points, 2..2048
+    input  wire [10:0]        i_map_n0,         // bank 0: points, 2..1024
     input  wire signed [37:0] i_map_origin1,
     input  wire [4:0]         i_map_k1,
-    input  wire [11:0]        i_map_n1,
+    input  wire [10:0]        i_map_n1,
     input  wire               i_map_we,
-    input  wire [10:0]        i_map_addr,
+    input  wire [9:0]         i_map_addr,
     input  wire signed [23:0] i_map_data,       // Q15.8 output counts
     // outputs
     output wire signed [17:0] o_sin,
@@ -212,7 +213,7 @@ module laserax_top #(
     wire [11:0]        rep_d;
 
     // error map: uncorrected comp and rephase homed status of the previous call (the blocks'
-    // output registers); 2 calls of latency
+    // output registers); a sample every 32 calls, 29 calls of latency (docs/ERROR_MAP.md §6)
     wire signed [16:0] map_corr;
     wire signed [17:0] map_delta;
     wire               map_active, map_in_range, map_clamped, map_cfg_err;
@@ -255,20 +256,24 @@ module laserax_top #(
         .i_amplitude(i_amplitude), .i_tbl_we(i_tbl_we), .i_tbl_addr(i_tbl_addr),
         .i_tbl_data(i_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
 
-    // ---- digital A/B/Z: rephase outputs of call t-2 ------------------------------------------
-    reg [1:0] rep_pos2_q, out_pos2_q;   // out_pos mod 4: rep_q2 stage, output stage
-    reg       rep_mark2_q, out_mark2_q;
+    // ---- digital A/B/Z: rephase outputs of call t-3 ------------------------------------------
+    reg [1:0] rep_pos2_q, rep_pos3_q, out_pos2_q;   // out_pos mod 4: rep_q2, rep_q3, output stage
+    reg       rep_mark2_q, rep_mark3_q, out_mark2_q;
     always @(posedge i_clk) begin
         if (blk_rst) begin
             rep_pos2_q  <= 2'd0;
             rep_mark2_q <= 1'b0;
+            rep_pos3_q  <= 2'd0;
+            rep_mark3_q <= 1'b0;
             out_pos2_q  <= 2'd0;
             out_mark2_q <= 1'b0;
         end else begin
             rep_pos2_q  <= rep_out_pos[1:0];
             rep_mark2_q <= rep_mark;
-            out_pos2_q  <= rep_pos2_q;
-            out_mark2_q <= rep_mark2_q;
+            rep_pos3_q  <= rep_pos2_q;
+            rep_mark3_q <= rep_mark2_q;
+            out_pos2_q  <= rep_pos3_q;
+            out_mark2_q <= rep_mark3_q;
         end
     end
 

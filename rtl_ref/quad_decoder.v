@@ -67,7 +67,7 @@ module quad_decoder (
     reg                    pa_q, pb_q, primed_q;
     reg signed [W_RAW-1:0] raw_q;
     reg [W_ERRCNT-1:0]     err_cnt_q;
-    reg [W_SPACING-1:0]    since_q;
+    reg [W_SPACING:0]      sp2_q;          // since + 2 (DESIGN 4.2 `since`, offset by 2)
     reg                    illegal_st_q, ovs_st_q, lerr_alarm_q, glitch_st_q;
     reg signed [1:0]       step_q;
     reg                    illegal_q, ovs_q, lerr_q;
@@ -75,13 +75,21 @@ module quad_decoder (
     reg                    pa_d, pb_d, primed_d;
     reg signed [W_RAW-1:0] raw_d;
     reg [W_ERRCNT-1:0]     err_cnt_d;
-    reg [W_SPACING-1:0]    since_d;
+    reg [W_SPACING:0]      sp2_d;
     reg                    illegal_st_d, ovs_st_d, lerr_alarm_d, glitch_st_d;
     reg signed [1:0]       step_d;
     reg                    illegal_d, ovs_d, lerr_d;
 
     reg                    da, db;
-    reg [W_SPACING:0]      spacing;
+    wire signed [W_RAW-1:0] raw_inc = raw_q + {{(W_RAW-1){1'b0}}, 1'b1};
+    wire signed [W_RAW-1:0] raw_dec = raw_q - {{(W_RAW-1){1'b0}}, 1'b1};
+    reg                    close_q, close_d;   // DESIGN 4.2 `close`: since + 1 < min_spacing
+    // `since` is kept as sp2 = since + 2 (65537 = since saturated at 65535), so that the overspeed
+    // comparison of the next edge is one comparator on registers for both values since' can take:
+    // since' = 0 after a step -> 1 < min_spacing; since' = since + 1 -> sp2 < min_spacing
+    localparam [W_SPACING:0] SP2_MAX = {1'b0, SINCE_MAX} + {{(W_SPACING-1){1'b0}}, 2'd2};
+    wire                   close_0   = {{(W_SPACING-1){1'b0}}, 1'b1} < i_min_spacing;
+    wire                   close_inc = sp2_q < {1'b0, i_min_spacing};
 
     always @* begin
         // clear acts first
@@ -118,13 +126,15 @@ module quad_decoder (
 
         // edge spacing
         ovs_d   = 1'b0;
-        since_d = since_q;
-        spacing = {1'b0, since_q} + {{W_SPACING{1'b0}}, 1'b1};
+        sp2_d   = sp2_q;
+        close_d = 1'b0;                          // since stays 65535: 65536 < min_spacing never
         if (step_d != 2'sd0) begin
-            ovs_d   = spacing < {1'b0, i_min_spacing};
-            since_d = {W_SPACING{1'b0}};
-        end else if (since_q != SINCE_MAX) begin
-            since_d = since_q + {{(W_SPACING-1){1'b0}}, 1'b1};
+            ovs_d   = close_q;
+            sp2_d   = {{(W_SPACING-1){1'b0}}, 2'd2};
+            close_d = close_0;
+        end else if (sp2_q != SP2_MAX) begin
+            sp2_d   = sp2_q + {{W_SPACING{1'b0}}, 1'b1};
+            close_d = close_inc;
         end
 
         // events set their flags (after the clear)
@@ -135,7 +145,9 @@ module quad_decoder (
         if (ovs_d) ovs_st_d = 1'b1;
         if (fa_glitch_d || fb_glitch_d) glitch_st_d = 1'b1;
         if (lerr_d) lerr_alarm_d = 1'b1;
-        raw_d = raw_q + step_d;                  // both signed: step sign-extended
+        // raw +- 1 are formed from the register alone (in parallel with the filter and step
+        // logic); the step only selects: no carry chain after the step decision
+        raw_d = (step_d == 2'sd1) ? raw_inc : ((step_d == -2'sd1) ? raw_dec : raw_q);
     end
 
     always @(posedge i_clk) begin
@@ -145,7 +157,8 @@ module quad_decoder (
             primed_q     <= 1'b0;
             raw_q        <= {W_RAW{1'b0}};
             err_cnt_q    <= {W_ERRCNT{1'b0}};
-            since_q      <= SINCE_MAX;
+            sp2_q        <= SP2_MAX;
+            close_q      <= 1'b0;
             illegal_st_q <= 1'b0;
             ovs_st_q     <= 1'b0;
             lerr_alarm_q <= 1'b0;
@@ -160,7 +173,8 @@ module quad_decoder (
             primed_q     <= primed_d;
             raw_q        <= raw_d;
             err_cnt_q    <= err_cnt_d;
-            since_q      <= since_d;
+            sp2_q        <= sp2_d;
+            close_q      <= close_d;
             illegal_st_q <= illegal_st_d;
             ovs_st_q     <= ovs_st_d;
             lerr_alarm_q <= lerr_alarm_d;

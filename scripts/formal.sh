@@ -46,7 +46,7 @@ MUTATIONS=(
   "qd_direction|quad_decoder.v|quad_decoder|s/step_d = (fa_f_d != fb_f_d) ? 2'sd1 : -2'sd1;/step_d = (fa_f_d == fb_f_d) ? 2'sd1 : -2'sd1;/"
   "qd_count_illegal|quad_decoder.v|quad_decoder|s/if (da \&\& db)/if (1'b0)/"
   "qd_err_wraps|quad_decoder.v|quad_decoder|s/if (err_cnt_d != ERRCNT_MAX) err_cnt_d/if (1'b1) err_cnt_d/"
-  "qd_pins_latency|input_filter.v|quad_decoder_pins|s/end else if (seen >= need) begin/end else if (seen > need) begin/"
+  "qd_pins_latency|input_filter.v|quad_decoder_pins|s/wire             rdy_inc = seen2 >= {1'b0, need};/wire             rdy_inc = seen2 > {1'b0, need};/"
   "op_gap|output_pacer.v|output_pacer|s/emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/emit_nz ? i_pace_m - {{(W_PACE-2){1'b0}}, 2'd2}/"
   "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"
   "op_conservation|output_pacer.v|output_pacer_sum|s/t_n  = {{(W_T-1){e_pos_q}}, e_prev_q\[0\]};/t_n  = {{(W_T-1){1'b0}}, e_prev_q[0]};/"

@@ -225,8 +225,8 @@ BLOCKS = [
     dict(
         block="error_map",
         module="error_map",
-        dut="error_map (2 x 2048 x 24-bit table RAM, two registered reads, interpolation stage); "
-            "the RAM has no power-up contents: both vector sets write every word before a call "
+        dut="error_map (2 banks x 1024 x 24-bit table RAM as even/odd RAMs, a sample every 32 calls, 29-call latency); "
+            "the RAMs start at 0 as the C++ tables; both vector sets still write every word before a call "
             "that is active reads it (the golden set after the chain scenario's map: a directed tail "
             "with flips, both table ends, invalid geometries and every spacing).",
         fields=[
@@ -236,12 +236,12 @@ BLOCKS = [
             IN("bank_sel", 1),
             IN("origin0", 38, S),
             IN("k0", 5),
-            IN("n0", 12),
+            IN("n0", 11),
             IN("origin1", 38, S),
             IN("k1", 5),
-            IN("n1", 12),
+            IN("n1", 11),
             IN("we", 1),
-            IN("addr", 11),
+            IN("addr", 10),
             IN("data", 24, S),
             OUT("corr", 17, S),
             OUT("delta", 18, S),
@@ -335,12 +335,12 @@ BLOCKS = [
             IN("bank_sel", 1),
             IN("map_origin0", 38, S),
             IN("map_k0", 5),
-            IN("map_n0", 12),
+            IN("map_n0", 11),
             IN("map_origin1", 38, S),
             IN("map_k1", 5),
-            IN("map_n1", 12),
+            IN("map_n1", 11),
             IN("map_we", 1),
-            IN("map_addr", 11),
+            IN("map_addr", 10),
             IN("map_data", 24, S),
             OUT("sin", 18, S),
             OUT("cos", 18, S),

@@ -10,8 +10,8 @@
 #      -s MODULE: any output is a failure;
 #   2. Yosys: read_verilog (Verilog-2005); hierarchy -check -top MODULE; proc; check -assert;
 #      then a generic `synth -top MODULE` (for the modules holding the error-map RAM, error_map,
-#      laserax_top and laserax_axil, only its coarse part `synth -run :fine`: the 2 x 2048 x 24-bit
-#      RAM stays a memory cell instead of 98k flip-flops, which took about 3 minutes per module;
+#      laserax_top and laserax_axil, only its coarse part `synth -run :fine`: the 2 x 1024 x 24-bit
+#      RAM stays a memory cell instead of 49k flip-flops (the former 2 x 2048 took about 3 minutes);
 #      their logic around the RAM is the same RTL, and `make synth` maps the whole top to the
 #      iCE40 with BRAMs);
 #      check -assert; no latch cell may remain

@@ -77,6 +77,48 @@ void test_input_filter(tbu::result& res, std::mt19937_64& rng) {
             res.check(!passed, "input_filter N=" + std::to_string(n) + ": pulse of N-1 calls passed");
         }
     }
+    // N written while running (DESIGN 4.1: the pass decision of call t uses N of call t-1): random
+    // lengths 0..12 changed every few calls, hls against golden on every call
+    {
+        lx::input_filter<8> h;
+        golden::input_filter g;
+        g.reset();
+        bool pin = false;
+        long hold = 0, keep = 0;
+        int n = 3;
+        for (long t = 0; t < 200000 && res.failures < 10; ++t) {
+            if (hold-- <= 0) {
+                pin = !pin;
+                hold = static_cast<long>(rng() % 30u);
+            }
+            if (keep-- <= 0) {
+                n = static_cast<int>(rng() % 13u);
+                keep = static_cast<long>(rng() % 8u);
+            }
+            const lx::input_filter<8>::out_t ho = h.step(pin, n);
+            const golden::input_filter::out go = g.step(pin, n);
+            res.expect(ho.f == go.f && ho.valid == go.valid && ho.glitch == go.glitch, [&] {
+                return "input_filter, N changing: call " + std::to_string(t) + " N " + std::to_string(n) + ": f/valid/glitch hls " +
+                       std::to_string(ho.f) + "/" + std::to_string(ho.valid) + "/" + std::to_string(ho.glitch) + " golden " +
+                       std::to_string(go.f) + "/" + std::to_string(go.valid) + "/" + std::to_string(go.glitch);
+            });
+        }
+    }
+    // directed: N = 10, the pin rises at call 10 (x differs from call 12 on: run 4 at call 15); N
+    // written to 3 at call 15 is used from call 16, so the output rises at call 16, not 15
+    {
+        lx::input_filter<8> h;
+        golden::input_filter g;
+        g.reset();
+        long rise_h = -1, rise_g = -1;
+        for (long t = 0; t < 40; ++t) {
+            const int n = t >= 15 ? 3 : 10;
+            if (h.step(t >= 10, n).f && rise_h < 0) rise_h = t;
+            if (g.step(t >= 10, n).f && rise_g < 0) rise_g = t;
+        }
+        res.check(rise_h == 16 && rise_g == 16, "input_filter: N written at call 15 must act at call 16: output rises at " +
+                                                    std::to_string(rise_h) + " (hls), " + std::to_string(rise_g) + " (golden)");
+    }
 }
 
 void test_quad_decoder(tbu::result& res, std::mt19937_64& rng) {

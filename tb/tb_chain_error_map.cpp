@@ -196,7 +196,9 @@ int main(int argc, char** argv) {
         }
 
         // ---- drained: controller position == comp + corr + adj
-        if (idle_left > 0 && g.backlog == 0 && g.pstep == 0 && g.ostep == 0) {
+        // (the map publishes a sample's correction up to 58 calls after the position settles: a
+        // new map_delta restarts the wait)
+        if (idle_left > 0 && g.backlog == 0 && g.pstep == 0 && g.ostep == 0 && g.map_delta == 0) {
             if (++drain_wait == 8) {
                 ++drained_checks;
                 const int64_t want = g.comp_pos + g.corr + g.adj;

@@ -60,9 +60,10 @@ int main(int argc, char** argv) {
         const long long hi = 2047;
         long long n = 0, clamps = 0, first_clip = -1, calls = 0;
         bool seen_flag = false;
-        // the DDS phase before call t is the sum of the rephase osteps of calls <= t-2 (the dds
-        // steps with the ostep of the previous call; its outputs come from the phase before the call)
-        long long ph_acc = 0, ostep_prev = 0;
+        // the codes of call t belong to the DDS phase before call t-1 (two DDS stages, DESIGN
+        // 4.6), which is the sum of the rephase osteps of calls <= t-3 (the dds steps with the
+        // ostep of the previous call)
+        long long ph_acc = 0, ostep_prev = 0, ostep_prev2 = 0;
         for (int t = 0; t < 60000; ++t) {
             if (t % 7 == 0 && t < 50000) ++n;  // forward motion
             r.clear = (t == 52000);
@@ -102,7 +103,8 @@ int main(int argc, char** argv) {
                 // any clamped phase): the event wins
                 res.check(o.dac_clip_st == clip_now, "clear in a clamping call: the event wins");
             }
-            ph_acc += ostep_prev;
+            ph_acc += ostep_prev2;
+            ostep_prev2 = ostep_prev;
             ostep_prev = o.ostep.to_int64();
         }
         res.check(seen_flag && clamps > 1000, "the stale 16-bit table is clamped and flagged (" +

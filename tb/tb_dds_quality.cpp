@@ -25,8 +25,11 @@ int main(int argc, char** argv) {
             const std::vector<uint32_t> t = lxt::dds_table(P, amp);
             for (size_t k = 0; k < t.size(); ++k) d.write(static_cast<unsigned>(k), t[k]);
             std::vector<int64_t> s, c;
-            for (int k = 0; k < P; ++k) {
+            // the codes of call k belong to phase k - 1 (two stages, DESIGN 4.6): the first call
+            // shows the reset codes and is dropped, calls 1..P give phases 0..P-1
+            for (int k = 0; k <= P; ++k) {
                 const lx::dds_sincos::out_t o = d.step(1, P, amp);
+                if (k == 0) continue;
                 s.push_back(o.sin.to_int64());
                 c.push_back(o.cos.to_int64());
             }

@@ -28,7 +28,8 @@ int main(int argc, char** argv) {
             golden::dds_sincos g;
             g.reset();
             for (int dir = 1; dir >= -1; dir -= 2) {
-                // dir +1: phases 0,1,...,P-1,0 ; dir -1 continues from there: 1,0,P-1,...
+                // dir +1: phases 0,1,...,P-1,0 ; dir -1 continues from there: 1,0,P-1,... (the codes
+                // follow two calls behind)
                 for (int k = 0; k <= P; ++k) {
                     const lx::dds_sincos::out_t ho = h.step(dir, P, amp);
                     const golden::dds_sincos::out go = g.step(dir, P, amp);
@@ -42,11 +43,15 @@ int main(int argc, char** argv) {
                         break;
                     }
                     res.check(hs <= amp && hs >= -amp && hc <= amp && hc >= -amp, "code beyond amplitude");
-                    if (dir == 1 && k == P / 8)
+                    // two stages (DESIGN 4.6): the codes of call k belong to the phase before call
+                    // k - 1, i.e. phase k - 1 on the forward walk; call 0 shows the reset codes
+                    if (dir == 1 && k == P / 8 + 1)
                         res.check(hs == hc && hs > 0, "P=" + std::to_string(P) + ": sin != cos at P/8 (" +
                                                           std::to_string(hs) + " vs " + std::to_string(hc) + ")");
-                    if (dir == 1 && (k == 0 || k == P))
+                    if (dir == 1 && k == 1)
                         res.check(hs == 0 && hc == amp, "P=" + std::to_string(P) + ": phase 0 is not (0, amp)");
+                    if (dir == 1 && k == 0)
+                        res.check(hs == 0 && hc == 0, "P=" + std::to_string(P) + ": the first call after reset is not 0/0");
                 }
             }
         }

@@ -5,7 +5,7 @@
 // (docs/ERROR_MAP.md).
 //
 // random:     seeded motion (random speeds up to 4 points per call, both directions, reversals,
-//             dwells, jumps) over and beyond both table ends; random geometries (k 4..20, n 2..2048,
+//             dwells, jumps) over and beyond both table ends; random geometries (k 4..20, n 2..1024,
 //             origin anywhere in +-2^30); random tables (smooth walks with large slopes, full-range
 //             noise, alternating extremes, small sinusoids, constants); homing and enable toggles;
 //             reloads of the inactive bank one word per call during motion, followed by a flip
@@ -16,7 +16,9 @@
 //             and down, several tables (noise, extremes, exact half ties, ramp), several origins.
 // directed:   a flip never mixes banks (constant tables of different value, frac != 0); writes
 //             to the inactive bank never change the output; every invalid geometry gives cfg_err
-//             and corr 0 (delta brings it back once), and recovery; latency is 2 calls.
+//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 29 calls
+//             from a sample call (one in S_MAP = 32; the outputs hold in between). Every call of
+//             every part is also checked against the direct formula of the last published sample.
 #include <cstdio>
 #include <random>
 #include <string>
@@ -28,7 +30,14 @@
 
 namespace {
 
-constexpr int kDepth = 2048;
+constexpr int kDepth = 1024;  // ERROR_MAP.md §2
+constexpr int kPeriod = 32;   // ERROR_MAP.md §6: one sample call in kPeriod (the first after reset)
+constexpr int kLat = 29;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
+constexpr int kNMax = 2047;   // largest value of the 11-bit n_points register
+static_assert(kDepth == lx::error_map_cfg::TBL_DEPTH && kDepth == golden::error_map::kDepth, "depth");
+static_assert(kLat == lx::error_map_cfg::L_MAP && kLat == golden::error_map::kLat, "latency");
+static_assert(kPeriod == lx::error_map_cfg::S_MAP && kPeriod == golden::error_map::kPeriod, "period");
+static_assert(kNMax == (1 << lx::error_map_cfg::W_N) - 1, "n_points register width");
 constexpr int32_t kWordMin = -(1 << 23);
 constexpr int32_t kWordMax = (1 << 23) - 1;
 
@@ -69,12 +78,54 @@ struct host_regs {
     int32_t data = 0;
 };
 
-// One hls model and one golden model driven with the same inputs; compares every output.
+// What the outputs must be once a sample call's result is published, from that call's inputs
+// (the tables before its write).
+struct expect_t {
+    bool active = false;
+    bool cfg_err = false;
+    int64_t corr = 0;
+    int where = 0;  // -1 below the table, 0 inside, +1 beyond
+};
+
+expect_t expected(const std::vector<int32_t>* shadow, int64_t p, bool homed, const host_regs& r) {
+    expect_t e;
+    const int b = r.bank_sel ? 1 : 0;
+    const geom& g = r.g[b];
+    e.cfg_err = r.map_en && !g.ok();
+    e.active = r.map_en && homed && g.ok();
+    if (e.active) {
+        e.corr = direct_corr(shadow[b], g, p);
+        const int64_t span = int64_t{g.n - 1} << g.k;
+        e.where = p < g.origin ? -1 : (p - g.origin > span ? 1 : 0);
+    }
+    return e;
+}
+
+void check_expect(tbu::result& res, const expect_t& e, const lx::error_map::out_t& o, const char* where, long t) {
+    res.expect(o.active == e.active && o.cfg_err == e.cfg_err && o.corr.to_int64() == e.corr &&
+                   o.clamped == (e.active && e.where != 0) && o.in_range == (e.active && e.where == 0),
+               [&] {
+                   return std::string(where) + " call " + std::to_string(t) + ": corr " +
+                          std::to_string(o.corr.to_int64()) + " want " + std::to_string(e.corr) + " (active " +
+                          std::to_string(o.active) + "/" + std::to_string(e.active) + ", cfg_err " +
+                          std::to_string(o.cfg_err) + "/" + std::to_string(e.cfg_err) + ", where " +
+                          std::to_string(e.where) + ")";
+               });
+}
+
+// One hls model and one golden model driven with the same inputs; compares every output with
+// golden and with the published expectation of the sample schedule (ERROR_MAP.md §4, §6): the
+// inputs of the calls n * kPeriod after construction, each published kLat - 1 calls later.
 struct dut {
     lx::error_map h;
     golden::error_map g;
     std::vector<int32_t> shadow[2];  // the tables as the test believes them to be
     int64_t sum_delta = 0;
+    long calls = 0;             // calls since construction
+    expect_t cur;               // what the outputs must be now
+    expect_t pend;              // the last sample's expectation, not yet published
+    long publish_at = -1;       // call index at which pend becomes cur
+    int64_t sample_p = 0;       // position of the last sample call
 
     dut() {
         shadow[0].assign(kDepth, 0);
@@ -100,9 +151,17 @@ struct dut {
         gr.addr = r.addr;
         hr.data = r.data;
         gr.data = r.data;
+        if (calls % kPeriod == 0) {  // a sample call: expectation from the tables before its write
+            pend = expected(shadow, p, homed, r);
+            publish_at = calls + kLat - 1;
+            sample_p = p;
+        }
         const lx::error_map::out_t ho = h.step(p, homed, hr);
         const golden::error_map::out go = g.step(p, homed, gr);
         if (r.we) shadow[r.bank_sel ? 0 : 1][static_cast<size_t>(r.addr)] = r.data;
+        if (calls == publish_at) cur = pend;
+        check_expect(res, cur, ho, where, t);
+        ++calls;
         sum_delta += ho.delta.to_int64();
         res.expect(ho.corr.to_int64() == go.corr && ho.delta.to_int64() == go.delta && ho.active == go.active &&
                        ho.in_range == go.in_range && ho.clamped == go.clamped && ho.cfg_err == go.cfg_err,
@@ -122,40 +181,6 @@ struct dut {
         return ho;
     }
 };
-
-// What the output of the next call must be, from this call's inputs (before its write).
-struct expect_t {
-    bool active = false;
-    bool cfg_err = false;
-    int64_t corr = 0;
-    int where = 0;  // -1 below the table, 0 inside, +1 beyond
-};
-
-expect_t expected(const dut& d, int64_t p, bool homed, const host_regs& r) {
-    expect_t e;
-    const int b = r.bank_sel ? 1 : 0;
-    const geom& g = r.g[b];
-    e.cfg_err = r.map_en && !g.ok();
-    e.active = r.map_en && homed && g.ok();
-    if (e.active) {
-        e.corr = direct_corr(d.shadow[b], g, p);
-        const int64_t span = int64_t{g.n - 1} << g.k;
-        e.where = p < g.origin ? -1 : (p - g.origin > span ? 1 : 0);
-    }
-    return e;
-}
-
-void check_expect(tbu::result& res, const expect_t& e, const lx::error_map::out_t& o, const char* where, long t) {
-    res.expect(o.active == e.active && o.cfg_err == e.cfg_err && o.corr.to_int64() == e.corr &&
-                   o.clamped == (e.active && e.where != 0) && o.in_range == (e.active && e.where == 0),
-               [&] {
-                   return std::string(where) + " call " + std::to_string(t) + ": corr " +
-                          std::to_string(o.corr.to_int64()) + " want " + std::to_string(e.corr) + " (active " +
-                          std::to_string(o.active) + "/" + std::to_string(e.active) + ", cfg_err " +
-                          std::to_string(o.cfg_err) + "/" + std::to_string(e.cfg_err) + ", where " +
-                          std::to_string(e.where) + ")";
-               });
-}
 
 int32_t clamp_word(int64_t v) { return static_cast<int32_t>(v < kWordMin ? kWordMin : (v > kWordMax ? kWordMax : v)); }
 
@@ -205,7 +230,7 @@ geom random_geom(std::mt19937_64& rng, bool allow_bad) {
         if (b == 0) g.k = static_cast<int>(rng() % 4);
         if (b == 1) g.k = 21 + static_cast<int>(rng() % 11);
         if (b == 2) g.n = static_cast<int>(rng() % 2);
-        if (b == 3) g.n = kDepth + 1 + static_cast<int>(rng() % 2047);
+        if (b == 3) g.n = kDepth + 1 + static_cast<int>(rng() % (kNMax - kDepth));
     }
     return g;
 }
@@ -229,7 +254,6 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
         const geom* ag = &r.g[0];
         int64_t p = ag->origin + static_cast<int64_t>(rng() % 1000);
         int64_t v = 1;
-        expect_t prev_e;
         // host reload state machine
         std::vector<int32_t> next_tbl;
         int load_pos = -1;  // < 0: idle
@@ -292,16 +316,15 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
             if (p > hi && v >= 0) { v = -(v == 0 ? 1 : v); ++cov.reversals; }
             if (p < lo && v <= 0) { v = (v == 0 ? 1 : -v); ++cov.reversals; }
 
-            const expect_t e = expected(d, p, homed, r);
+            const bool published = d.calls == d.publish_at;
             const lx::error_map::out_t o = d.step(res, p, homed, r, "random", t);
-            check_expect(res, prev_e, o, "random/direct", t);
-            prev_e = e;
+            const expect_t& pub = d.cur;  // checked against o by d.step
             ++cov.calls;
             if (o.active) ++cov.active; else ++cov.inactive;
             if (o.cfg_err) ++cov.cfg_err;
             if (o.in_range) ++cov.inside;
-            if (prev_e.active && e.where < 0) ++cov.below;
-            if (prev_e.active && e.where > 0) ++cov.beyond;
+            if (published && pub.active && pub.where < 0) ++cov.below;
+            if (published && pub.active && pub.where > 0) ++cov.beyond;
             const int64_t ad = o.delta.to_int64() < 0 ? -o.delta.to_int64() : o.delta.to_int64();
             if (ad > cov.max_abs_delta) cov.max_abs_delta = ad;
         }
@@ -349,16 +372,16 @@ void test_exhaustive(tbu::result& res, std::mt19937_64& rng, long& points) {
             r.g[0] = g;
             load_and_flip(res, d, r, tb, g, org, true);
             const int64_t span = 7 * 16;
-            expect_t prev_e;
             long t_call = 0;
             for (int dir = 1; dir >= -1; dir -= 2) {
                 for (int64_t j = 0; j <= span + 80; ++j) {
                     const int64_t x = dir > 0 ? org - 40 + j : org + span + 40 - j;
-                    const expect_t e = expected(d, x, true, r);
-                    const lx::error_map::out_t o = d.step(res, x, true, r, "exhaustive", t_call);
-                    if (t_call > 0) check_expect(res, prev_e, o, "exhaustive/direct", t_call);
-                    prev_e = e;
-                    ++t_call;
+                    // hold x until a sample call has taken it and its result is published
+                    while (d.calls % kPeriod != 0) d.step(res, x, true, r, "exhaustive", t_call++);
+                    for (int c = 0; c < kLat; ++c) d.step(res, x, true, r, "exhaustive", t_call++);
+                    res.expect(d.sample_p == x && d.cur.active, [&] {
+                        return "exhaustive: position " + std::to_string(x) + " not sampled";
+                    });
                     ++points;
                 }
             }
@@ -376,24 +399,33 @@ void test_directed(tbu::result& res) {
         const int32_t A = 100 * 256 + 17, B = -250 * 256 + 3;
         load_and_flip(res, d, r, std::vector<int32_t>(64, A), g, 0, true);   // now bank 1 = A
         load_and_flip(res, d, r, std::vector<int32_t>(64, B), g, 0, true);   // now bank 0 = B
-        // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving.
+        // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving. Each
+        // published value is that of the bank selected in its sample call.
         const int64_t wantA = floordiv(A + 128, 256), wantB = floordiv(B + 128, 256);
-        bool prev_sel = r.bank_sel;
-        for (long t = 0; t < 400; ++t) {
+        bool sample_sel = false;
+        long pub_at = -1;
+        int seenA = 0, seenB = 0;
+        for (long t = 0; t < 4000; ++t) {
             if (t % 5 == 0) r.bank_sel = !r.bank_sel;
             const int64_t x = 1000 + 3 + 7 * t % 4000;
+            if (d.calls % kPeriod == 0) {
+                sample_sel = r.bank_sel;
+                pub_at = d.calls + kLat - 1;
+            }
+            const bool pub = d.calls == pub_at;
             const lx::error_map::out_t o = d.step(res, x, true, r, "flip", t);
-            if (t > 0) {
-                const int64_t want = prev_sel ? wantA : wantB;  // bank 1 holds A
+            if (pub) {
+                const int64_t want = sample_sel ? wantA : wantB;  // bank 1 holds A
+                (sample_sel ? seenA : seenB)++;
                 res.expect(o.corr.to_int64() == want, [&] {
                     return "flip call " + std::to_string(t) + ": corr " + std::to_string(o.corr.to_int64()) +
                            " want " + std::to_string(want);
                 });
             }
-            prev_sel = r.bank_sel;
         }
+        res.check(seenA > 10 && seenB > 10, "flip: both banks must be published");
     }
-    // 2. writes to the inactive bank never change the output; latency is 2 calls
+    // 2. writes to the inactive bank never change the output; latency is kLat calls from a sample
     {
         dut d;
         host_regs r;
@@ -404,13 +436,17 @@ void test_directed(tbu::result& res) {
         load_and_flip(res, d, r, t, g, -100000, false);  // not homed while loading
         const int64_t x = -5000 + 37 * 256 + 77;
         const int64_t want = direct_corr(t, g, x);
-        // homed rises in call 0 with p = x: corr appears in call 1, not in call 0
-        const lx::error_map::out_t o0 = d.step(res, x, true, r, "latency", 0);
-        res.check(o0.corr.to_int64() == 0 && !o0.active, "latency: corr appeared in the call of the input");
-        const lx::error_map::out_t o1 = d.step(res, x, true, r, "latency", 1);
+        while (d.calls % kPeriod != 0) d.step(res, x, false, r, "align", d.calls);
+        // homed rises in a sample call (c = 0) with p = x: corr appears in call kLat - 1, not before
+        for (int c = 0; c < kLat - 1; ++c) {
+            const lx::error_map::out_t o0 = d.step(res, x, true, r, "latency", c);
+            res.check(o0.corr.to_int64() == 0 && !o0.active,
+                      "latency: corr appeared in call " + std::to_string(c) + " after the sample");
+        }
+        const lx::error_map::out_t o1 = d.step(res, x, true, r, "latency", kLat - 1);
         res.check(o1.corr.to_int64() == want && o1.delta.to_int64() == want && o1.active,
                   "latency: corr " + std::to_string(o1.corr.to_int64()) + " want " + std::to_string(want) +
-                      " one call after the input");
+                      " kLat - 1 calls after the sample");
         for (int a = 0; a < kDepth; ++a) {
             r.we = true;
             r.addr = a;
@@ -425,7 +461,7 @@ void test_directed(tbu::result& res) {
     // 3. invalid geometries: cfg_err, corr 0 (one delta back), recovery; none when disabled
     {
         const geom bad[] = {{0, 0, 16}, {0, 3, 16}, {0, 21, 16}, {0, 31, 16}, {0, 8, 0},
-                            {0, 8, 1},  {0, 8, 2049}, {0, 8, 4095}, {0, 2, 5000}};
+                            {0, 8, 1},  {0, 8, kDepth + 1}, {0, 8, kNMax}, {0, 2, 1500}};
         for (const geom& b : bad) {
             dut d;
             host_regs r;
@@ -433,27 +469,34 @@ void test_directed(tbu::result& res) {
             r.g[0] = g;
             const int32_t v = 5000 * 256;
             load_and_flip(res, d, r, std::vector<int32_t>(16, v), g, 0, true);
-            for (int t = 0; t < 3; ++t) d.step(res, 300, true, r, "cfg", t);
+            for (int t = 0; t < kPeriod + kLat; ++t) d.step(res, 300, true, r, "cfg", t);
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
             const int cur = r.bank_sel ? 1 : 0;
             const std::string name = "invalid k=" + std::to_string(b.k) + " n=" + std::to_string(b.n);
             r.g[cur] = b;
-            d.step(res, 300, true, r, "cfg", 3);  // the bad geometry enters stage A
-            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", 4);
+            // the bad geometry enters in a sample call (c = 0); the output of call kLat - 1 is its
+            for (int c = 0; c < kLat - 1; ++c) {
+                const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", c);
+                res.check(!q.cfg_err && q.corr.to_int64() == 5000, name + ": cfg_err / corr change too early");
+            }
+            const lx::error_map::out_t o = d.step(res, 300, true, r, "cfg", kLat - 1);
             res.check(o.cfg_err && !o.active && o.corr.to_int64() == 0 && o.delta.to_int64() == -5000,
                       name + ": no cfg_err / corr not 0 / delta not -5000 (delta " +
                           std::to_string(o.delta.to_int64()) + ")");
-            for (int t = 5; t < 20; ++t) {
-                const lx::error_map::out_t q = d.step(res, 300 + t, true, r, "cfg", t);
+            for (int c = kLat; c < kLat + 3 * kPeriod; ++c) {
+                const lx::error_map::out_t q = d.step(res, 300 + c, true, r, "cfg", c);
                 res.check(q.cfg_err && q.corr.to_int64() == 0 && q.delta.to_int64() == 0, name + ": not held at 0");
             }
             r.map_en = false;  // disabled: no error flag
-            d.step(res, 300, true, r, "cfg", 20);
-            const lx::error_map::out_t q = d.step(res, 300, true, r, "cfg", 21);
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
+            lx::error_map::out_t q;
+            for (int c = 0; c < kLat; ++c) q = d.step(res, 300, true, r, "cfg-off", c);
             res.check(!q.cfg_err && q.corr.to_int64() == 0, name + ": cfg_err while disabled");
             r.map_en = true;
             r.g[cur] = g;  // recovery
-            d.step(res, 300, true, r, "cfg", 22);
-            const lx::error_map::out_t w = d.step(res, 300, true, r, "cfg", 23);
+            while (d.calls % kPeriod != 0) d.step(res, 300, true, r, "align", d.calls);
+            lx::error_map::out_t w;
+            for (int c = 0; c < kLat; ++c) w = d.step(res, 300, true, r, "cfg-rec", c);
             res.check(!w.cfg_err && w.corr.to_int64() == 5000 && w.delta.to_int64() == 5000, name + ": no recovery");
         }
     }

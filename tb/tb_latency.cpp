@@ -2,8 +2,8 @@
 //
 // After reset and a quiet settling time (filters valid, the power-up re-base of the multiplier
 // done), one forward quadrature edge on A is presented in call t0; the first call whose sin/cos
-// differ from the call before is t0 + L. DESIGN §4.7: L = 11 calls with glitch_n <= 1 (decoder 2,
-// multiplier 1 + L_MUL = 4, pacer 2, rephase 1, dds 2), and max(glitch_n, 1) - 1 more for a longer
+// differ from the call before is t0 + L. DESIGN §4.7: L = 12 calls with glitch_n <= 1 (decoder 2,
+// multiplier 1 + L_MUL = 4, pacer 2, rephase 1, dds 3), and max(glitch_n, 1) - 1 more for a longer
 // glitch filter (4.1); the issue-11 budget is L <= 12 at glitch_n <= 1. Checked for glitch_n 0..8,
 // both directions of the edge, and with the digital A/B outputs (same call as sin/cos).
 #include <cstdio>
@@ -14,7 +14,7 @@
 #include "tb/tb_util.h"
 
 namespace {
-constexpr int kLatency = 11;  // DESIGN §4.7, glitch_n <= 1
+constexpr int kLatency = 12;  // DESIGN §4.7, glitch_n <= 1
 
 // Calls from the edge to the first change of sin/cos (and of qa/qb), or -1.
 struct lat_result {

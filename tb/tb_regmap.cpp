@@ -223,8 +223,11 @@ load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, c
     const double cpr = static_cast<double>(img.get(rm::idx::ratio)) / 4294967296.0;
     const int64_t n_hi = kSwPos + static_cast<int64_t>((2.5 * period + 64.0) / cpr) + 2;
     std::vector<char> seen(static_cast<size_t>(period), 0);
-    std::vector<int64_t> out_hist = {0, 0};  // out_pos of the two calls before the first running one
+    // the codes of call t belong to out_pos of call t-3 (DESIGN 4.7); out_pos of the three calls
+    // before the first running one
+    std::vector<int64_t> out_hist = {0, 0, 0};
     long below = 0, at_top = 0, tz = -1;
+    bool first_run = true;
     for (long t = 0; t < 2000000; ++t) {
         if (below < 200) {
             ax.move_toward(n_lo, spacing_for());
@@ -235,12 +238,23 @@ load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, c
         const lx::axis_out o = call(false);
         if (o.cfg_err) {
             out_hist.push_back(0);
+            first_run = true;
             continue;
         }
         const int64_t out = o.out_pos.to_int64();
-        const int ph = static_cast<int>(((out_hist[out_hist.size() - 2] % period) + period) % period);
+        const int ph = static_cast<int>(((out_hist[out_hist.size() - 3] % period) + period) % period);
         int64_t sn = 0, cs = 0;
         table_sincos(words, period, amp, ph, &sn, &cs);
+        // the first running call after the safe state still shows the reset codes 0/0 of the DDS
+        // output stage (DESIGN 4.6/4.7); the table codes follow from the second one on
+        if (first_run) {
+            first_run = false;
+            if (o.sin.to_int64() != 0 || o.cos.to_int64() != 0) {
+                if (st.sincos_bad++ == 0) st.first_bad = "first running call: codes not 0/0";
+            }
+            out_hist.push_back(out);
+            continue;
+        }
         ++st.sincos_checked;
         seen[static_cast<size_t>(ph)] = 1;
         if (o.sin.to_int64() != sn || o.cos.to_int64() != cs) {
@@ -260,7 +274,7 @@ load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, c
             st.z_ok = st.z_ok && ((out % period) + period) % period == period / 8;
             st.z_text += ", output phase at Z " + std::to_string(((out % period) + period) % period);
         }
-        if (tz >= 0 && t == tz + 2) st.sin_eq_cos_at_z = o.sin == o.cos && o.sin > 0;  // the codes of Z
+        if (tz >= 0 && t == tz + 3) st.sin_eq_cos_at_z = o.sin == o.cos && o.sin > 0;  // the codes of Z
         at_top = (ax.n == n_hi && o.backlog == 0) ? at_top + 1 : 0;
         if (at_top > 50) break;
     }
@@ -605,7 +619,7 @@ int main(int argc, char** argv) {
         for (long long t = 0; t < samples / 10 + 5; ++t) {
             lxt::map_table tb;
             tb.spacing_log2 = static_cast<int>(unii(4, 20));
-            const int npts = static_cast<int>(t % 7 == 0 ? (t % 2 ? 2 : 2048) : unii(2, 300));
+            const int npts = static_cast<int>(t % 7 == 0 ? (t % 2 ? 2 : lx::error_map_cfg::TBL_DEPTH) : unii(2, 300));
             tb.origin = (t % 11 == 0) ? (t % 2 ? rm::width_max(rm::kRegs[rm::idx::map_origin0])
                                                : rm::width_min(rm::kRegs[rm::idx::map_origin0]))
                                       : unii(-(int64_t(1) << 36), int64_t(1) << 36);
@@ -760,7 +774,7 @@ int main(int argc, char** argv) {
         lxt::map_table back;
         lxt::reg_image bad_geom;
         bad_geom.set(rm::idx::map_k1, 2);
-        res.check(!lxt::map_from_image(bad_geom, 1, std::vector<int32_t>(2048, 0), lxt::map_units::counts, &back, &err),
+        res.check(!lxt::map_from_image(bad_geom, 1, std::vector<int32_t>(lx::error_map_cfg::TBL_DEPTH, 0), lxt::map_units::counts, &back, &err),
                   "map_from_image accepted an invalid geometry");
 
         const auto bad_dds = [&](const char* what, int period, int amp, int mark_len, int dac_width, const char* word) {

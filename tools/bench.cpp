@@ -5,6 +5,8 @@
 // rows written per second (build + CSV + hex). Stimulus: a moving axis with a ratio of ~8.1.
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "golden/axis_chain.h"
@@ -19,9 +21,11 @@ using clk = std::chrono::steady_clock;
 double secs(clk::time_point a) { return std::chrono::duration<double>(clk::now() - a).count(); }
 
 volatile long long sink;
+const char* g_only = nullptr;  // --only KEY: run only the items whose name contains KEY
 
 template <typename F>
 void report(const char* name, long long n, F&& body) {
+    if (g_only && !std::strstr(name, g_only)) return;
     const clk::time_point t0 = clk::now();
     body(n);
     const double s = secs(t0);
@@ -31,8 +35,22 @@ void report(const char* name, long long n, F&& body) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // bench [CALLS] [--only KEY]: CALLS per item (default 2e7); --only runs the matching items
+    // alone (scripts/bench_ipc.sh counts their instructions per call under callgrind)
     long long n = 20000000;
-    if (argc > 1) n = std::atoll(argv[1]);
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--only" && i + 1 < argc) {
+            g_only = argv[++i];
+        } else {
+            char* end = nullptr;
+            n = std::strtoll(argv[i], &end, 10);
+            if (end == argv[i] || *end != '\0' || n < 1) {
+                std::fprintf(stderr, "bench: usage: bench [CALLS >= 1] [--only KEY]\n");
+                return 2;
+            }
+        }
+    }
     std::printf("laserax bench (%lld calls per item; 1 call = 1 clock)\n", n);
     const lx::axis_regs regs;
     auto pins_at = [](long long t, lx::axis_pins& p) {
@@ -110,6 +128,7 @@ int main(int argc, char** argv) {
         }
         sink = bad;
     });
+    if (g_only) return 0;
     {
         const long long rows = 200000;
         const clk::time_point t0 = clk::now();

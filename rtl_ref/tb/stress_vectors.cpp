@@ -22,7 +22,7 @@
 //   rephase_stress          random homing, reversals inside the window, rehome/unhome, periods and
 //                           mark lengths;
 //   dds_sincos_stress       table writes while running, every period preset up to 4096, amplitudes;
-//   error_map_stress        both banks written in full, every spacing k = 4..20 (n = 2, 2048, random),
+//   error_map_stress        both banks written in full, every spacing k = 4..20 (n = 2, TBL_DEPTH = 1024, random),
 //                           random reloads of the inactive bank and flips, extreme words, invalid
 //                           geometries, motion over both table ends with reversals and jumps,
 //                           map_en / homed toggles (see error_map_stress below);
@@ -103,7 +103,7 @@ vec_table top_stress(rng_t& r, long long calls) {
         gm.n_points = static_cast<unsigned>(mr.range(2, 300));
         if (mr.chance(5)) {  // an invalid geometry: map_cfg_err while enabled
             if (mr.chance(2)) gm.spacing_log2 = static_cast<unsigned>(mr.chance(2) ? mr.range(0, 3) : mr.range(21, 31));
-            else gm.n_points = static_cast<unsigned>(mr.chance(2) ? mr.range(0, 1) : mr.range(2049, 4095));
+            else gm.n_points = static_cast<unsigned>(mr.chance(2) ? mr.range(0, 1) : mr.range(lx::error_map_cfg::TBL_DEPTH + 1, (1 << lx::error_map_cfg::W_N) - 1));
         }
     };
     new_geom(mp.geom[0]);
@@ -222,7 +222,7 @@ vec_table top_stress(rng_t& r, long long calls) {
         if (mr.chance(1500)) new_geom(mp.geom[mr.range(0, 1)]);
         mp.we = mr.chance(3);
         if (mp.we) {
-            mp.addr = static_cast<unsigned>(mr.chance(50) ? mr.range(0, 2047) : mr.range(0, 299));
+            mp.addr = static_cast<unsigned>(mr.chance(50) ? mr.range(0, lx::error_map_cfg::TBL_DEPTH - 1) : mr.range(0, 299));
             const int64_t lim = mr.chance(30) ? (int64_t{1} << 23) - 1 : 3000;
             mp.data = mr.chance(400) ? (mr.chance(2) ? lim : -lim - 1) : mr.range(-lim, lim);
         }
@@ -499,10 +499,10 @@ vec_table dds_stress(rng_t& r, long long calls) {
 // at 0: no call may be active on a word that was never written), then every spacing k = 4..20 is
 // swept in turn, then random operation. Every call is one row; expected columns from hls/.
 //   A  bank 0 selected and inactive (homed 0, map_en 0 or an invalid geometry: cfg_err) while all
-//      2048 words of bank 1 are written
+//      TBL_DEPTH words of bank 1 are written
 //   B  bank 1 active (random valid geometry), positions sweeping across and beyond its table,
-//      while all 2048 words of bank 0 (the inactive bank) are written
-//   C  k = 4..20 in turn, alternating banks: a new geometry (n = 2, 2048 or random) for the
+//      while all TBL_DEPTH words of bank 0 (the inactive bank) are written
+//   C  k = 4..20 in turn, alternating banks: a new geometry (n = 2, TBL_DEPTH or random) for the
 //      inactive bank, a few words into it, the flip, a sweep from below the table to both ends
 //      (exactly) and beyond, and back
 //   D  random: reloads of the inactive bank (random geometry, invalid 1 in 6; table kinds: smooth
@@ -614,7 +614,7 @@ vec_table error_map_stress(rng_t& r, long long calls) {
             case 0: g.spacing_log2 = static_cast<unsigned>(r.range(0, C::K_MIN - 1)); break;
             case 1: g.spacing_log2 = static_cast<unsigned>(r.range(C::K_MAX + 1, 31)); break;
             case 2: g.n_points = static_cast<unsigned>(r.range(0, 1)); break;
-            default: g.n_points = static_cast<unsigned>(r.range(C::TBL_DEPTH + 1, 4095)); break;
+            default: g.n_points = static_cast<unsigned>(r.range(C::TBL_DEPTH + 1, (1 << C::W_N) - 1)); break;
         }
     };
     // a sweep of the selected bank's table: from below it to both ends (exactly), beyond, back

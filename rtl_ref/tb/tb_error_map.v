@@ -2,10 +2,10 @@
 // tb_error_map.v — vector testbench of rtl_ref/error_map.v.
 // Spec: block error_map of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
-// DUT: error_map (2 x 2048 x 24-bit table RAM, two registered reads, interpolation stage); the RAM
-// has no power-up contents: both vector sets write every word before a call that is active reads it
-// (the golden set after the chain scenario's map: a directed tail with flips, both table ends,
-// invalid geometries and every spacing).
+// DUT: error_map (2 banks x 1024 x 24-bit table RAM as even/odd RAMs, a sample every 32 calls,
+// 29-call latency); the RAMs start at 0 as the C++ tables; both vector sets still write every word
+// before a call that is active reads it (the golden set after the chain scenario's map: a directed
+// tail with flips, both table ends, invalid geometries and every spacing).
 // Reads one vector file in the format of docs/VECTORS.md: error_map.hex (golden vectors, `laserax
 // vectors`; CTest rtl_error_map) or error_map_stress.hex (rtl_stress_vectors,
 // rtl_ref/tb/stress_vectors.cpp, expected columns from hls/; CTest rtl_error_map_stress); both have
@@ -25,12 +25,12 @@
 //   field bank_sel in 1 unsigned
 //   field origin0 in 38 signed
 //   field k0 in 5 unsigned
-//   field n0 in 12 unsigned
+//   field n0 in 11 unsigned
 //   field origin1 in 38 signed
 //   field k1 in 5 unsigned
-//   field n1 in 12 unsigned
+//   field n1 in 11 unsigned
 //   field we in 1 unsigned
-//   field addr in 11 unsigned
+//   field addr in 10 unsigned
 //   field data in 24 signed
 //   field corr out 17 signed
 //   field delta out 18 signed
@@ -57,12 +57,12 @@ module tb_error_map;
     reg  i_bank_sel;
     reg  [37:0] i_origin0;
     reg  [4:0] i_k0;
-    reg  [11:0] i_n0;
+    reg  [10:0] i_n0;
     reg  [37:0] i_origin1;
     reg  [4:0] i_k1;
-    reg  [11:0] i_n1;
+    reg  [10:0] i_n1;
     reg  i_we;
-    reg  [10:0] i_addr;
+    reg  [9:0] i_addr;
     reg  [23:0] i_data;
     wire [16:0] o_corr;
     wire [17:0] o_delta;
@@ -105,12 +105,12 @@ module tb_error_map;
             i_bank_sel = row[216:216];
             i_origin0 = row[213:176];
             i_k0 = row[172:168];
-            i_n0 = row[167:156];
+            i_n0 = row[166:156];
             i_origin1 = row[153:116];
             i_k1 = row[112:108];
-            i_n1 = row[107:96];
+            i_n1 = row[106:96];
             i_we = row[92:92];
-            i_addr = row[90:80];
+            i_addr = row[89:80];
             i_data = row[79:56];
         end
     endtask
@@ -123,12 +123,12 @@ module tb_error_map;
             i_bank_sel = 1'd0;
             i_origin0 = 38'd0;
             i_k0 = 5'd0;
-            i_n0 = 12'd0;
+            i_n0 = 11'd0;
             i_origin1 = 38'd0;
             i_k1 = 5'd0;
-            i_n1 = 12'd0;
+            i_n1 = 11'd0;
             i_we = 1'd0;
-            i_addr = 11'd0;
+            i_addr = 10'd0;
             i_data = 24'd0;
         end
     endtask

@@ -55,12 +55,12 @@
 //   field bank_sel out 1 unsigned
 //   field map_origin0 out 38 signed
 //   field map_k0 out 5 unsigned
-//   field map_n0 out 12 unsigned
+//   field map_n0 out 11 unsigned
 //   field map_origin1 out 38 signed
 //   field map_k1 out 5 unsigned
-//   field map_n1 out 12 unsigned
+//   field map_n1 out 11 unsigned
 //   field map_we out 1 unsigned
-//   field map_addr out 11 unsigned
+//   field map_addr out 10 unsigned
 //   field map_data out 24 signed
 //   field comp_sync out 1 unsigned
 //   field comp_commit out 1 unsigned
@@ -115,12 +115,12 @@ module tb_laserax_regs;
     wire o_bank_sel;
     wire [37:0] o_map_origin0;
     wire [4:0] o_map_k0;
-    wire [11:0] o_map_n0;
+    wire [10:0] o_map_n0;
     wire [37:0] o_map_origin1;
     wire [4:0] o_map_k1;
-    wire [11:0] o_map_n1;
+    wire [10:0] o_map_n1;
     wire o_map_we;
-    wire [10:0] o_map_addr;
+    wire [9:0] o_map_addr;
     wire [23:0] o_map_data;
     wire o_comp_sync;
     wire o_comp_commit;
@@ -238,12 +238,12 @@ module tb_laserax_regs;
             check("bank_sel", row[168:168], o_bank_sel, 1, 0);
             check("map_origin0", row[165:128], o_map_origin0, 38, 1);
             check("map_k0", row[124:120], o_map_k0, 5, 0);
-            check("map_n0", row[119:108], o_map_n0, 12, 0);
+            check("map_n0", row[118:108], o_map_n0, 11, 0);
             check("map_origin1", row[105:68], o_map_origin1, 38, 1);
             check("map_k1", row[64:60], o_map_k1, 5, 0);
-            check("map_n1", row[59:48], o_map_n1, 12, 0);
+            check("map_n1", row[58:48], o_map_n1, 11, 0);
             check("map_we", row[44:44], o_map_we, 1, 0);
-            check("map_addr", row[42:32], o_map_addr, 11, 0);
+            check("map_addr", row[41:32], o_map_addr, 10, 0);
             check("map_data", row[31:8], o_map_data, 24, 1);
             check("comp_sync", row[4:4], o_comp_sync, 1, 0);
             check("comp_commit", row[0:0], o_comp_commit, 1, 0);

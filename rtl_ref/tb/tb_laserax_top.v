@@ -46,12 +46,12 @@
 //   field bank_sel in 1 unsigned
 //   field map_origin0 in 38 signed
 //   field map_k0 in 5 unsigned
-//   field map_n0 in 12 unsigned
+//   field map_n0 in 11 unsigned
 //   field map_origin1 in 38 signed
 //   field map_k1 in 5 unsigned
-//   field map_n1 in 12 unsigned
+//   field map_n1 in 11 unsigned
 //   field map_we in 1 unsigned
-//   field map_addr in 11 unsigned
+//   field map_addr in 10 unsigned
 //   field map_data in 24 signed
 //   field sin out 18 signed
 //   field cos out 18 signed
@@ -129,12 +129,12 @@ module tb_laserax_top;
     reg  i_bank_sel;
     reg  [37:0] i_map_origin0;
     reg  [4:0] i_map_k0;
-    reg  [11:0] i_map_n0;
+    reg  [10:0] i_map_n0;
     reg  [37:0] i_map_origin1;
     reg  [4:0] i_map_k1;
-    reg  [11:0] i_map_n1;
+    reg  [10:0] i_map_n1;
     reg  i_map_we;
-    reg  [10:0] i_map_addr;
+    reg  [9:0] i_map_addr;
     reg  [23:0] i_map_data;
     wire [17:0] o_sin;
     wire [17:0] o_cos;
@@ -279,12 +279,12 @@ module tb_laserax_top;
             i_bank_sel = row[764:764];
             i_map_origin0 = row[761:724];
             i_map_k0 = row[720:716];
-            i_map_n0 = row[715:704];
+            i_map_n0 = row[714:704];
             i_map_origin1 = row[701:664];
             i_map_k1 = row[660:656];
-            i_map_n1 = row[655:644];
+            i_map_n1 = row[654:644];
             i_map_we = row[640:640];
-            i_map_addr = row[638:628];
+            i_map_addr = row[637:628];
             i_map_data = row[627:604];
         end
     endtask
@@ -318,12 +318,12 @@ module tb_laserax_top;
             i_bank_sel = 1'd0;
             i_map_origin0 = 38'd0;
             i_map_k0 = 5'd0;
-            i_map_n0 = 12'd0;
+            i_map_n0 = 11'd0;
             i_map_origin1 = 38'd0;
             i_map_k1 = 5'd0;
-            i_map_n1 = 12'd0;
+            i_map_n1 = 11'd0;
             i_map_we = 1'd0;
-            i_map_addr = 11'd0;
+            i_map_addr = 10'd0;
             i_map_data = 24'd0;
         end
     endtask

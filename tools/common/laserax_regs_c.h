@@ -164,14 +164,14 @@
 #define LASERAX_REG_MAP_K0_RESET 10LL
 #define LASERAX_REG_MAP_K0_MIN 4LL
 #define LASERAX_REG_MAP_K0_MAX 20LL
-/* map_n0: number of table points used in bank 0. Bad value: outside 2..2048 -> map_cfg_err while map_en and bank 0 selected (map inactive) */
+/* map_n0: number of table points used in bank 0. Bad value: outside 2..1024 -> map_cfg_err while map_en and bank 0 selected (map inactive) */
 #define LASERAX_REG_MAP_N0_OFFSET 0xD8u
-#define LASERAX_REG_MAP_N0_WIDTH 12
+#define LASERAX_REG_MAP_N0_WIDTH 11
 #define LASERAX_REG_MAP_N0_WORDS 1
 #define LASERAX_REG_MAP_N0_SIGNED 0
-#define LASERAX_REG_MAP_N0_RESET 2048LL
+#define LASERAX_REG_MAP_N0_RESET 1024LL
 #define LASERAX_REG_MAP_N0_MIN 2LL
-#define LASERAX_REG_MAP_N0_MAX 2048LL
+#define LASERAX_REG_MAP_N0_MAX 1024LL
 /* map_origin1: position of table point 0 of bank 1 (comp coordinates). Bad value: none; a wrong origin shifts the correction (host side) */
 #define LASERAX_REG_MAP_ORIGIN1_OFFSET 0xE0u
 #define LASERAX_REG_MAP_ORIGIN1_WIDTH 38
@@ -186,23 +186,23 @@
 #define LASERAX_REG_MAP_K1_RESET 10LL
 #define LASERAX_REG_MAP_K1_MIN 4LL
 #define LASERAX_REG_MAP_K1_MAX 20LL
-/* map_n1: number of table points used in bank 1. Bad value: outside 2..2048 -> map_cfg_err while map_en and bank 1 selected (map inactive) */
+/* map_n1: number of table points used in bank 1. Bad value: outside 2..1024 -> map_cfg_err while map_en and bank 1 selected (map inactive) */
 #define LASERAX_REG_MAP_N1_OFFSET 0xF8u
-#define LASERAX_REG_MAP_N1_WIDTH 12
+#define LASERAX_REG_MAP_N1_WIDTH 11
 #define LASERAX_REG_MAP_N1_WORDS 1
 #define LASERAX_REG_MAP_N1_SIGNED 0
-#define LASERAX_REG_MAP_N1_RESET 2048LL
+#define LASERAX_REG_MAP_N1_RESET 1024LL
 #define LASERAX_REG_MAP_N1_MIN 2LL
-#define LASERAX_REG_MAP_N1_MAX 2048LL
+#define LASERAX_REG_MAP_N1_MAX 1024LL
 /* map_we: error-map table write enable: writes map_data to map_addr of bank !bank_sel in every clock while 1. Bad value: none (writes go to the bank not selected) */
 #define LASERAX_REG_MAP_WE_OFFSET 0x100u
 #define LASERAX_REG_MAP_WE_WIDTH 1
 #define LASERAX_REG_MAP_WE_WORDS 1
 #define LASERAX_REG_MAP_WE_SIGNED 0
 #define LASERAX_REG_MAP_WE_RESET 0LL
-/* map_addr: error-map table address 0 .. 2047. Bad value: an address >= map_n of that bank writes a word the map does not read */
+/* map_addr: error-map table address 0 .. 1023. Bad value: an address >= map_n of that bank writes a word the map does not read */
 #define LASERAX_REG_MAP_ADDR_OFFSET 0x108u
-#define LASERAX_REG_MAP_ADDR_WIDTH 11
+#define LASERAX_REG_MAP_ADDR_WIDTH 10
 #define LASERAX_REG_MAP_ADDR_WORDS 1
 #define LASERAX_REG_MAP_ADDR_SIGNED 0
 #define LASERAX_REG_MAP_ADDR_RESET 0LL
@@ -248,12 +248,12 @@
     X(BANK_SEL, 0xB0u, 1, 0, 0LL) \
     X(MAP_ORIGIN0, 0xC0u, 38, 1, 0LL) \
     X(MAP_K0, 0xD0u, 5, 0, 10LL) \
-    X(MAP_N0, 0xD8u, 12, 0, 2048LL) \
+    X(MAP_N0, 0xD8u, 11, 0, 1024LL) \
     X(MAP_ORIGIN1, 0xE0u, 38, 1, 0LL) \
     X(MAP_K1, 0xF0u, 5, 0, 10LL) \
-    X(MAP_N1, 0xF8u, 12, 0, 2048LL) \
+    X(MAP_N1, 0xF8u, 11, 0, 1024LL) \
     X(MAP_WE, 0x100u, 1, 0, 0LL) \
-    X(MAP_ADDR, 0x108u, 11, 0, 0LL) \
+    X(MAP_ADDR, 0x108u, 10, 0, 0LL) \
     X(MAP_DATA, 0x110u, 24, 1, 0LL) \
     X(COMP_SYNC, 0x118u, 1, 0, 0LL) \
     X(COMP_COMMIT, 0x120u, 1, 0, 0LL)

@@ -129,7 +129,7 @@ enum class map_units { counts, um };  // output counts (78.125 nm) or micrometre
 struct map_table {
     int64_t origin = 0;        // position of point 0, output counts (comp coordinates)
     int spacing_log2 = 10;     // points are 2^k output counts apart (4..20)
-    std::vector<double> corr;  // correction at each point (2..2048 points)
+    std::vector<double> corr;  // correction at each point (2..lx::error_map_cfg::TBL_DEPTH points)
     map_units units = map_units::counts;
 };
 
@@ -150,7 +150,8 @@ bool program_map(const map_table& t, bool activate, reg_image* img, map_load* ou
 
 // The two error-map banks as the core holds them (host-side model of the write port).
 struct map_ram {
-    std::vector<int32_t> bank[2] = {std::vector<int32_t>(2048, 0), std::vector<int32_t>(2048, 0)};
+    std::vector<int32_t> bank[2] = {std::vector<int32_t>(lx::error_map_cfg::TBL_DEPTH, 0),
+                                    std::vector<int32_t>(lx::error_map_cfg::TBL_DEPTH, 0)};
 };
 // Replays bus writes into img; while map_we is 1 after a write, map_data is stored at map_addr of
 // the bank not selected by bank_sel (the core writes every clock, so a held enable rewrites the

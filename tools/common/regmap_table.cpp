@@ -82,12 +82,12 @@ bool set(lx::axis_regs& r, int i, int64_t value) {
         case idx::bank_sel: r.emap.bank_sel = value != 0; return true;
         case idx::map_origin0: r.emap.geom[0].origin = lx::sint<38>(value); return true;
         case idx::map_k0: r.emap.geom[0].spacing_log2 = lx::uint<5>(value); return true;
-        case idx::map_n0: r.emap.geom[0].n_points = lx::uint<12>(value); return true;
+        case idx::map_n0: r.emap.geom[0].n_points = lx::uint<11>(value); return true;
         case idx::map_origin1: r.emap.geom[1].origin = lx::sint<38>(value); return true;
         case idx::map_k1: r.emap.geom[1].spacing_log2 = lx::uint<5>(value); return true;
-        case idx::map_n1: r.emap.geom[1].n_points = lx::uint<12>(value); return true;
+        case idx::map_n1: r.emap.geom[1].n_points = lx::uint<11>(value); return true;
         case idx::map_we: r.emap.we = value != 0; return true;
-        case idx::map_addr: r.emap.addr = lx::uint<11>(value); return true;
+        case idx::map_addr: r.emap.addr = lx::uint<10>(value); return true;
         case idx::map_data: r.emap.data = lx::sint<24>(value); return true;
         case idx::comp_sync: r.comp_sync = value != 0; return true;
         case idx::comp_commit: r.comp_commit = value != 0; return true;

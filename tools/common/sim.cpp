@@ -225,15 +225,15 @@ std::string dual_axis::integrity() {
         prev_use_sc_ = use_sc;
         const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
-        if (m.empty() && hist_n_ >= 2) {
-            const int64_t want = out_hist_[1];
+        if (m.empty() && hist_n_ >= kOutLag) {
+            const int64_t want = out_hist_[kOutLag - 1];
             if ((use_sc && dec_.sincos_pos() != want) || dec_.quad_pos() != want)
                 m = "integrity: controller decodes sin/cos " + std::to_string(dec_.sincos_pos()) + ", A/B " +
                     std::to_string(dec_.quad_pos()) + ", expected out_pos " + std::to_string(want);
         }
-        out_hist_[1] = out_hist_[0];
+        for (int i = kOutLag - 1; i > 0; --i) out_hist_[i] = out_hist_[i - 1];
         out_hist_[0] = g_.out_pos;
-        if (hist_n_ < 2) ++hist_n_;
+        if (hist_n_ < kOutLag) ++hist_n_;
     }
     prev_cfg_err_ = g_.cfg_err;
     cc_hist_[2] = cc_hist_[1];

@@ -106,7 +106,7 @@ private:
 // Convenience: both models, the same settings, stepped together and compared. Every call also
 // checks the position-integrity invariant from the outside:
 //   * the controller decoder (atan2 of the hls sin/cos, and the hls A/B) reconstructs exactly the
-//     golden out_pos of the call the outputs belong to (two calls back), never stepping by more
+//     golden out_pos of the call the outputs belong to (three calls back), never stepping by more
 //     than one count (sin/cos decoding is skipped when amp * 2pi / P < 8 codes per count);
 //   * golden paced + backlog == golden comp_pos + corr of three calls earlier (the pacer loses
 //     nothing; its paced and backlog taps are two calls late, DESIGN 4.4; corr is the error-map
@@ -144,7 +144,9 @@ private:
     uint64_t calls_ = 0;
     // integrity state
     controller_decoder dec_;
-    int64_t out_hist_[2] = {0, 0};  // golden out_pos of calls t-1 and t-2
+    // the outputs of call t belong to the rephase out_pos of call t-3 (DESIGN 4.7: dds 3 stages)
+    static constexpr int kOutLag = 3;
+    int64_t out_hist_[kOutLag] = {};  // golden out_pos of calls t-1 .. t-kOutLag
     int hist_n_ = 0;
     bool prev_cfg_err_ = true;
     int64_t cc_hist_[3] = {0, 0, 0};  // golden comp_pos + corr of calls t-1, t-2, t-3

@@ -414,18 +414,19 @@ struct map_pair {
 //      (extremes, exact half-count ties, noise), one per call
 //   1  bank 1 (origin 0, k 8, n 64) active: sweep from below the table to beyond it and back,
 //      landing on both ends exactly; meanwhile bank 0 (inactive) gets 48 words with extremes
-//   2  flip to bank 0 (origin 9001, k 5, n 48) below its table; sweep across it; meanwhile 2048
-//      words into bank 1 (the inactive bank); extreme positions and origins (39-bit offset)
-//   3  invalid geometries of the selected bank while enabled (k 3, 21, 31; n 0, 1, 2049, 4095),
+//   2  flip to bank 0 (origin 9001, k 5, n 48) below its table; sweep across it; meanwhile all
+//      TBL_DEPTH (1024) words into bank 1 (the inactive bank); extreme positions and origins (39-bit offset)
+//   3  invalid geometries of the selected bank while enabled (k 3, 21, 31; n 0, 1, 1025, 2047),
 //      each followed by recovery; an invalid one with map_en = 0 (no cfg_err)
 //   4  homed and map_en toggles, single-call pulses included
-//   5  every spacing k = 4 .. 20 in bank 1 (n = 2, 64 or 2048 by turns): flip to it below the
+//   5  every spacing k = 4 .. 20 in bank 1 (n = 2, 64 or 1024 by turns): flip to it below the
 //      table, travel to both ends exactly and beyond, reverse, flip back
 //   6  a flip every 1..5 calls while moving across both tables; then a random walk with random
 //      flips and toggles up to the tail length
 bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint64_t seed, vec_table& t,
               std::string* err) {
     constexpr int32_t kMax = (1 << 23) - 1, kMin = -(1 << 23);
+    constexpr int kDepth = golden::error_map::kDepth;
     std::mt19937_64 rng(seed ^ 0x656d61705f7461ULL);
     auto urange = [&rng](int64_t lo, int64_t hi) {
         return lo + static_cast<int64_t>(rng() % static_cast<uint64_t>(hi - lo + 1));
@@ -462,7 +463,7 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
     // 0: reload bank 1 while bank 0 is selected with an invalid geometry (enabled: cfg_err)
     r.map_en = true;
     r.bank_sel = false;
-    r.geom[0] = {0, 0, 2048};
+    r.geom[0] = {0, 0, kDepth};
     r.geom[1] = {0, 8, 64};
     std::vector<int32_t> t1(64);
     for (int i = 0; i < 64; ++i)
@@ -493,8 +494,8 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
     go(8000, 200);
     for (int j = 0; j < 6; ++j) go(8000 + ((j & 1) ? 1 : -1) * (300 + 17 * j), 3);
 
-    // 2: flip to bank 0 (p below its table); 2048 words into bank 1 meanwhile
-    std::vector<int32_t> tb(2048);
+    // 2: flip to bank 0 (p below its table); kDepth words into bank 1 meanwhile
+    std::vector<int32_t> tb(kDepth);
     {
         int64_t v = urange(kMin / 2, kMax / 2);
         for (size_t a = 0; a < tb.size(); ++a) {
@@ -503,7 +504,7 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
             tb[a] = static_cast<int32_t>(a % 97 == 5 ? kMax : a % 97 == 50 ? kMin : v);
         }
         tb[0] = kMin;
-        tb[2047] = kMax;
+        tb[kDepth - 1] = kMax;
     }
     queue(tb);
     r.bank_sel = false;
@@ -529,7 +530,7 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
 
     // 3: invalid geometries of the selected bank while enabled, each followed by recovery
     const golden::error_map_geom g0 = r.geom[0];
-    const int bad_k[] = {3, 21, 31}, bad_n[] = {0, 1, 2049, 4095};
+    const int bad_k[] = {3, 21, 31}, bad_n[] = {0, 1, kDepth + 1, 2 * kDepth - 1};
     for (int k : bad_k) {
         r.geom[0].spacing_log2 = k;
         go(p + 20, 3);
@@ -575,7 +576,7 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
         call();
     }
     for (int k = 4; k <= 20; ++k) {
-        const int n = k % 3 == 0 ? 2 : (k % 3 == 1 ? 2048 : 64);
+        const int n = k % 3 == 0 ? 2 : (k % 3 == 1 ? kDepth : 64);
         const int64_t span = int64_t(n - 1) << k;
         const int64_t speed = 1 + span / 40;
         r.geom[1] = {p + 100 + k, k, n};
@@ -591,7 +592,7 @@ bool map_tail(map_pair& m, int64_t p, bool homed, golden::error_map_regs r, uint
     }
 
     // 6: rapid flips between the two tables, then a random walk to the tail length
-    r.geom[1] = {-3000, 6, 2048};
+    r.geom[1] = {-3000, 6, kDepth};
     p = 8000;
     long long next_flip = 0;
     while (ok && p < 11000 && t.rows.size() < end) {

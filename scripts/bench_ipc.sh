@@ -1,0 +1,33 @@
+#!/usr/bin/env bash
+# bench_ipc.sh — instructions per simulated clock of every bench item (issue 13's deterministic
+# figure): each item runs alone (`bench CALLS --only KEY`) under valgrind --tool=callgrind at two
+# lengths, and the figure is (Ir(long) - Ir(short)) / (calls(long) - calls(short)), so start-up
+# and the reading of the default table cancel out. Instruction counts of a fixed binary on a fixed
+# stimulus are deterministic (no timer, no sampling).
+#   bash scripts/bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]
+set -euo pipefail
+bench=${1:?usage: bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]}
+short=${2:-100000}
+long=${3:-300000}
+command -v valgrind >/dev/null || { echo "bench_ipc.sh: valgrind not installed (make deps)"; exit 1; }
+# KEY|label (KEY: a substring of the bench item name)
+items=("axis_core|hls axis_core (full chain)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
+       "output_pacer|hls output_pacer" "rephase|hls rephase" "dds_sincos|hls dds_sincos"
+       "golden axis_chain|golden axis_chain" "tb style|hls + golden + compare (tb style)")
+measure() {  # CALLS KEY -> "instructions calls"
+    local out ir calls
+    out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bench" "$1" --only "$2" 2>&1)
+    ir=$(printf '%s\n' "$out" | sed -n 's/.*Collected : *\([0-9]*\).*/\1/p' | tail -n 1)
+    calls=$(printf '%s\n' "$out" | sed -n 's/.*(\([0-9]*\) calls in .*/\1/p' | tail -n 1)
+    [ -n "$ir" ] && [ -n "$calls" ] || { echo "bench_ipc.sh: no figure for '$2':"; printf '%s\n' "$out" | tail -5; exit 1; }
+    echo "$ir $calls"
+}
+echo "instructions per simulated clock (valgrind callgrind, Ir; ($long - $short)-call difference per item):"
+for it in "${items[@]}"; do
+    key=${it%%|*}
+    label=${it#*|}
+    read -r i1 c1 < <(measure "$short" "$key")
+    read -r i2 c2 < <(measure "$long" "$key")
+    awk -v l="$label" -v i1="$i1" -v i2="$i2" -v c1="$c1" -v c2="$c2" \
+        'BEGIN { printf "  %-34s %10.1f instructions / clock\n", l, (i2 - i1) / (c2 - c1) }'
+done
