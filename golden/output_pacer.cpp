@@ -12,17 +12,33 @@ output_pacer::out output_pacer::step(int64_t delta, int64_t pace_m, uint64_t thr
 
     backlog_ = backlog_ + delta - emit;
     paced_ += emit;
-    // Reading: "at least M calls apart" with the M of the call that emits (DESIGN: the timer
-    // is loaded with M-1 at the emission, a later change of M does not shorten/lengthen the
-    // running wait). pace_m < 1 is outside the register's legal range (2..65535).
-    if (emit != 0) next_emit_call_ = calls_ + pace_m;
+    // Reading: "at least max(M, 2) calls apart" with the M of the call that emits (DESIGN: the
+    // timer is loaded with M-1 at the emission and no count follows in the next call; a later
+    // change of M does not shorten/lengthen the running wait). M = 0: the 16-bit timer is loaded
+    // with 65535, i.e. the next count is allowed 65536 calls later.
+    if (emit != 0) {
+        const int64_t gap = pace_m == 0 ? 65536 : (pace_m < 2 ? 2 : pace_m);
+        next_emit_call_ = calls_ + gap;
+    }
     ++calls_;
 
-    const uint64_t mag = backlog_ < 0 ? static_cast<uint64_t>(-backlog_) : static_cast<uint64_t>(backlog_);
-    const bool ovs = mag > thr;
+    // ovs: |B(t-4)| > thr(t-1), B(t-4) = hist[3] before the shift
+    const int64_t b4 = hist_b_[3];
+    const uint64_t mag = b4 < 0 ? static_cast<uint64_t>(-b4) : static_cast<uint64_t>(b4);
+    const bool ovs = mag > thr_prev_;
+    thr_prev_ = thr;
     // ovs_st set by ovs, cleared by clear when !ovs (set wins)
     ovs_st_ = ovs || (ovs_st_ && !clear);
-    return out{emit, paced_, backlog_, ovs, ovs_st_};
+
+    // taps: B(t-2), P(t-2) = hist[1] before the shift
+    const out o{emit, hist_p_[1], hist_b_[1], ovs, ovs_st_};
+    for (int i = 3; i > 0; --i) {
+        hist_b_[i] = hist_b_[i - 1];
+        hist_p_[i] = hist_p_[i - 1];
+    }
+    hist_b_[0] = backlog_;
+    hist_p_[0] = paced_;
+    return o;
 }
 
 }  // namespace golden

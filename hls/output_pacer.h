@@ -1,13 +1,22 @@
 // output_pacer.h — rate limiter for the compensated count stream.
 //
 // DESIGN §4.4. Incoming count deltas (any size: a ratio update can jump by thousands) are added to
-// a signed backlog; one count at a time leaves, at most one per M calls. Nothing is dropped: the
-// backlog drains at 1/M counts per call once motion stops, and a backlog above the threshold
-// raises an alarm (pulse plus sticky flag, cleared by `clear` once the backlog is below again).
-// The emitted count is decided from the registers before the call (registered output).
+// a signed backlog; one count at a time leaves, at most one per max(M, 2) calls. Nothing is
+// dropped: the backlog drains at 1/M counts per call once motion stops, and a backlog above the
+// threshold raises an alarm (pulse plus sticky flag, cleared by `clear` once the backlog is below
+// again). The emitted count is decided from the registers before the call (registered output).
 //
-// Widths: backlog 40 signed, timer 16, paced position 38 signed. Latency: delta in at call t,
-// the first count leaves at call t+1.
+// Hardware form (no carry chain over 22 bits): the backlog is kept as X = B + e_prev (the emitted
+// count leaves X one call later, when no count can be emitted), split at L = 20 bits with a
+// registered carry, X = (hi + cq) * 2^20 + lo. The emit decision needs only sign and zero of X:
+// equality trees on hi (== 0, -1, +1) and lo (== 0) and the sign bit of hi, no chain (the RTL
+// registers the first level of the trees, 4-bit pieces, and timer == 0 with the halves). The taps
+// paced and backlog are formed off the loop, two calls late; ovs compares the backlog tap with
+// the threshold in split pieces over two more calls.
+//
+// Widths: lo 20 unsigned, hi 20 signed, cq 2 signed, timer 16, paced tap 19 + 19 bits, backlog
+// tap 20 + 20 bits. Latency: delta in at call t, the first count leaves at call t+1; taps paced,
+// backlog: 2 calls; ovs: 4 calls (threshold of the previous call).
 #ifndef LASERAX_HLS_OUTPUT_PACER_H
 #define LASERAX_HLS_OUTPUT_PACER_H
 
@@ -19,9 +28,24 @@ struct output_pacer_cfg {
     static constexpr int W_PACE = 16;  // M register
     static constexpr int W_THR = 32;   // backlog alarm threshold
     static constexpr int W_BACKLOG = axis_widths::W_BACKLOG;
+    static constexpr int W_POS = axis_widths::W_POS;
+    static constexpr int L = W_BACKLOG / 2;          // 20: backlog split point
+    static constexpr int W_HI = W_BACKLOG - L;       // 20
+    static constexpr int LP = W_POS / 2;             // 19: paced split point
+    static constexpr int W_PHI = W_POS - LP;         // 19
+    static constexpr int W_THI = W_THR - L;          // 12: upper half of thr
+    static constexpr int LH = L / 2;                 // 10: halves of the lower compare
     using pace_t = uint<W_PACE>;
     using thr_t = uint<W_THR>;
-    using mag_t = uint<W_BACKLOG>;  // |backlog|
+    using lo_t = uint<L>;
+    using hi_t = sint<W_HI>;
+    using cy_t = sint<2>;          // carry -1, 0, +1
+    using t_t = sint<L + 2>;       // lo + delta_lo - e: -1 .. 2^(L+1) - 2
+    using plo_t = uint<LP>;
+    using phi_t = sint<W_PHI>;
+    using pt_t = sint<LP + 2>;     // plo + e: -1 .. 2^LP
+    using cmp_t = sint<W_HI + 2>;  // hi half against the thr half
+    using thi_t = uint<W_THI>;
 };
 
 class output_pacer {
@@ -29,50 +53,137 @@ public:
     using cfg = output_pacer_cfg;
     struct out_t {
         step_t pstep = 0;
-        pos_t paced = 0;
-        backlog_t backlog = 0;
-        bool ovs = false;
+        pos_t paced = 0;      // tap: P(t-2)
+        backlog_t backlog = 0;  // tap: B(t-2)
+        bool ovs = false;     // |B(t-4)| > thr(t-1)
         bool ovs_st = false;
     };
 
     output_pacer() { reset(); }
 
     void reset() {
-        backlog_ = 0;
+        lo_ = 0;
+        hi_ = 0;
+        cq_ = 0;
+        e_prev_ = 0;
         timer_ = 0;
-        paced_ = 0;
+        a_hi_ = 0;
+        a_lo_ = 0;
+        a_cy_ = 0;
+        b_hi_ = 0;
+        b_lo_ = 0;
+        p_lo_ = 0;
+        p_lo_d_ = 0;
+        p_hi_ = 0;
+        p_cy_ = 0;
+        o_y1_ = false;
+        o_y0_ = false;
+        o_cl_ = false;
+        ovs_ = false;
         ovs_st_ = false;
     }
 
     out_t step(delta_t delta, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
+        // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
+        const bool hi_neg = hi_ < 0;
+        bool h_zero = false;  // hi + cq == 0
+        bool h_neg = false;   // hi + cq < 0
+        if (cq_ == 0) {
+            h_zero = hi_ == 0;
+            h_neg = hi_neg;
+        } else if (cq_ > 0) {
+            h_zero = hi_ == -1;
+            h_neg = hi_neg && hi_ != -1;
+        } else {
+            h_zero = hi_ == 1;
+            h_neg = hi_neg || hi_ == 0;
+        }
+        const bool x_nz = !(h_zero && lo_ == 0);
         step_t emit = 0;
-        if (timer_ == 0 && backlog_ != 0) emit = (backlog_ > 0) ? step_t(1) : step_t(-1);
-        const backlog_t bl = backlog_ + delta - emit;
+        if (timer_ == 0 && e_prev_ == 0 && x_nz) emit = h_neg ? step_t(-1) : step_t(1);
+
+        // ---- ovs, second stage: select with the registered lower carry ----
+        const bool ovs = o_cl_ ? o_y1_ : o_y0_;
+        // ---- ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr of this call ----
+        const cfg::thi_t t_hi = cfg::thi_t(thr >> cfg::L);
+        const cfg::lo_t t_lo = cfg::lo_t(thr);
+        // B > thr: b_hi > t_hi, or equal halves and b_lo > t_lo
+        const bool gt = (cfg::cmp_t(b_hi_) > cfg::cmp_t(t_hi)) ||
+                        (cfg::cmp_t(b_hi_) == cfg::cmp_t(t_hi) && b_lo_ > t_lo);
+        // B < -thr: (b_hi + t_hi + cs) < 0 with cs the carry of b_lo + t_lo, cs = cl ? cu1 : cu0
+        // from the 10-bit halves; both outcomes of cl are registered
+        const cfg::cmp_t u = cfg::cmp_t(b_hi_) + cfg::cmp_t(t_hi);
+        const bool neg0 = u < 0;
+        const bool neg1 = cfg::cmp_t(u + 1) < 0;
+        const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo_ >> cfg::LH), bl_l = uint<cfg::LH>(b_lo_);
+        const uint<cfg::LH> tl_h = uint<cfg::LH>(t_lo >> cfg::LH), tl_l = uint<cfg::LH>(t_lo);
+        const bool cl = (uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH != 0;
+        const bool cu0 = (uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH != 0;
+        const bool cu1 = (uint<cfg::LH + 1>(bl_h) + tl_h + 1) >> cfg::LH != 0;
+        o_y1_ = gt || (cu1 ? neg1 : neg0);
+        o_y0_ = gt || (cu0 ? neg1 : neg0);
+        o_cl_ = cl;
+
+        // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
+        // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
+        b_hi_ = cfg::hi_t(a_hi_ + a_cy_);
+        b_lo_ = a_lo_;
+        const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
+        a_lo_ = cfg::lo_t(al);
+        a_cy_ = cfg::cy_t(al >> cfg::L);
+        a_hi_ = cfg::hi_t(hi_ + cq_);
+        // paced: split counter fed by e(t-1); the lower half is delayed one call
+        p_lo_d_ = p_lo_;
+        p_hi_ = cfg::phi_t(p_hi_ + p_cy_);
+        const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
+        p_lo_ = cfg::plo_t(ps);
+        p_cy_ = cfg::cy_t(ps >> cfg::LP);
+
+        // ---- X' = X + delta - e_prev (split, registered carry) ----
+        const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) - e_prev_);
+        const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
+        hi_ = cfg::hi_t(hi_ + d_hi + cq_);
+        lo_ = cfg::lo_t(t);
+        cq_ = cfg::cy_t(t >> cfg::L);
+
+        // ---- timer ----
         if (emit != 0) {
             timer_ = pace_m - 1;
         } else if (timer_ != 0) {
             timer_ = timer_ - 1;
         }
-        paced_ = paced_ + emit;
-        backlog_ = bl;
-        const cfg::mag_t mag = (bl < 0) ? cfg::mag_t(-bl) : cfg::mag_t(bl);
-        const bool ovs = mag > thr;
+        e_prev_ = emit;
+
+        ovs_ = ovs;
         if (clear) ovs_st_ = false;
         if (ovs) ovs_st_ = true;
 
         out_t o;
         o.pstep = emit;
-        o.paced = paced_;
-        o.backlog = backlog_;
-        o.ovs = ovs;
+        o.paced = pos_t(pos_t(p_hi_) * (int64_t(1) << cfg::LP) + p_lo_d_);
+        o.backlog = backlog_t(backlog_t(b_hi_) * (int64_t(1) << cfg::L) + b_lo_);
+        o.ovs = ovs_;
         o.ovs_st = ovs_st_;
         return o;
     }
 
 private:
-    backlog_t backlog_;
+    cfg::lo_t lo_;       // X = (hi + cq) * 2^L + lo
+    cfg::hi_t hi_;
+    cfg::cy_t cq_;
+    step_t e_prev_;      // emitted count of the previous call (pstep register)
     cfg::pace_t timer_;
-    pos_t paced_;
+    cfg::hi_t a_hi_;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)
+    cfg::lo_t a_lo_;
+    cfg::cy_t a_cy_;
+    cfg::hi_t b_hi_;     // backlog tap, stage B: B(t-2)
+    cfg::lo_t b_lo_;
+    cfg::plo_t p_lo_;    // paced tap: split counter
+    cfg::plo_t p_lo_d_;
+    cfg::phi_t p_hi_;
+    cfg::cy_t p_cy_;
+    bool o_y1_, o_y0_, o_cl_;  // ovs first stage: the result for either lower carry, the carry
+    bool ovs_;
     bool ovs_st_;
 };
 

@@ -4,13 +4,15 @@
 // output_pacer::step(); every output is a register holding the out_t of that call.
 // Synchronous active-high reset = output_pacer::reset() (all zero).
 //
-//   emit     = (timer == 0 && backlog != 0) ? sgn(backlog) : 0     (registers before the edge)
-//   backlog' = backlog + delta - emit
-//   paced'   = paced + emit
-//   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0)
-//   ovs      = |backlog'| > thr (pulse); ovs_st cleared by clear, set by ovs (event wins)
-// Widths: backlog 40 signed, timer 16, paced 38 signed. Latency: delta in at call t, the first
-// count leaves at call t+1.
+//   emit     = (timer == 0 && e_prev == 0 && B != 0) ? sgn(B) : 0   (registers before the edge)
+//   B'       = B + delta - emit
+//   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0);  e_prev' = emit
+//   taps: paced = P(t-2), backlog = B(t-2); ovs = |B(t-4)| > thr(t-1) (pulse); ovs_st cleared by
+//   clear, set by ovs (event wins)
+// Hardware form (no carry chain over 22 bits): X = B + e_prev = (hi + cq) * 2^20 + lo with a
+// registered carry cq; sign and zero of X from equality trees on hi and lo (no chain); three-operand
+// sums through a 3:2 carry-save layer; the taps in two register stages off the loop.
+// Latency: delta in at call t, the first count leaves at call t+1; taps 2 calls, ovs 4 calls.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -18,14 +20,22 @@ module output_pacer (
     input  wire               i_clk,
     input  wire               i_rst,     // synchronous, active high: output_pacer::reset()
     input  wire signed [38:0] i_delta,   // comp(t) - comp(t-1) from the multiplier
-    input  wire [15:0]        i_pace_m,  // M: at least M calls between two emitted counts
+    input  wire [15:0]        i_pace_m,  // M: at least max(M, 2) calls between two emitted counts
     input  wire [31:0]        i_thr,     // backlog alarm threshold
     input  wire               i_clear,   // register pulse: clears ovs_st (unless ovs)
     output wire signed [1:0]  o_pstep,   // emitted count: -1, 0, +1
-    output wire signed [37:0] o_paced,   // paced position
-    output wire signed [39:0] o_backlog, // counts still to emit
-    output wire               o_ovs,     // pulse: |backlog| > thr
+    output wire signed [37:0] o_paced,   // paced position P(t-2) (tap)
+    output wire signed [39:0] o_backlog, // counts still to emit, B(t-2) (tap)
+    output wire               o_ovs,     // pulse: |B(t-4)| > thr(t-1)
     output wire               o_ovs_st   // sticky
+`ifdef FORMAL
+    ,
+    output wire signed [41:0] f_o_c0,    // formal only: B + P of this call (B(t) + P(t))
+    output wire signed [41:0] f_o_c1,    //   of the previous call
+    output wire signed [41:0] f_o_c2,    //   of two calls earlier
+    output wire signed [41:0] f_o_p,     //   P(t)
+    output wire               f_o_init   //   reset seen
+`endif
 );
 
     // ---- fixed widths (hls: output_pacer_cfg, axis_widths) -----------------------------------
@@ -34,70 +44,254 @@ module output_pacer (
     localparam integer W_POS     = 38;   // paced position
     localparam integer W_DELTA   = 39;   // input delta
     localparam integer W_BACKLOG = 40;   // backlog, signed
+    localparam integer L         = W_BACKLOG / 2;   // 20: backlog split point
+    localparam integer W_HI      = W_BACKLOG - L;   // 20
+    localparam integer LP        = W_POS / 2;       // 19: paced split point
+    localparam integer W_PHI     = W_POS - LP;      // 19
+    localparam integer W_THI     = W_THR - L;       // 12
+    localparam integer W_T       = L + 2;           // lo + delta_lo - e_prev
 
     // ---- registers ---------------------------------------------------------------------------
-    reg signed [W_BACKLOG-1:0] backlog_q;
-    reg        [W_PACE-1:0]    timer_q;
-    reg signed [W_POS-1:0]     paced_q;
-    reg                        ovs_st_q;
-    reg signed [1:0]           pstep_q;
-    reg                        ovs_q;
+    reg        [L-1:0]     lo_q;       // X = (hi + cq) * 2^L + lo
+    reg signed [W_HI-1:0]  hi_q;
+    reg signed [1:0]       cq_q;
+    reg signed [1:0]       e_prev_q;   // emitted count of the previous call (= o_pstep)
+    reg        [W_PACE-1:0] timer_q;
+    reg signed [W_HI-1:0]  a_hi_q;     // backlog tap, stage A: B(t-1) halves and carry
+    reg        [L-1:0]     a_lo_q;
+    reg signed [1:0]       a_cy_q;
+    reg signed [W_HI-1:0]  b_hi_q;     // backlog tap, stage B: B(t-2)
+    reg        [L-1:0]     b_lo_q;
+    reg        [LP-1:0]    p_lo_q;     // paced tap: split counter, lower half delayed one call
+    reg        [LP-1:0]    p_lo_d_q;
+    reg signed [W_PHI-1:0] p_hi_q;
+    reg signed [1:0]       p_cy_q;
+    reg                    ovs_q;
+    reg                    ovs_st_q;
 
-    // ---- next state --------------------------------------------------------------------------
-    wire                       emit_nz = (timer_q == {W_PACE{1'b0}}) && (backlog_q != {W_BACKLOG{1'b0}});
-    wire signed [1:0]          emit    = emit_nz ? (backlog_q[W_BACKLOG-1] ? -2'sd1 : 2'sd1) : 2'sd0;
-    wire signed [W_BACKLOG-1:0] emit_x  = {{(W_BACKLOG-2){emit[1]}}, emit};
-    wire signed [W_BACKLOG-1:0] delta_x = {{(W_BACKLOG-W_DELTA){i_delta[W_DELTA-1]}}, i_delta};
-    wire signed [W_BACKLOG-1:0] bl      = backlog_q + delta_x - emit_x;
-    wire        [W_PACE-1:0]   timer_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}
-                                       : (timer_q != {W_PACE{1'b0}}) ? timer_q - {{(W_PACE-1){1'b0}}, 1'b1}
-                                       : {W_PACE{1'b0}};
-    wire signed [W_POS-1:0]    paced_d = paced_q + {{(W_POS-2){emit[1]}}, emit};
-    wire        [W_BACKLOG-1:0] mag    = bl[W_BACKLOG-1] ? -bl : bl;   // |backlog'|, unsigned
-    wire                       ovs_d   = mag > {{(W_BACKLOG-W_THR){1'b0}}, i_thr};
-    wire                       ovs_st_d = ovs_d || (ovs_st_q && !i_clear);
+    // ---- emit decision: sign and zero of X, equality trees (no carry chain) ------------------
+    // The first level of the trees is registered with the halves: 4-bit pieces of hi' and lo'
+    // all zero / all one (and the lowest piece of hi' == 1), and timer' == 0.
+    localparam integer NH = W_HI / 4;               // 5 pieces of hi
+    localparam integer NL = L / 4;                  // 5 pieces of lo
+    reg [NH-1:0]  hz_q, ho_q;                      // piece of hi all 0 / all 1
+    reg           h1_q;                            // hi[3:0] == 1
+    reg [NL-1:0]  lz_q;                            // piece of lo all 0
+    reg           tz_q;                            // timer == 0
+    wire hi_neg  = hi_q[W_HI-1];
+    wire hi_z    = &hz_q;
+    wire hi_m1   = &ho_q;
+    wire hi_p1   = h1_q && (&hz_q[NH-1:1]);
+    wire cq_zero = cq_q == 2'sd0;
+    wire cq_pos  = cq_q == 2'sd1;
+    wire h_zero  = cq_zero ? hi_z : (cq_pos ? hi_m1 : hi_p1);                 // hi + cq == 0
+    wire h_neg   = cq_zero ? hi_neg : (cq_pos ? (hi_neg && !hi_m1) : (hi_neg || hi_z)); // hi + cq < 0
+    wire x_nz    = !(h_zero && (&lz_q));
+    wire emit_nz = tz_q && (e_prev_q == 2'sd0) && x_nz;
+    wire signed [1:0] emit = emit_nz ? (h_neg ? -2'sd1 : 2'sd1) : 2'sd0;
+
+    // ---- X' = X + delta - e_prev: 3:2 carry-save layer, then one chain per half -------------
+    // lower half: lo + delta[L-1:0] - e_prev in W_T bits (-1 .. 2^(L+1) - 2)
+    wire [W_T-1:0] t_a  = {2'b00, lo_q};
+    wire [W_T-1:0] t_b  = {2'b00, i_delta[L-1:0]};
+    reg            e_pos_q;                                                  // e_prev == +1
+    wire [W_T-1:0] t_n  = {{(W_T-1){e_pos_q}}, e_prev_q[0]};                // -e_prev
+    wire [W_T-1:0] t_s  = t_a ^ t_b ^ t_n;
+    wire [W_T-1:0] t_k  = {((t_a[W_T-2:0] & t_b[W_T-2:0]) | (t_a[W_T-2:0] & t_n[W_T-2:0]) |
+                            (t_b[W_T-2:0] & t_n[W_T-2:0])), 1'b0};
+`ifndef FORMAL_SUM
+    wire [W_T-1:0] t_sum = t_s + t_k;
+`else
+    // conservation proof only: the plain sum (the block's own proof shows the two are equal)
+    wire [W_T-1:0] t_sum = t_a + t_b + t_n;
+`endif
+    // upper half: hi + (delta >> L) + cq (mod 2^W_HI)
+    wire [W_HI-1:0] h_a = hi_q;
+    wire [W_HI-1:0] h_b = {{(W_HI-(W_DELTA-L)){i_delta[W_DELTA-1]}}, i_delta[W_DELTA-1:L]};
+    wire [W_HI-1:0] h_n = {{(W_HI-2){cq_q[1]}}, cq_q};                         // cq, sign-extended
+    wire [W_HI-1:0] h_s = h_a ^ h_b ^ h_n;
+    wire [W_HI-1:0] h_k = {((h_a[W_HI-2:0] & h_b[W_HI-2:0]) | (h_a[W_HI-2:0] & h_n[W_HI-2:0]) |
+                            (h_b[W_HI-2:0] & h_n[W_HI-2:0])), 1'b0};
+`ifndef FORMAL_SUM
+    wire [W_HI-1:0] h_sum = h_s + h_k;
+`else
+    wire [W_HI-1:0] h_sum = h_a + h_b + h_n;
+`endif
+
+    // ---- timer -------------------------------------------------------------------------------
+    wire              tz_d    = emit_nz ? (i_pace_m == {{(W_PACE-1){1'b0}}, 1'b1})
+                                        : (timer_q[W_PACE-1:1] == {(W_PACE-1){1'b0}});
+    wire [W_PACE-1:0] timer_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}
+                              : (timer_q != {W_PACE{1'b0}}) ? timer_q - {{(W_PACE-1){1'b0}}, 1'b1}
+                              : {W_PACE{1'b0}};
+
+    // ---- taps (off the loop) -----------------------------------------------------------------
+    wire signed [W_HI-1:0] a_hi_d = hi_q + {{(W_HI-2){cq_q[1]}}, cq_q};
+    wire [W_T-1:0]         al     = {2'b00, lo_q} - {{(W_T-2){e_prev_q[1]}}, e_prev_q};
+    wire signed [W_HI-1:0] b_hi_d = a_hi_q + {{(W_HI-2){a_cy_q[1]}}, a_cy_q};
+    wire [LP+1:0]          ps     = {2'b00, p_lo_q} + {{LP{e_prev_q[1]}}, e_prev_q};
+    wire signed [W_PHI-1:0] p_hi_d = p_hi_q + {{(W_PHI-2){p_cy_q[1]}}, p_cy_q};
+
+    // ---- ovs: |B(t-3)| > thr on the stage-B tap, split compares ------------------------------
+    // B = bh * 2^L + bl, thr = th * 2^L + tl (th: 12 bits). B > thr: bh > th, or bh == th and
+    // bl > tl. B < -thr: bh + th + carry(bl + tl) < 0. Every compare is split into pieces of at
+    // most 12 bits (no chain over 13 bits): bh against th through its upper 8 bits (all 0 / all 1)
+    // and a 12-bit compare or carry; bl against tl in two 10-bit halves.
+    localparam integer LH = L / 2;                  // 10
+    wire [W_THI-1:0]  t_hi   = i_thr[W_THR-1:L];
+    wire [L-1:0]      t_lo   = i_thr[L-1:0];
+    wire [W_THI-1:0]  bh_low = b_hi_q[W_THI-1:0];
+    wire              bh_neg = b_hi_q[W_HI-1];
+    wire              bh_top0 = b_hi_q[W_HI-1:W_THI] == {(W_HI-W_THI){1'b0}};
+    wire              bh_top1 = b_hi_q[W_HI-1:W_THI] == {(W_HI-W_THI){1'b1}};
+    wire              gt_hi  = !bh_neg && (!bh_top0 || (bh_low > t_hi));       // bh > th
+    wire              eq_hi  = bh_top0 && (bh_low == t_hi);                    // bh == th
+    wire [W_THI:0]    sh0    = {1'b0, bh_low} + {1'b0, t_hi};
+    wire [W_THI:0]    sh1    = {1'b0, bh_low} + {1'b0, t_hi} + {{W_THI{1'b0}}, 1'b1};
+    wire              neg0   = bh_neg && (!bh_top1 || !sh0[W_THI]);            // bh + th < 0
+    wire              neg1   = bh_neg && (!bh_top1 || !sh1[W_THI]);            // bh + th + 1 < 0
+    wire [LH-1:0]     bl_h   = b_lo_q[L-1:LH];
+    wire [LH-1:0]     bl_l   = b_lo_q[LH-1:0];
+    wire [LH-1:0]     tl_h   = t_lo[L-1:LH];
+    wire [LH-1:0]     tl_l   = t_lo[LH-1:0];
+    wire              gt_lh  = bl_h > tl_h;
+    wire              eq_lh  = bl_h == tl_h;
+    wire              gt_ll  = bl_l > tl_l;                                    // bl > tl: lh, or eq and ll
+    wire [LH:0]       cl     = {1'b0, bl_l} + {1'b0, tl_l};
+    wire [LH:0]       cu0    = {1'b0, bl_h} + {1'b0, tl_h};
+    wire [LH:0]       cu1    = {1'b0, bl_h} + {1'b0, tl_h} + {{LH{1'b0}}, 1'b1};
+    // first stage (registered): every piece is one chain or one tree; the second stage combines
+    // them: B > thr = gt_hi | eq_hi & (gt_lh | eq_lh & gt_ll); carry(bl + tl) = cl ? cu1 : cu0
+    // selects neg1 / neg0
+    reg               o_gt_hi_q, o_eq_hi_q, o_gt_lh_q, o_eq_lh_q, o_gt_ll_q;
+    reg               o_neg0_q, o_neg1_q, o_cl_q, o_cu0_q, o_cu1_q;
+    wire              o_gt   = o_gt_hi_q || (o_eq_hi_q && (o_gt_lh_q || (o_eq_lh_q && o_gt_ll_q)));
+    wire              o_cs   = o_cl_q ? o_cu1_q : o_cu0_q;
+    wire              ovs_d  = o_gt || (o_cs ? o_neg1_q : o_neg0_q);              // second stage
+    wire                   ovs_st_d = ovs_d || (ovs_st_q && !i_clear);
+
+    // the registered first level of the trees, from the new halves
+    wire [NH-1:0] hz_d = {h_sum[19:16] == 4'h0, h_sum[15:12] == 4'h0, h_sum[11:8] == 4'h0,
+                          h_sum[7:4] == 4'h0, h_sum[3:0] == 4'h0};
+    wire [NH-1:0] ho_d = {h_sum[19:16] == 4'hf, h_sum[15:12] == 4'hf, h_sum[11:8] == 4'hf,
+                          h_sum[7:4] == 4'hf, h_sum[3:0] == 4'hf};
+    wire [NL-1:0] lz_d = {t_sum[19:16] == 4'h0, t_sum[15:12] == 4'h0, t_sum[11:8] == 4'h0,
+                          t_sum[7:4] == 4'h0, t_sum[3:0] == 4'h0};
 
     always @(posedge i_clk) begin
         if (i_rst) begin
-            backlog_q <= {W_BACKLOG{1'b0}};
-            timer_q   <= {W_PACE{1'b0}};
-            paced_q   <= {W_POS{1'b0}};
-            ovs_st_q  <= 1'b0;
-            pstep_q   <= 2'sd0;
-            ovs_q     <= 1'b0;
+            hz_q     <= {NH{1'b1}};
+            ho_q     <= {NH{1'b0}};
+            h1_q     <= 1'b0;
+            lz_q     <= {NL{1'b1}};
+            tz_q     <= 1'b1;
+            e_pos_q  <= 1'b0;
+            lo_q     <= {L{1'b0}};
+            hi_q     <= {W_HI{1'b0}};
+            cq_q     <= 2'sd0;
+            e_prev_q <= 2'sd0;
+            timer_q  <= {W_PACE{1'b0}};
+            a_hi_q   <= {W_HI{1'b0}};
+            a_lo_q   <= {L{1'b0}};
+            a_cy_q   <= 2'sd0;
+            b_hi_q   <= {W_HI{1'b0}};
+            b_lo_q   <= {L{1'b0}};
+            p_lo_q   <= {LP{1'b0}};
+            p_lo_d_q <= {LP{1'b0}};
+            p_hi_q   <= {W_PHI{1'b0}};
+            p_cy_q   <= 2'sd0;
+            o_gt_hi_q <= 1'b0;
+            o_eq_hi_q <= 1'b0;
+            o_gt_lh_q <= 1'b0;
+            o_eq_lh_q <= 1'b0;
+            o_gt_ll_q <= 1'b0;
+            o_neg0_q  <= 1'b0;
+            o_neg1_q  <= 1'b0;
+            o_cl_q    <= 1'b0;
+            o_cu0_q   <= 1'b0;
+            o_cu1_q   <= 1'b0;
+            ovs_q    <= 1'b0;
+            ovs_st_q <= 1'b0;
         end else begin
-            backlog_q <= bl;
-            timer_q   <= timer_d;
-            paced_q   <= paced_d;
-            ovs_st_q  <= ovs_st_d;
-            pstep_q   <= emit;
-            ovs_q     <= ovs_d;
+            o_gt_hi_q <= gt_hi;
+            o_eq_hi_q <= eq_hi;
+            o_gt_lh_q <= gt_lh;
+            o_eq_lh_q <= eq_lh;
+            o_gt_ll_q <= gt_ll;
+            o_neg0_q  <= neg0;
+            o_neg1_q  <= neg1;
+            o_cl_q    <= cl[LH];
+            o_cu0_q   <= cu0[LH];
+            o_cu1_q   <= cu1[LH];
+            hz_q     <= hz_d;
+            ho_q     <= ho_d;
+            h1_q     <= h_sum[3:0] == 4'h1;
+            lz_q     <= lz_d;
+            tz_q     <= tz_d;
+            e_pos_q  <= emit_nz && !h_neg;
+            lo_q     <= t_sum[L-1:0];
+            cq_q     <= t_sum[W_T-1:L];
+            hi_q     <= h_sum;
+            e_prev_q <= emit;
+            timer_q  <= timer_d;
+            a_hi_q   <= a_hi_d;
+            a_lo_q   <= al[L-1:0];
+            a_cy_q   <= al[W_T-1:L];
+            b_hi_q   <= b_hi_d;
+            b_lo_q   <= a_lo_q;
+            p_lo_d_q <= p_lo_q;
+            p_lo_q   <= ps[LP-1:0];
+            p_cy_q   <= ps[LP+1:LP];
+            p_hi_q   <= p_hi_d;
+            ovs_q    <= ovs_d;
+            ovs_st_q <= ovs_st_d;
         end
     end
 
-    assign o_pstep   = pstep_q;
-    assign o_paced   = paced_q;
-    assign o_backlog = backlog_q;
+    assign o_pstep   = e_prev_q;
+    assign o_paced   = {p_hi_q, p_lo_d_q};
+    assign o_backlog = {b_hi_q, b_lo_q};
     assign o_ovs     = ovs_q;
     assign o_ovs_st  = ovs_st_q;
 
 `ifdef FORMAL
     // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
     // Checked after the first reset. The f_* registers record what the pacer saw in each call.
-    // Conservation (backlog + paced = sum of the deltas) is checked in the harness
-    // rtl_ref/formal/fv_output_pacer.v, which tracks the input sum.
+    // Conservation (backlog + paced = sum of the deltas two calls earlier) is checked in the
+    // harness rtl_ref/formal/fv_output_pacer.v, which tracks the input sum; the f_o_* ports give
+    // it B + P of the present and the two previous calls (formal-only ports).
+    localparam integer FW = 42;
     reg                   f_init, f_rst_p, f_clear_p, f_ovs_st_p;
     reg [W_THR-1:0]       f_thr_p;
     reg [W_PACE:0]        f_m;      // M in force at the last emitted count (0 read as 2^16)
     reg [W_PACE+1:0]      f_since;  // calls since the last emitted count, saturating
+    reg [W_BACKLOG:0]     f_bmag_p, f_bmag_p2; // |backlog tap| before the last / last but one edge
+    reg [W_THR-1:0]       f_thr_p2;
+    reg                   f_rst_p2;
+    reg signed [FW-1:0]   f_pc, f_b1, f_pc1, f_b2, f_pc2;   // P(t); B, P of calls t-1, t-2
+    reg signed [1:0]      f_e1;     // emitted count of the previous call
     initial f_init = 1'b0;
 
     localparam [W_PACE+1:0] F_SINCE_MAX = {(W_PACE+2){1'b1}};
     wire [W_PACE:0] f_m_now = (i_pace_m == {W_PACE{1'b0}}) ? {1'b1, {W_PACE{1'b0}}}
                                                             : {1'b0, i_pace_m};
-    // |backlog| computed independently, one bit wider
-    wire [W_BACKLOG:0] f_mag = backlog_q[W_BACKLOG-1] ? ({1'b0, ~backlog_q} + 1'b1)
-                                                      : {1'b0, backlog_q};
+    // X = (hi + cq) * 2^L + lo and B = X - e_prev, computed arithmetically (independent of the trees)
+    wire signed [FW-L-1:0] f_h = $signed({{(FW-L-W_HI){hi_q[W_HI-1]}}, hi_q}) +
+                                 $signed({{(FW-L-2){cq_q[1]}}, cq_q});
+    wire signed [FW-1:0] f_x = {f_h, lo_q};
+    wire signed [FW-1:0] f_bnow = f_x - $signed({{(FW-2){e_prev_q[1]}}, e_prev_q});
+    wire signed [FW-1:0] f_btap = $signed({{(FW-W_BACKLOG){b_hi_q[W_HI-1]}}, b_hi_q, b_lo_q});
+    wire [W_HI-1:0]      f_ah   = a_hi_q + {{(W_HI-2){a_cy_q[1]}}, a_cy_q};
+    wire [W_BACKLOG-1:0] f_atap = {f_ah, a_lo_q};     // modulo 2^W_BACKLOG
+    wire signed [FW-1:0] f_ptap = $signed({{(FW-W_POS){p_hi_q[W_PHI-1]}}, p_hi_q, p_lo_d_q});
+    wire [W_PHI-1:0]     f_ph   = p_hi_q + {{(W_PHI-2){p_cy_q[1]}}, p_cy_q};
+    wire [W_POS-1:0]     f_pint = {f_ph, p_lo_q};     // modulo 2^W_POS
+    wire [W_BACKLOG:0] f_bmag = f_btap[FW-1] ? -f_btap[W_BACKLOG:0] : f_btap[W_BACKLOG:0];
+    assign f_o_c0 = f_bnow + f_pc;
+    assign f_o_c1 = f_b1 + f_pc1;
+    assign f_o_c2 = f_b2 + f_pc2;
+    assign f_o_p  = f_pc;
+    assign f_o_init = f_init;
 
     always @(posedge i_clk) begin
         if (i_rst) f_init <= 1'b1;
@@ -105,33 +299,91 @@ module output_pacer (
         f_clear_p  <= i_clear;
         f_ovs_st_p <= ovs_st_q;
         f_thr_p    <= i_thr;
+        f_bmag_p   <= f_bmag;
+        f_bmag_p2  <= f_bmag_p;
+        f_thr_p2   <= f_thr_p;
+        f_rst_p2   <= f_rst_p;
         if (i_rst) begin
             f_since <= F_SINCE_MAX;
             f_m     <= {(W_PACE+1){1'b0}};
-        end else if (emit_nz) begin
-            f_since <= {{(W_PACE+1){1'b0}}, 1'b1};
-            f_m     <= f_m_now;
-        end else if (f_since != F_SINCE_MAX) begin
-            f_since <= f_since + 1'b1;
+            f_pc    <= {FW{1'b0}};
+            f_b1    <= {FW{1'b0}};
+            f_pc1   <= {FW{1'b0}};
+            f_b2    <= {FW{1'b0}};
+            f_pc2   <= {FW{1'b0}};
+            f_e1    <= 2'sd0;
+        end else begin
+            if (emit_nz) begin
+                f_since <= {{(W_PACE+1){1'b0}}, 1'b1};
+                f_m     <= f_m_now;
+            end else if (f_since != F_SINCE_MAX) begin
+                f_since <= f_since + 1'b1;
+            end
+            f_pc  <= f_pc + $signed({{(FW-2){emit[1]}}, emit});
+            f_b1  <= f_bnow;
+            f_pc1 <= f_pc;
+            f_b2  <= f_b1;
+            f_pc2 <= f_pc1;
+            f_e1  <= e_prev_q;
         end
     end
 
     always @* begin
+`ifndef FORMAL_SUM
+        // (the conservation proof, -DFORMAL_SUM, leaves out what it does not need; the
+        // block's own proof checks all of it)
         if (f_init && !f_rst_p) begin
-            // alarm exactly when |backlog| > threshold (threshold of the same call)
-            assert(ovs_q == (f_mag > {{(W_BACKLOG-W_THR+1){1'b0}}, f_thr_p}));
+            // alarm exactly when |backlog of four calls earlier| > threshold of the previous call
+            if (!f_rst_p2) assert(ovs_q == (f_bmag_p2 > {{(W_BACKLOG-W_THR+1){1'b0}}, f_thr_p2}));
+            // helper invariant (induction): the first stage holds that result for either carry
+            assert(ovs_d == (f_bmag_p > {{(W_BACKLOG-W_THR+1){1'b0}}, f_thr_p}));
             assert(ovs_st_q == (ovs_q || (f_ovs_st_p && !f_clear_p)));
         end
         if (f_init) begin
-            // at most one count per M calls: a count leaves only M or more calls after the
-            // previous one (M as set at the previous count)
+            // the trees give the zero test and the sign of X
+            assert(x_nz == (f_x != {FW{1'b0}}));
+            if (x_nz) assert(h_neg == f_x[FW-1]);
+            // at most one count per max(M, 2) calls: a count leaves only M or more calls after
+            // the previous one (M as set at the previous count), never in two consecutive calls
             if (emit_nz) assert(f_since >= {1'b0, f_m});
-            // the count has the sign of the backlog
-            if (emit_nz) assert(emit == (backlog_q[W_BACKLOG-1] ? -2'sd1 : 2'sd1));
+            if (emit_nz) assert(f_since >= 2);
+            // the count has the sign of the backlog, and a count leaves whenever it may
+            if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
+            if (timer_q == {W_PACE{1'b0}} && e_prev_q == 2'sd0 && f_bnow != 0) assert(emit_nz);
             // helper invariant (induction): the timer is what is left of the gap
             assert(timer_q == ((f_since >= {1'b0, f_m}) ? {W_PACE{1'b0}}
                                                          : (f_m - f_since[W_PACE:0])));
-            if (!f_rst_p) assert(pstep_q == 2'sd0 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
+            if (!f_rst_p) assert(e_prev_q == 2'sd0 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
+        end
+`endif
+        if (f_init) begin
+            if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
+            // the carry-save sums equal the plain sums (the conservation proof uses the plain ones)
+            assert(t_sum == t_a + t_b + t_n);
+            assert(h_sum == h_a + h_b + h_n);
+            // the registered first level of the trees matches the halves (helper invariant)
+            assert(hz_q == {hi_q[19:16] == 4'h0, hi_q[15:12] == 4'h0, hi_q[11:8] == 4'h0,
+                            hi_q[7:4] == 4'h0, hi_q[3:0] == 4'h0});
+            assert(ho_q == {hi_q[19:16] == 4'hf, hi_q[15:12] == 4'hf, hi_q[11:8] == 4'hf,
+                            hi_q[7:4] == 4'hf, hi_q[3:0] == 4'hf});
+            assert(h1_q == (hi_q[3:0] == 4'h1));
+            assert(lz_q == {lo_q[19:16] == 4'h0, lo_q[15:12] == 4'h0, lo_q[11:8] == 4'h0,
+                            lo_q[7:4] == 4'h0, lo_q[3:0] == 4'h0});
+            assert(tz_q == (timer_q == {W_PACE{1'b0}}));
+            assert(e_pos_q == (e_prev_q == 2'sd1));
+            // counts and carries are -1, 0 or +1 (helper invariant)
+            assert(e_prev_q != -2'sd2 && cq_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 &&
+                   f_e1 != -2'sd2);
+`ifndef FORMAL_SUM
+            // the taps: stage A holds B(t-1), stage B B(t-2); paced P(t-2); the paced counter
+            // P(t-1) (modulo the register widths: the halves wrap like the whole would)
+            assert(f_atap == f_b1[W_BACKLOG-1:0]);
+            assert(f_btap[W_BACKLOG-1:0] == f_b2[W_BACKLOG-1:0]);
+            assert(f_ptap[W_POS-1:0] == f_pc2[W_POS-1:0]);
+            assert(f_pint == f_pc1[W_POS-1:0]);
+            assert(f_pc1 == f_pc - $signed({{(FW-2){e_prev_q[1]}}, e_prev_q}));
+            assert(f_pc2 == f_pc1 - $signed({{(FW-2){f_e1[1]}}, f_e1}));
+`endif
         end
     end
 `endif

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # formal.sh — formal proofs of the reference RTL (CTest formal and formal_selftest; docs/FORMAL.md).
 #
-# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all), exit 1 on failure
+# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all but output_pacer_sum), exit 1 on failure
 #        scripts/formal.sh --selftest                each scripted mutation of rtl_ref/ (made in a
 #                                                    temp dir) must make its proof fail
 # Engine: Yosys' built-in SAT solver (`sat -tempinduct`: BMC base case plus k-induction;
@@ -12,7 +12,10 @@
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RTL="$ROOT/rtl_ref"
-ALL=(quad_decoder quad_decoder_pins output_pacer output_pacer_sum)
+# output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
+# it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
+# (a broken copy fails in the base case within seconds).
+ALL=(quad_decoder quad_decoder_pins output_pacer)
 
 die() { echo "formal: $*" >&2; exit 1; }
 command -v yosys >/dev/null || die "yosys not installed (make deps)"
@@ -23,7 +26,7 @@ proof_spec() {
     quad_decoder)      echo "quad_decoder|input_filter.v quad_decoder.v|-tempinduct -maxsteps 8" ;;
     quad_decoder_pins) echo "fv_quad_decoder|input_filter.v quad_decoder.v formal/fv_quad_decoder.v|-seq 16" ;;
     output_pacer)      echo "output_pacer|output_pacer.v|-tempinduct -maxsteps 8" ;;
-    output_pacer_sum)  echo "fv_output_pacer|output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
+    output_pacer_sum)  echo "fv_output_pacer|-DFORMAL_SUM output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
     *) return 1 ;;
     esac
 }
@@ -33,7 +36,7 @@ run_proof() {
     local rtl="$1" name="$2" logdir="$3" spec top files opts f list=""
     spec="$(proof_spec "$name")" || die "unknown proof $name"
     IFS='|' read -r top files opts <<<"$spec"
-    for f in $files; do list="$list $rtl/$f"; done
+    for f in $files; do case "$f" in -*) list="$list $f" ;; *) list="$list $rtl/$f" ;; esac; done
     yosys -q -l "$logdir/$name.log" -p "read_verilog -formal$list; prep -top $top; flatten; async2sync; dffunmap; sat $opts -prove-asserts -set-assumes" >/dev/null 2>&1 || return 1
     grep -q 'SUCCESS!' "$logdir/$name.log"
 }
@@ -45,8 +48,9 @@ MUTATIONS=(
   "qd_err_wraps|quad_decoder.v|quad_decoder|s/if (err_cnt_d != ERRCNT_MAX) err_cnt_d/if (1'b1) err_cnt_d/"
   "qd_pins_latency|input_filter.v|quad_decoder_pins|s/wire             rdy_inc = seen2 >= {1'b0, need};/wire             rdy_inc = seen2 > {1'b0, need};/"
   "op_gap|output_pacer.v|output_pacer|s/emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/emit_nz ? i_pace_m - {{(W_PACE-2){1'b0}}, 2'd2}/"
-  "op_alarm|output_pacer.v|output_pacer|s/ovs_d   = mag > /ovs_d   = mag >= /"
-  "op_conservation|output_pacer.v|output_pacer_sum|s/paced_q + {{(W_POS-2){emit\[1\]}}, emit}/paced_q + {{(W_POS-1){1'b0}}, emit[0]}/"
+  "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"
+  "op_conservation|output_pacer.v|output_pacer_sum|s/t_n  = {{(W_T-1){e_pos_q}}, e_prev_q\[0\]};/t_n  = {{(W_T-1){1'b0}}, e_prev_q[0]};/"
+  "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
 )
 
 selftest() {

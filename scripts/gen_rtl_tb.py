@@ -517,6 +517,8 @@ def rtl_ports(path, module, params):
     if not m:
         raise SpecError("%s: no module %s" % (path, module))
     header = re.sub(r"//[^\n]*", "", m.group(0))
+    # formal-only ports (`ifdef FORMAL ... `endif) are not part of the simulated interface
+    header = re.sub(r"^\s*`ifdef\s+FORMAL\b.*?^\s*`endif", "", header, flags=re.M | re.S)
     values = {k: v for k, v in params if re.fullmatch(r"[0-9]+", v)}
     ports = {}
     for d, sgn, rng, name in PORT_RE.findall(header):

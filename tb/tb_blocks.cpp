@@ -8,7 +8,9 @@
 //   laser error bursts, clears and random minimum spacing: every output equal; a clean sequence
 //   of k edges counts exactly k; each illegal transition raises the flag and bumps the counter.
 // output_pacer: random deltas including huge jumps, random M and threshold: every output equal;
-//   consecutive counts are >= M calls apart; paced + backlog == sum of deltas; drains fully.
+//   consecutive counts are >= max(M, 2) calls apart; paced + backlog (taps, two calls late) ==
+//   sum of the deltas up to two calls earlier; ovs == |backlog of four calls earlier| > thr;
+//   drains fully; every fifth run with jumps up to 2^37 and thresholds over all 32 bits.
 #include <random>
 
 #include "golden/input_filter.h"
@@ -217,17 +219,38 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
         lx::output_pacer h;
         golden::output_pacer g;
         g.reset();
-        const int m = 2 + static_cast<int>(rng() % 7);
-        const uint64_t thr = 1 + rng() % 300;
+        // M = 1 is outside the legal range; the block still keeps two counts apart (DESIGN 4.4)
+        const int m = rep % 10 == 9 ? 1 : 2 + static_cast<int>(rng() % 7);
+        // every fifth run: jumps up to +-2^37 (taken back by the next jump, so the backlog
+        // drains) and a threshold anywhere in 32 bits (the split halves of the hardware form)
+        const bool big = rep % 5 == 3;
+        const uint64_t thr = big ? (rng() % 2 ? rng() % 0x100000000ull : rng() % 0x300000ull) : 1 + rng() % 300;
+        int64_t pending_jump = 0;
+        int64_t bl_hist[2] = {0, 0};  // backlog tap of calls t-1, t-2 (0 before the first call)
         int64_t sum = 0;
+        int64_t sum_1 = 0, sum_2 = 0;  // sum of the deltas up to one / two calls earlier
         long last_emit = -1000000;
         for (long t = 0; t < 60000; ++t) {
             int64_t delta = 0;
             if (t < 50000) {
                 const uint64_t k = rng() % 1000;
                 if (k < 100) delta = static_cast<int64_t>(rng() % 17) - 8;
-                else if (k == 100) delta = static_cast<int64_t>(rng() % 4001) - 2000;  // ratio jump
+                else if (k == 100 && !big) delta = static_cast<int64_t>(rng() % 4001) - 2000;  // ratio jump
+                else if (k == 100 && pending_jump != 0) {
+                    delta = -pending_jump;
+                    pending_jump = 0;
+                } else if (k == 100) {
+                    const int sh = static_cast<int>(rng() % 38);
+                    delta = static_cast<int64_t>(rng() % (uint64_t(1) << sh)) * (rng() % 2 ? 1 : -1);
+                    pending_jump = delta;
+                }
             }
+            if (t == 49999 && pending_jump != 0) {  // take the last jump back: the backlog drains
+                delta -= pending_jump;
+                pending_jump = 0;
+            }
+            sum_2 = sum_1;
+            sum_1 = sum;
             sum += delta;
             const bool clear = rng() % 5000 == 0;
             const lx::output_pacer::out_t ho = h.step(delta, m, thr, clear);
@@ -240,17 +263,27 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
                            std::to_string(ho.backlog.to_int64()) + "/" + std::to_string(go.backlog) + " (hls/golden)";
                 }))
                 break;
+            // ovs compares the backlog of four calls earlier (the tap of two calls earlier) with
+            // the threshold of the previous call (constant here; 0 > thr is never true at t = 0)
+            {
+                const int64_t b4 = bl_hist[1];
+                const uint64_t mag = b4 < 0 ? uint64_t(-b4) : uint64_t(b4);
+                res.expect(ho.ovs == (mag > thr), [&] { return "pacer ovs at call " + std::to_string(t); });
+            }
+            bl_hist[1] = bl_hist[0];
+            bl_hist[0] = ho.backlog.to_int64();
             if (ho.pstep != 0) {
-                res.expect(t - last_emit >= m, [&] { return "pacer emitted counts closer than M"; });
+                res.expect(t - last_emit >= (m < 2 ? 2 : m), [&] { return "pacer emitted counts closer than max(M, 2)"; });
                 last_emit = t;
             }
-            res.expect(ho.paced.to_int64() + ho.backlog.to_int64() == sum,
+            // the taps paced and backlog are two calls late (DESIGN 4.4)
+            res.expect(ho.paced.to_int64() + ho.backlog.to_int64() == sum_2,
                        [&] { return "pacer lost counts at call " + std::to_string(t); });
         }
         // after motion stops the backlog drains at one count per M calls, exactly
         lx::output_pacer::out_t o = h.step(0, m, thr, false);
         const int64_t left = o.backlog.to_int64() < 0 ? -o.backlog.to_int64() : o.backlog.to_int64();
-        const int64_t limit = left * m + m;
+        const int64_t limit = left * (m < 2 ? 2 : m) + m + 4;  // + the two calls of tap latency
         int64_t k = 0;
         while (o.backlog != 0 && k < limit) {
             o = h.step(0, m, thr, false);

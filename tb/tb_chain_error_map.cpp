@@ -15,7 +15,7 @@
 // the combined datapath (ratio, offset, interpolated map) is compared with the golden model.
 // Checks:
 //   * every call: every output and tap of hls equals golden (lxt::dual_axis, which also checks
-//     paced + backlog == previous comp + previous corr and that the controller decodes out_pos);
+//     paced + backlog (taps) == comp + corr of three calls earlier and that the controller decodes out_pos);
 //   * corr == 0 while the map is disabled or the axis not homed; map_cfg_err never puts the chain
 //     in the safe state (cfg_err stays 0, the axis stays homed) and raises alarm;
 //   * after each dwell, once the pacer has drained: the position a controller decodes from the

@@ -11,7 +11,7 @@
 //   * every output and every block tap of hls equals the golden model exactly, and the
 //     position-integrity invariant holds (lxt::dual_axis: controller decode of sin/cos and A/B
 //     == golden out_pos, comp == floor((N*R + OFF) / 2^32) by a 128-bit reference,
-//     paced + backlog == comp);
+//     paced + backlog == comp + corr of three calls earlier);
 //   * the decoder's raw count equals the true fringe count except across flagged events: the
 //     testbench reads the flags at quiet points, re-synchronises after a flagged event and clears
 //     the flags like a host would; a count lost with no flag raised fails the test.

@@ -11,7 +11,7 @@
 // axis moves or stands. Checks:
 //   * hls == golden on every call, and the integrity invariant of lxt::dual_axis (controller
 //     decode == out_pos, comp == floor((N*R + OFF)/2^32) with the registers in force,
-//     paced + backlog == comp);
+//     paced + backlog == comp + corr of three calls earlier);
 //   * every update reaches the output exactly: once the pacer has drained after an update, the
 //     real position seen by the controller (out_pos - adj) equals floor((N R_new + OFF_new) / 2^32);
 //   * no step larger than the pacer allows: consecutive paced counts are >= M clocks apart and the

@@ -208,6 +208,7 @@ std::string dual_axis::integrity() {
         // (re)start: the chain is in reset; the controller re-synchronises at position 0
         dec_.reset(static_cast<int>(s_.period), 0);
         hist_n_ = 0;
+        cc_hist_[0] = cc_hist_[1] = cc_hist_[2] = 0;
         settled_ = 0;
     } else {
         __extension__ typedef __int128 i128;
@@ -216,9 +217,9 @@ std::string dual_axis::integrity() {
         ++settled_;
         if (settled_ > 2 * golden::pulse_multiplier::K_REBASE + L_MUL && g_.comp_pos != want_comp)
             m = "integrity: comp_pos " + std::to_string(g_.comp_pos) + " != floor((N*R + OFF) / 2^32) " + std::to_string(want_comp);
-        else if (g_.paced_pos + g_.backlog != prev_comp_ + prev_corr_)
+        else if (g_.paced_pos + g_.backlog != cc_hist_[2])  // pacer taps: 2 calls late (DESIGN 4.4)
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
-                " != previous comp + corr " + std::to_string(prev_comp_ + prev_corr_);
+                " != comp + corr of three calls earlier " + std::to_string(cc_hist_[2]);
         const bool use_sc = static_cast<double>(s_.amplitude) * 6.283185307179586 / static_cast<double>(s_.period) >= 8.0;
         if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
         prev_use_sc_ = use_sc;
@@ -235,10 +236,11 @@ std::string dual_axis::integrity() {
         if (hist_n_ < kOutLag) ++hist_n_;
     }
     prev_cfg_err_ = g_.cfg_err;
-    prev_comp_ = g_.cfg_err ? 0 : g_.comp_pos;
+    cc_hist_[2] = cc_hist_[1];
+    cc_hist_[1] = cc_hist_[0];
+    cc_hist_[0] = g_.cfg_err ? 0 : g_.comp_pos + g_.corr;
     for (int i = L_MUL; i > 0; --i) raw_hist_[i] = raw_hist_[i - 1];
     raw_hist_[0] = g_.cfg_err ? 0 : g_.raw_count;
-    prev_corr_ = g_.cfg_err ? 0 : g_.corr;
     return m;
 }
 

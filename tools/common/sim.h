@@ -108,8 +108,9 @@ private:
 //   * the controller decoder (atan2 of the hls sin/cos, and the hls A/B) reconstructs exactly the
 //     golden out_pos of the call the outputs belong to (three calls back), never stepping by more
 //     than one count (sin/cos decoding is skipped when amp * 2pi / P < 8 codes per count);
-//   * golden paced + backlog == golden comp_pos + corr of the previous call (the pacer loses
-//     nothing; corr is the error-map correction, 0 while the map is disabled);
+//   * golden paced + backlog == golden comp_pos + corr of three calls earlier (the pacer loses
+//     nothing; its paced and backlog taps are two calls late, DESIGN 4.4; corr is the error-map
+//     correction, 0 while the map is disabled);
 //   * golden comp_pos == floor((N * R + OFF) / 2^32) with N the raw count of call t - 1 - L_MUL
 //     (128-bit), on every call once the pair (R, OFF) in force has been unchanged for
 //     2 * K_REBASE + L_MUL calls since its last change or the last restart (DESIGN 4.3: an update
@@ -148,7 +149,7 @@ private:
     int64_t out_hist_[kOutLag] = {};  // golden out_pos of calls t-1 .. t-kOutLag
     int hist_n_ = 0;
     bool prev_cfg_err_ = true;
-    int64_t prev_comp_ = 0, prev_corr_ = 0;
+    int64_t cc_hist_[3] = {0, 0, 0};  // golden comp_pos + corr of calls t-1, t-2, t-3
     static constexpr int L_MUL = golden::pulse_multiplier::L_MUL;
     int64_t raw_hist_[L_MUL + 1] = {};  // golden raw_count of calls t-1 .. t-1-L_MUL
     long long settled_ = 0;             // calls since the pair in force last changed (or restart)
