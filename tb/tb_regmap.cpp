@@ -242,19 +242,18 @@ load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, c
             continue;
         }
         const int64_t out = o.out_pos.to_int64();
-        const int ph = static_cast<int>(((out_hist[out_hist.size() - 3] % period) + period) % period);
-        int64_t sn = 0, cs = 0;
-        table_sincos(words, period, amp, ph, &sn, &cs);
         // the first running call after the safe state still shows the reset codes 0/0 of the DDS
         // output stage (DESIGN 4.6/4.7); the table codes follow from the second one on
         if (first_run) {
             first_run = false;
-            if (o.sin.to_int64() != 0 || o.cos.to_int64() != 0) {
-                if (st.sincos_bad++ == 0) st.first_bad = "first running call: codes not 0/0";
-            }
+            if ((o.sin.to_int64() != 0 || o.cos.to_int64() != 0) && st.sincos_bad++ == 0)
+                st.first_bad = "first running call: codes not 0/0";
             out_hist.push_back(out);
             continue;
         }
+        const int ph = static_cast<int>(((out_hist[out_hist.size() - 3] % period) + period) % period);
+        int64_t sn = 0, cs = 0;
+        table_sincos(words, period, amp, ph, &sn, &cs);
         ++st.sincos_checked;
         seen[static_cast<size_t>(ph)] = 1;
         if (o.sin.to_int64() != sn || o.cos.to_int64() != cs) {
