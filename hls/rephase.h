@@ -4,17 +4,32 @@
 // counts. At A (rising edge of the debounced reference switch) the block computes the extra
 // advance d in [0, P) that puts the output phase at P/8 (sin == cos > 0) at Z = A + dir*(P + P/4),
 // and spreads it over the P counts from A to B as adj = adj0 + dir * floor(d * tr / P), where tr is
-// the real travel beyond A. Hardware form: no divider anywhere —
-//   * floor(d*tr/P) is kept by a Bresenham pair (q, num): a forward count adds d to num and carries
-//     into q when num reaches P; a backward count undoes exactly that, so the adjustment is a
-//     function of position inside the window and reversal unwinds it;
-//   * the output phase (paced + adj_tgt) mod P is kept by a wrapping counter `ph`, so ph_A needs
-//     no modulo.
+// the real travel beyond A. Hardware form (§4.5 "Hardware form"; every per-call path is one
+// narrow carry chain from registers, the 38-bit positions are taps):
+//   * floor(d*tr/P) is kept by a Bresenham state (num, t = num + d - P, v = num - d): the carry
+//     of a forward count is the sign of t, the borrow of a backward count the sign of v, so the
+//     extra count of this call is known from registers before the count arrives; every next
+//     value of (num, t, v) is one 14-bit add of registers (k = d - P is a register, computed the
+//     call after A; the first count after A never carries and needs no k: `fresh`);
+//   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else
+//     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
+//   * the phase of the target output position is kept as w = (ph + P/8) mod P (w moves by
+//     pstep + extra count, -2..2); at A it is registered (wA) and d is formed from it in the call
+//     after A (one subtract: P - wA forward, wA -/+ P/2 backward; o.d shows it from A on);
+//   * the mark is a relative counter u = dir * (paced - B) from homing on: mark = u in [0, L]
+//     (L = mark_len at homing);
+//   * the homing call is flagged a call ahead (`at_last`: tr == P - 1) and B = A + dir*P is formed
+//     in the calls before it (`bs`), so B, C, Z are copied / formed from registers in that call.
 // The extra count is delivered in the call after the real count it rides on (the pacer keeps real
 // counts >= 2 calls apart), so the output never moves more than one count per call.
 //
-// Widths: positions 38 signed, d/num/q/ph 12 unsigned, tr 14 signed, stage 2.
+// Widths: positions 38 signed (taps: paced, out_pos, adj, A, B, C, Z; the mark counter u),
+// d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 15 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
+// Block-level preconditions (axis_core guarantees both): P is constant while the block runs (a
+// change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1
+// (lag is W_P + 2 bits wide: a block-level caller with adjacent counts may pile up to P - 1 per
+// homing).
 #ifndef LASERAX_HLS_REPHASE_H
 #define LASERAX_HLS_REPHASE_H
 
@@ -23,14 +38,16 @@
 namespace lx {
 
 struct rephase_cfg {
-    static constexpr int W_PH = axis_widths::W_PH;   // d, num, q, ph: 0..P-1 (q: 0..P)
-    static constexpr int W_P = axis_widths::W_P;     // period and mark_len registers
+    static constexpr int W_PH = axis_widths::W_PH;     // d, num, w: 0..P-1
+    static constexpr int W_P = axis_widths::W_P;       // period and mark_len registers, L
     static constexpr int W_TR = axis_widths::W_P + 1;  // travel beyond A, -1..P, signed
-    static constexpr int W_SUM = axis_widths::W_P + 1; // num + d < 2P, unsigned
+    static constexpr int W_BR = axis_widths::W_P + 1;  // Bresenham t, v, k in [-P, P), signed
+    static constexpr int W_LAG = axis_widths::W_P + 2;  // adj_tgt - adj, signed
     using ph_t = uint<W_PH>;
-    using q_t = uint<W_P>;
+    using p_t = uint<W_P>;
     using tr_t = sint<W_TR>;
-    using sum_t = uint<W_SUM>;
+    using br_t = sint<W_BR>;
+    using lag_t = sint<W_LAG>;
     using stage_t = uint<2>;
 };
 
@@ -52,19 +69,29 @@ public:
     void reset() {
         stage_ = 1;
         paced_ = 0;
+        out_pos_ = 0;
+        adj_ = 0;
         fwd_last_ = true;
         sw_prev_ = false;
         sw_seen_ = false;
         a_ = 0;
+        bs_ = 0;
         fwd_ = true;
         d_ = 0;
+        wa_ = 0;
+        dnew_ = false;
+        k_ = 0;
         tr_ = 0;
+        at_last_ = false;
+        fresh_ = false;
         num_ = 0;
-        q_ = 0;
-        adj0_ = 0;
-        adj_tgt_ = 0;
-        adj_ = 0;
-        ph_ = 0;
+        t_ = 0;
+        v_ = 0;
+        lag_ = 0;
+        w_ = 0;
+        w_init_ = false;
+        u_ = 0;
+        len_ = 0;
         b_ = 0;
         c_ = 0;
         z_ = 0;
@@ -72,89 +99,120 @@ public:
 
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                period_t mark_len) {
-        const cfg::ph_t p8 = period >> 3;            // P/8 (P is a multiple of 8)
-        const cfg::ph_t p_last = period - 1;
-        // 1. real position and phase of the target output position
+        const cfg::p_t pp = period;
+        const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
+        const bool leave = (unhome || rehome) && stage_ != 1;
+        const bool in2 = stage_ == 2 && !leave;
+        const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
+
+        // 1. taps: real position, direction of the last real count
         paced_ = paced_ + pstep;
         if (pstep != 0) fwd_last_ = pstep > 0;
-        ph_ = ph_step(ph_, pstep, p_last);
 
-        // 2. stage machine
+        // 2. the extra count of this call, from registers: carry of a forward count (t >= 0),
+        //    borrow of a backward count inside the window (v < 0)
+        step_t dq = 0;
+        if (in2 && s > 0 && !fresh_ && t_ >= 0) dq = 1;
+        if (in2 && s < 0 && tr_ > 0 && v_ < 0) dq = -1;
+        const step_t dadj = fwd_ ? dq : step_t(-dq);
+
+        // 3. phase of the target output position, w = (ph + P/8) mod P: moves by pstep + dadj
+        const cfg::ph_t w0 = w_init_ ? w_ : p8;  // ph = 0 after reset
+        w_ = w_move(w0, pstep.to_int() + dadj.to_int(), pp);
+        w_init_ = true;
+
+        // 4. stage machine
+        // d: formed from the phase at A in the call after A (dnew), then held
+        const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
+        dnew_ = false;
+        const pos_t a_prev = a_;
+        const bool fwd_prev = fwd_;
         const bool rise = sw && !sw_prev_ && sw_seen_;
-        if ((unhome || rehome) && stage_ != 1) {
-            stage_ = 1;
-            adj0_ = adj_tgt_;  // freeze: no phase jump
+        bool homing = false;
+        if (leave) {
+            stage_ = 1;  // the adjustment in place stays (no phase jump)
         } else if (stage_ == 1) {
             if (rise && !unhome) {
                 stage_ = 2;
                 a_ = paced_;
                 fwd_ = fwd_last_;
                 tr_ = 0;
+                fresh_ = true;
                 num_ = 0;
-                q_ = 0;
-                // d = (7P/8 - ph_A) mod P forward, (ph_A - 3P/8) mod P backward
-                using dd_t = sint<cfg::W_P + 2>;
-                const dd_t dd = fwd_ ? dd_t(dd_t(period) - dd_t(p8) - dd_t(ph_))
-                                     : dd_t(dd_t(ph_) - dd_t(3) * dd_t(p8));
-                d_ = (dd < 0) ? cfg::ph_t(dd + period) : cfg::ph_t(dd);
+                wa_ = w_;  // the phase at A; d follows from it in the next call
+                dnew_ = true;
             }
         } else if (stage_ == 2) {
-            const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
-            step_t dq = 0;
             if (s > 0) {
-                const cfg::sum_t sum = cfg::sum_t(num_) + d_;
-                if (sum >= period) {
-                    num_ = sum - period;
-                    dq = 1;
+                if (fresh_) {  // num = 0: no carry; num' = d
+                    num_ = d_cur;
+                    t_ = cfg::br_t(cfg::br_t(d_cur) + cfg::br_t(d_cur) - cfg::br_t(pp));
+                    v_ = 0;
+                    fresh_ = false;
+                } else if (t_ >= 0) {  // num + d >= P: carry
+                    const cfg::br_t t_old = t_;
+                    t_ = cfg::br_t(t_ + k_);
+                    v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(pp));
+                    num_ = cfg::ph_t(t_old);
                 } else {
-                    num_ = sum;
+                    t_ = cfg::br_t(t_ + cfg::br_t(d_));
+                    v_ = cfg::br_t(num_);
+                    num_ = cfg::ph_t(num_ + d_);
                 }
             } else if (s < 0 && tr_ > 0) {
-                if (num_ < d_) {
-                    num_ = cfg::sum_t(num_) + period - d_;
-                    dq = -1;
+                if (v_ < 0) {  // num < d: borrow
+                    const cfg::br_t v_old = v_;
+                    v_ = cfg::br_t(v_ - k_);
+                    t_ = cfg::br_t(num_);
+                    num_ = cfg::ph_t(v_old + cfg::br_t(pp));
                 } else {
-                    num_ = num_ - d_;
+                    const cfg::br_t v_old = v_;
+                    v_ = cfg::br_t(v_ - cfg::br_t(d_));
+                    t_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(pp));
+                    num_ = cfg::ph_t(v_old);
                 }
             }
+            homing = s > 0 && at_last_;  // tr' == P
             tr_ = tr_ + s;
-            q_ = q_ + dq;
             if (tr_ < 0) {
-                stage_ = 1;  // back past A: q == 0 here, adjustment already 0
+                stage_ = 1;  // back past A: the adjustment is 0 here
                 tr_ = 0;
-            } else {
-                const step_t dadj = fwd_ ? dq : step_t(-dq);
-                adj_tgt_ = adj_tgt_ + dadj;
-                ph_ = ph_step(ph_, dadj, p_last);
-                if (tr_ == sint<cfg::W_TR>(period)) {
-                    stage_ = 3;
-                    adj0_ = adj_tgt_;
-                    const pos_t pp = pos_t(period);
-                    b_ = fwd_ ? pos_t(a_ + pp) : pos_t(a_ - pp);
-                    c_ = fwd_ ? pos_t(b_ + mark_len) : pos_t(b_ - mark_len);
-                    z_ = fwd_ ? pos_t(b_ + 2 * p8) : pos_t(b_ - 2 * p8);
-                }
+            } else if (homing) {
+                stage_ = 3;
+                const pos_t bb = bs_;  // A + dir*P, formed in an earlier call
+                b_ = bb;
+                c_ = fwd_ ? pos_t(bb + pos_t(mark_len)) : pos_t(bb - pos_t(mark_len));
+                z_ = fwd_ ? pos_t(bb + pos_t(2 * p8)) : pos_t(bb - pos_t(2 * p8));
+                len_ = mark_len;
             }
         }
+        d_ = d_cur;
+        k_ = cfg::br_t(cfg::br_t(d_cur) - cfg::br_t(pp));
+        bs_ = fwd_prev ? pos_t(a_prev + pos_t(pp)) : pos_t(a_prev - pos_t(pp));
+        at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
 
-        // 3. output step: the real count, or else the pending extra count
+        // 5. output step: the real count, or else one pending extra count
         step_t ostep = pstep;
-        if (pstep == 0) {
-            if (adj_tgt_ > adj_) ostep = 1;
-            if (adj_tgt_ < adj_) ostep = -1;
+        if (pstep != 0) {
+            lag_ = lag_ + dadj;
+        } else {
+            if (lag_ > 0) ostep = 1;
+            if (lag_ < 0) ostep = -1;
+            lag_ = lag_ - ostep;
             adj_ = adj_ + ostep;
         }
+        out_pos_ = out_pos_ + ostep;
 
-        // 4. reference mark: a pure function of real position once homed
-        const pos_t lo = fwd_ ? b_ : c_;
-        const pos_t hi = fwd_ ? c_ : b_;
-        const bool mark = stage_ == 3 && paced_ >= lo && paced_ <= hi;
+        // 6. reference mark: u = dir * (paced - B) from homing on, mark = u in [0, L]
+        const pos_t u_prev = u_;
+        u_ = homing ? pos_t(0) : pos_t(u_prev + s);
+        const bool mark = stage_ == 3 && u_ >= 0 && u_ <= pos_t(len_);
 
         out_t o;
         o.ostep = ostep;
-        o.out_pos = paced_ + adj_;
+        o.out_pos = out_pos_;
         o.mark = mark;
         o.stage = stage_;
         o.a = a_;
@@ -162,30 +220,54 @@ public:
         o.c = c_;
         o.z = z_;
         o.adj = adj_;
-        o.d = d_;
+        o.d = dnew_ ? d_of(wa_, fwd_, pp) : d_;
         o.homed = stage_ == 3;
         return o;
     }
 
 private:
-    // phase counter modulo P: +1 wraps P-1 -> 0, -1 wraps 0 -> P-1
-    static cfg::ph_t ph_step(cfg::ph_t ph, step_t s, cfg::ph_t p_last) {
-        if (s > 0) return (ph == p_last) ? cfg::ph_t(0) : cfg::ph_t(ph + 1);
-        if (s < 0) return (ph == 0) ? p_last : cfg::ph_t(ph - 1);
-        return ph;
+    using tr_t = cfg::tr_t;
+
+    // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
+    // (ph - 3P/8) mod P = (w - P/2) mod P backward
+    static cfg::ph_t d_of(cfg::ph_t w, bool fwd, cfg::p_t p) {
+        const cfg::ph_t p2 = p >> 1;
+        if (fwd) return (w == 0) ? cfg::ph_t(0) : cfg::ph_t(p - w);
+        return (w >= p2) ? cfg::ph_t(w - p2) : cfg::ph_t(w + p2);
+    }
+
+    // (w + e) mod P for w in [0, P), e in -2..2: one narrow add, the wrap found by equality with
+    // P (or 0, 1) and the wrapped value formed from P in parallel, so no compare follows an add
+    static cfg::ph_t w_move(cfg::ph_t w, int e, cfg::p_t p) {
+        using x_t = sint<cfg::W_P + 2>;
+        const x_t x = x_t(w) + x_t(e);
+        const x_t px = x_t(p);
+        if (e == 1 && x == px) return cfg::ph_t(0);
+        if (e == 2 && x == px) return cfg::ph_t(0);
+        if (e == 2 && x == px + 1) return cfg::ph_t(1);
+        if (e == -1 && w == 0) return cfg::ph_t(px - 1);
+        if (e == -2 && w == 0) return cfg::ph_t(px - 2);
+        if (e == -2 && w == 1) return cfg::ph_t(px - 1);
+        return cfg::ph_t(x);
     }
 
     cfg::stage_t stage_;
-    pos_t paced_;
+    pos_t paced_, out_pos_, adj_;
     bool fwd_last_, sw_prev_, sw_seen_;
-    pos_t a_;
+    pos_t a_, bs_;
     bool fwd_;
-    cfg::ph_t d_;
+    cfg::ph_t d_, wa_;
+    bool dnew_;
+    cfg::br_t k_;
     cfg::tr_t tr_;
+    bool at_last_, fresh_;
     cfg::ph_t num_;
-    cfg::q_t q_;
-    pos_t adj0_, adj_tgt_, adj_;
-    cfg::ph_t ph_;
+    cfg::br_t t_, v_;
+    cfg::lag_t lag_;
+    cfg::ph_t w_;
+    bool w_init_;
+    pos_t u_;
+    cfg::p_t len_;
     pos_t b_, c_, z_;
 };
 

@@ -1,20 +1,26 @@
 // rephase.v — referencing state machine: stage 1/2/3, points A, B, Z, C, phase adjustment d.
 //
-// Reference RTL of hls/rephase.h (DESIGN §4.5). One rising clock edge = one call of
-// rephase::step(); the outputs after edge t are the out_t of call t (registers, and out_pos /
-// homed as combinational functions of registers). Synchronous active-high reset =
-// rephase::reset() (stage 1, forward, everything else 0).
+// Reference RTL of hls/rephase.h (DESIGN §4.5, "Hardware form"). One rising clock edge = one call
+// of rephase::step(); the outputs after edge t are the out_t of call t (all registers).
+// Synchronous active-high reset = rephase::reset() (stage 1, forward, everything else 0).
 //
 // Per call, in the order of the C++ model:
-//   1. paced' = paced + pstep; direction of the last real count; output phase counter ph.
-//   2. stage machine: unhome/rehome -> stage 1 (adj0 = adj_tgt, no phase jump);
-//      stage 1: rising switch edge (and !unhome) -> stage 2, A = paced', d from ph;
-//      stage 2: Bresenham pair (q, num) keeps floor(d*tr/P) without a divider; tr < 0 -> stage 1;
-//               tr == P -> stage 3, B, C, Z;
-//      stage 3: homed, switch ignored.
-//   3. ostep = pstep, or else sgn(adj_tgt' - adj) (adj follows adj_tgt one count per call).
-//   4. mark = stage' == 3 && paced' in [B, C] (closed interval, either direction).
-// Widths: positions 38 signed, d/num/ph 12 unsigned, q 13, tr 14 signed, stage 2.
+//   1. taps: paced' = paced + pstep; direction of the last real count.
+//   2. the extra count dq of this call from registers: a forward count carries when t >= 0, a
+//      backward count inside the window borrows when v < 0 (Bresenham state num, t = num + d - P,
+//      v = num - d; k = d - P).
+//   3. phase of the target output position w = (ph + P/8) mod P moves by pstep + dadj (-2..2).
+//   4. stage machine: unhome/rehome -> stage 1; stage 1: rising switch edge (and !unhome) ->
+//      stage 2, A = paced', d from w (P - w forward, w -/+ P/2 backward); stage 2: (num, t, v)
+//      step, tr < 0 -> stage 1, tr == P (flagged a call ahead: at_last) -> stage 3, B = bs (A +
+//      dir*P, formed in the calls before), C = B + dir*mark_len, Z = B + dir*P/4.
+//   5. ostep = pstep, or else sgn(lag) (lag = adj_tgt - adj: the pending extra counts; its sign
+//      is a register, lsgn).
+//   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
+//      mark_len at homing; the test is made on u before the count, for each count direction).
+// Every path is one carry chain of at most 38 bits from registers (the positions, taps) or of 14
+// bits followed by a few LUT levels; no 38-bit compare, no adder in series with another.
+// Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 15 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -44,81 +50,140 @@ module rephase (
 
     // ---- fixed widths (hls: rephase_cfg, axis_widths) ----------------------------------------
     localparam integer W_POS = 38;        // positions
-    localparam integer W_P   = 13;        // period and mark_len registers
-    localparam integer W_PH  = 12;        // d, num, ph: 0..P-1
+    localparam integer W_P   = 13;        // period and mark_len registers, L
+    localparam integer W_PH  = 12;        // d, num, w: 0..P-1
     localparam integer W_TR  = W_P + 1;   // travel beyond A, signed
-    localparam integer W_SUM = W_P + 1;   // num + d < 2P, unsigned
-    localparam integer W_DD  = W_P + 2;   // d before the modulo, signed
+    localparam integer W_BR  = W_P + 1;   // Bresenham t, v, k, signed
+    localparam integer W_LAG = W_P + 2;   // adj_tgt - adj, signed
+    localparam integer W_X   = W_P + 1;   // w moves and wraps
 
     // ---- registers ---------------------------------------------------------------------------
-    reg [1:0]              stage_q;
-    reg signed [W_POS-1:0] paced_q;
-    reg                    fwd_last_q, sw_prev_q, sw_seen_q;
-    reg signed [W_POS-1:0] a_q;
-    reg                    fwd_q;
-    reg [W_PH-1:0]         d_q;
-    reg signed [W_TR-1:0]  tr_q;
-    reg [W_PH-1:0]         num_q;
-    reg [W_P-1:0]          q_q;        // floor(d*tr/P); kept as in hls/ (not an output)
-    reg signed [W_POS-1:0] adj0_q, adj_tgt_q, adj_q;
-    reg [W_PH-1:0]         ph_q;
-    reg signed [W_POS-1:0] b_q, c_q, z_q;
-    reg signed [1:0]       ostep_q;
-    reg                    mark_q;
+    reg [1:0]              stage_q, stage_d;
+    reg signed [W_POS-1:0] paced_q, paced_d, out_pos_q, out_pos_d, adj_q, adj_d;
+    reg                    fwd_last_q, fwd_last_d, sw_prev_q, sw_seen_q;
+    reg signed [W_POS-1:0] a_q, a_d, bs_q, bs_d;
+    reg                    fwd_q, fwd_d;
+    reg [W_PH-1:0]         d_q, d_d;
+    reg [W_PH-1:0]         wa_q, wa_d;         // w at A
+    reg                    dnew_q, dnew_d;     // A was in the previous call: d not yet loaded
+    reg signed [W_BR-1:0]  k_q, k_d;
+    reg signed [W_TR-1:0]  tr_q, tr_d;
+    reg                    at_last_q, at_last_d, fresh_q, fresh_d;
+    reg [W_PH-1:0]         num_q, num_d;
+    reg signed [W_BR-1:0]  t_q, t_d, v_q, v_d;
+    reg signed [W_LAG-1:0] lag_q, lag_d;
+    reg signed [1:0]       lsgn_q, lsgn_d;     // sgn(lag): the extra count of an idle call
+    reg [W_PH-1:0]         w_q, w_d;
+    reg                    w_init_q;
+    reg signed [W_POS-1:0] u_q, u_d;
+    reg [W_P-1:0]          len_q, len_d;
+    reg [W_P:0]            len1_q, len1_d;      // L + 1
+    reg signed [W_POS-1:0] b_q, b_d, c_q, c_d, z_q, z_d;
+    reg signed [1:0]       ostep_q, ostep_d;
+    reg                    mark_q, mark_d;
 
-    reg [1:0]              stage_d;
-    reg signed [W_POS-1:0] paced_d;
-    reg                    fwd_last_d, sw_prev_d, sw_seen_d;
-    reg signed [W_POS-1:0] a_d;
-    reg                    fwd_d;
-    reg [W_PH-1:0]         d_d;
-    reg signed [W_TR-1:0]  tr_d;
-    reg [W_PH-1:0]         num_d;
-    reg [W_P-1:0]          q_d;
-    reg signed [W_POS-1:0] adj0_d, adj_tgt_d, adj_d;
-    reg [W_PH-1:0]         ph_d;
-    reg signed [W_POS-1:0] b_d, c_d, z_d;
-    reg signed [1:0]       ostep_d;
-    reg                    mark_d;
-
-    // phase counter modulo P: +1 wraps P-1 -> 0, -1 wraps 0 -> P-1
-    function [W_PH-1:0] ph_step;
-        input [W_PH-1:0] ph;
-        input [1:0]      s;        // signed step, two's complement
-        input [W_PH-1:0] p_last;
-        begin
-            if (!s[1] && s[0])
-                ph_step = (ph == p_last) ? {W_PH{1'b0}} : ph + {{(W_PH-1){1'b0}}, 1'b1};
-            else if (s[1])
-                ph_step = (ph == {W_PH{1'b0}}) ? p_last : ph - {{(W_PH-1){1'b0}}, 1'b1};
-            else
-                ph_step = ph;
-        end
-    endfunction
-
-    // combinational temporaries (part selects and extensions outside the always block)
-    wire [W_PH-1:0]         p8       = i_period[W_P-1:3];                           // P/8
-    wire [W_PH-1:0]         period_ph = i_period[W_PH-1:0];                         // P mod 2^12
-    wire [W_PH-1:0]         p_last   = period_ph - {{(W_PH-1){1'b0}}, 1'b1};      // P-1
+    // ---- constants of P and the registers' extensions ----------------------------------------
+    wire [W_PH-1:0]         p8       = i_period[W_P-1:3];                            // P/8
+    wire [W_PH-1:0]         p2       = i_period[W_P-1:1];                            // P/2
+    wire signed [W_X-1:0]   px       = $signed({1'b0, i_period});
     wire signed [W_POS-1:0] period_x = $signed({{(W_POS-W_P){1'b0}}, i_period});
     wire signed [W_POS-1:0] mark_len_x = $signed({{(W_POS-W_P){1'b0}}, i_mark_len});
     wire signed [W_POS-1:0] p4_x     = $signed({{(W_POS-W_PH-1){1'b0}}, p8, 1'b0}); // 2 * P/8
-    wire signed [W_DD-1:0]  period_dd = $signed({{(W_DD-W_P){1'b0}}, i_period});
-    wire signed [W_DD-1:0]  p8_dd    = $signed({{(W_DD-W_PH){1'b0}}, p8});
-    wire signed [W_TR-1:0]  period_tr = $signed({{(W_TR-W_P){1'b0}}, i_period});
-    wire [W_SUM-1:0]        period_sum = {{(W_SUM-W_P){1'b0}}, i_period};
-    wire [W_SUM-1:0]        num_sum  = {{(W_SUM-W_PH){1'b0}}, num_q};
-    wire [W_SUM-1:0]        d_sum    = {{(W_SUM-W_PH){1'b0}}, d_q};
+    wire signed [W_POS-1:0] pstep_x  = {{(W_POS-2){i_pstep[1]}}, i_pstep};
+    wire                    pz       = i_pstep == 2'sd0;
+    wire                    pfwd     = !i_pstep[1];     // pstep > 0 when pstep != 0
     wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
-    wire                    pstep_nz = i_pstep != 2'sd0;
-    wire                    pstep_fwd = !i_pstep[1];    // pstep > 0 when pstep != 0
+    wire                    leave    = (i_unhome || i_rehome) && stage_q != 2'd1;
+    wire                    in2      = stage_q == 2'd2 && !leave;
+    wire                    in3      = stage_q == 2'd3 && !leave;
+    wire                    cap      = stage_q == 2'd1 && rise && !i_unhome;
+    // step in the homing direction
+    wire                    s_pos    = !pz && (pfwd == fwd_q);
+    wire                    s_neg    = !pz && (pfwd != fwd_q);
+    wire signed [W_POS-1:0] s_x      = s_pos ? {{(W_POS-1){1'b0}}, 1'b1} :
+                                       s_neg ? {W_POS{1'b1}} : {W_POS{1'b0}};
+    wire                    tr_pos   = !tr_q[W_TR-1] && tr_q != {W_TR{1'b0}};
 
-    reg [W_PH-1:0]          ph_a;       // phase after the real count
-    reg signed [W_DD-1:0]   ph_dd;      // ph_a extended for the d computation
-    reg signed [W_DD-1:0]   dd;
-    reg signed [1:0]        s, dq, dadj;
-    reg [W_SUM-1:0]         sum;
-    reg signed [W_POS-1:0]  lo, hi;
+    // 2. the extra count of this call (registers only)
+    wire dq_up = in2 && s_pos && !fresh_q && !t_q[W_BR-1];
+    wire dq_dn = in2 && s_neg && tr_pos && v_q[W_BR-1];
+    wire dq_nz = dq_up || dq_dn;     // an extra count rides on this real count
+    // dadj = dir * dq = pstep * |dq| (dq has the sign of s = dir * pstep)
+
+    // 3. w moves by e = pstep + dadj: candidates from registers, the wrap found by equality
+    wire [W_PH-1:0]       w0   = w_init_q ? w_q : p8;                          // ph = 0 after reset
+    wire signed [W_X-1:0] w0x  = $signed({{(W_X-W_PH){1'b0}}, w0});
+    wire signed [W_X-1:0] x_p1 = w0x + 1;
+    wire signed [W_X-1:0] x_p2 = w0x + 2;
+    wire signed [W_X-1:0] x_m1 = w0x - 1;
+    wire signed [W_X-1:0] x_m2 = w0x - 2;
+    wire signed [W_X-1:0] p_m1 = px - 1;
+    wire signed [W_X-1:0] p_m2 = px - 2;
+    wire                  w0_0 = w0 == {W_PH{1'b0}};
+    wire                  w0_1 = w0 == {{(W_PH-1){1'b0}}, 1'b1};
+    wire                  w0_t1 = w0x == p_m1;                               // w0 == P - 1
+    wire                  w0_t2 = w0x == p_m2;                               // w0 == P - 2
+    wire [W_PH-1:0] w_p1 = w0_t1 ? {W_PH{1'b0}} : x_p1[W_PH-1:0];
+    wire [W_PH-1:0] w_p2 = w0_t2 ? {W_PH{1'b0}} : w0_t1 ? {{(W_PH-1){1'b0}}, 1'b1} : x_p2[W_PH-1:0];
+    wire [W_PH-1:0] w_m1 = w0_0 ? p_m1[W_PH-1:0] : x_m1[W_PH-1:0];
+    wire [W_PH-1:0] w_m2 = w0_0 ? p_m2[W_PH-1:0] : w0_1 ? p_m1[W_PH-1:0] : x_m2[W_PH-1:0];
+    wire [W_PH-1:0] w_n  = pz ? w0 : pfwd ? (dq_nz ? w_p2 : w_p1) : (dq_nz ? w_m2 : w_m1);
+
+    // d from the phase at A (wA, registered at A): P - wA forward, (wA - P/2) mod P backward. It
+    // is formed from registers in the call after A (dnew) and loaded into d there; the output o_d
+    // shows it from A on.
+    wire signed [W_X-1:0] wa_x   = $signed({{(W_X-W_PH){1'b0}}, wa_q});
+    wire signed [W_X-1:0] wa_mp2 = wa_x - $signed({{(W_X-W_PH){1'b0}}, p2});
+    wire [W_PH-1:0]       wa_pp2 = wa_q + p2;
+    wire [W_PH-1:0]       p_mwa  = i_period[W_PH-1:0] - wa_q;
+    wire [W_PH-1:0]       d_fwd  = (wa_q == {W_PH{1'b0}}) ? {W_PH{1'b0}} : p_mwa;
+    wire [W_PH-1:0]       d_bwd  = wa_mp2[W_X-1] ? wa_pp2 : wa_mp2[W_PH-1:0];
+    wire [W_PH-1:0]       d_cur  = dnew_q ? (fwd_q ? d_fwd : d_bwd) : d_q;
+
+    // Bresenham candidates (one 14-bit add of registers each)
+    wire signed [W_BR-1:0] px_br  = $signed({1'b0, i_period});
+    wire signed [W_BR-1:0] d_br   = $signed({{(W_BR-W_PH){1'b0}}, d_q});
+    wire signed [W_BR-1:0] dc_br  = $signed({{(W_BR-W_PH){1'b0}}, d_cur});
+    wire signed [W_BR-1:0] num_br = $signed({{(W_BR-W_PH){1'b0}}, num_q});
+    wire signed [W_BR-1:0] t_fresh = (dc_br <<< 1) - px_br;  // 2d - P
+    wire signed [W_BR-1:0] t_pk   = t_q + k_q;
+    wire signed [W_BR-1:0] t_pd   = t_q + d_br;
+    wire signed [W_BR-1:0] num_mp = num_br - px_br;
+    wire signed [W_BR-1:0] v_mk   = v_q - k_q;
+    wire signed [W_BR-1:0] v_md   = v_q - d_br;
+    wire signed [W_BR-1:0] v_pp   = v_q + px_br;
+    wire [W_PH-1:0]        num_pd = num_q + d_q;
+
+    // homing: the count that makes tr == P (at_last: tr == P - 1 after the previous call)
+    wire homing = in2 && s_pos && at_last_q;
+    wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
+    wire signed [W_TR-1:0] tr_pm1 = $signed({1'b0, i_period}) - 1;
+
+    // 6. mark test on u before the count: u' = u + s in [0, L]
+    wire        u_hz   = u_q[W_POS-1:W_P+1] == {(W_POS-W_P-1){1'b0}}; // 0 <= u < 2^14
+    wire        u_m1   = u_q == {W_POS{1'b1}};                         // u == -1
+    wire [W_P:0] u_lo  = u_q[W_P:0];
+    wire        u_le   = u_lo <= {1'b0, len_q};
+    wire        u_lt   = u_lo < {1'b0, len_q};
+    wire        u_le1  = u_lo <= len1_q;
+    wire        u_ge1  = u_lo != {(W_P+1){1'b0}};
+    wire        in_rng = s_pos ? (u_m1 || (u_hz && u_lt)) :
+                         s_neg ? (u_hz && u_ge1 && u_le1) : (u_hz && u_le);
+
+    // 5. the output step
+    wire signed [1:0] ostep_n = pz ? lsgn_q : i_pstep;
+    wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn_q[1]}}, lsgn_q};
+    wire signed [W_POS-1:0] ostep_x = {{(W_POS-2){ostep_n[1]}}, ostep_n};
+    wire signed [W_LAG-1:0] lag_n = pz ? lag_q - {{(W_LAG-2){lsgn_q[1]}}, lsgn_q} :
+                                    dq_nz ? lag_q + {{(W_LAG-2){i_pstep[1]}}, i_pstep} : lag_q;
+    wire signed [1:0] lsgn_n = lag_n[W_LAG-1] ? -2'sd1 : (lag_n != {W_LAG{1'b0}}) ? 2'sd1 : 2'sd0;
+    // sign bits and low parts of the Bresenham registers (outside the always block)
+    wire              t_neg  = t_q[W_BR-1];
+    wire              v_neg  = v_q[W_BR-1];
+    wire              tr_neg = tr_s[W_TR-1];
+    wire [W_PH-1:0]   t_lo   = t_q[W_PH-1:0];
+    wire [W_PH-1:0]   v_lo   = v_q[W_PH-1:0];
+    wire [W_PH-1:0]   v_pp_lo = v_pp[W_PH-1:0];
 
     always @* begin
         stage_d    = stage_q;
@@ -126,119 +191,124 @@ module rephase (
         fwd_d      = fwd_q;
         d_d        = d_q;
         tr_d       = tr_q;
+        fresh_d    = fresh_q;
         num_d      = num_q;
-        q_d        = q_q;
-        adj0_d     = adj0_q;
-        adj_tgt_d  = adj_tgt_q;
-        adj_d      = adj_q;
+        t_d        = t_q;
+        v_d        = v_q;
         b_d        = b_q;
         c_d        = c_q;
         z_d        = z_q;
-        dd         = {W_DD{1'b0}};
-        s          = 2'sd0;
-        dq         = 2'sd0;
-        dadj       = 2'sd0;
-        sum        = {W_SUM{1'b0}};
+        len_d      = len_q;
+        len1_d     = len1_q;
+        wa_d       = wa_q;
+        dnew_d     = 1'b0;
 
-        // 1. real position and phase of the target output position
-        paced_d    = paced_q + i_pstep;                        // signed: pstep sign-extended
-        fwd_last_d = pstep_nz ? pstep_fwd : fwd_last_q;
-        ph_a       = ph_step(ph_q, i_pstep, p_last);
-        ph_d       = ph_a;
-        ph_dd      = {{(W_DD-W_PH){1'b0}}, ph_a};
+        // 1. taps
+        paced_d    = paced_q + pstep_x;
+        fwd_last_d = pz ? fwd_last_q : pfwd;
+        // 3. phase
+        w_d        = w_n;
 
-        // 2. stage machine
-        if ((i_unhome || i_rehome) && stage_q != 2'd1) begin
-            stage_d = 2'd1;
-            adj0_d  = adj_tgt_q;                               // freeze: no phase jump
+        // 4. stage machine
+        if (leave) begin
+            stage_d = 2'd1;                                     // the adjustment stays in place
         end else if (stage_q == 2'd1) begin
-            if (rise && !i_unhome) begin
+            if (cap) begin
                 stage_d = 2'd2;
                 a_d     = paced_d;
                 fwd_d   = fwd_last_d;
                 tr_d    = {W_TR{1'b0}};
+                fresh_d = 1'b1;
                 num_d   = {W_PH{1'b0}};
-                q_d     = {W_P{1'b0}};
-                // d = (7P/8 - ph_A) mod P forward, (ph_A - 3P/8) mod P backward
-                if (fwd_last_d)
-                    dd = period_dd - p8_dd - ph_dd;
-                else
-                    dd = ph_dd - p8_dd * 3;
-                if (dd < 0)
-                    d_d = dd + period_dd;                      // truncated to W_PH bits
-                else
-                    d_d = dd;
+                wa_d    = w_n;
+                dnew_d  = 1'b1;
             end
         end else if (stage_q == 2'd2) begin
-            s = fwd_q ? i_pstep : -i_pstep;                    // step in the homing direction
-            if (s > 0) begin
-                sum = num_sum + d_sum;
-                if (sum >= period_sum) begin
-                    num_d = sum - period_sum;                  // truncated to W_PH bits
-                    dq    = 2'sd1;
+            if (s_pos) begin
+                if (fresh_q) begin                              // num = 0: no carry
+                    num_d   = d_cur;
+                    t_d     = t_fresh;
+                    v_d     = {W_BR{1'b0}};
+                    fresh_d = 1'b0;
+                end else if (!t_neg) begin                // carry
+                    num_d = t_lo;
+                    t_d   = t_pk;
+                    v_d   = num_mp;
                 end else begin
-                    num_d = sum;
+                    num_d = num_pd;
+                    t_d   = t_pd;
+                    v_d   = num_br;
                 end
-            end else if (s < 0 && tr_q > 0) begin
-                if (num_q < d_q) begin
-                    num_d = num_q + period_ph - d_q;
-                    dq    = -2'sd1;
+            end else if (s_neg && tr_pos) begin
+                if (v_neg) begin                          // borrow
+                    num_d = v_pp_lo;
+                    t_d   = num_br;
+                    v_d   = v_mk;
                 end else begin
-                    num_d = num_q - d_q;
+                    num_d = v_lo;
+                    t_d   = num_mp;
+                    v_d   = v_md;
                 end
             end
-            tr_d = tr_q + s;                                   // signed: s sign-extended
-            q_d  = $signed(q_q) + dq;                          // modulo 2^W_P
-            if (tr_d < 0) begin
-                stage_d = 2'd1;                                // back past A: adjustment is 0
+            tr_d = tr_s;
+            if (tr_neg) begin
+                stage_d = 2'd1;                                 // back past A
                 tr_d    = {W_TR{1'b0}};
-            end else begin
-                dadj      = fwd_q ? dq : -dq;
-                adj_tgt_d = adj_tgt_q + dadj;
-                ph_d      = ph_step(ph_a, dadj, p_last);
-                if (tr_d == period_tr) begin
-                    stage_d = 2'd3;
-                    adj0_d  = adj_tgt_d;
-                    b_d     = fwd_q ? a_q + period_x : a_q - period_x;
-                    c_d     = fwd_q ? b_d + mark_len_x : b_d - mark_len_x;
-                    z_d     = fwd_q ? b_d + p4_x : b_d - p4_x;
-                end
+            end else if (homing) begin
+                stage_d = 2'd3;
+                b_d     = bs_q;
+                c_d     = fwd_q ? bs_q + mark_len_x : bs_q - mark_len_x;
+                z_d     = fwd_q ? bs_q + p4_x : bs_q - p4_x;
+                len_d   = i_mark_len;
+                len1_d  = {1'b0, i_mark_len} + 1'b1;
             end
         end
-        sw_prev_d = i_sw;
-        sw_seen_d = i_sw_valid;
+        if (dnew_q) d_d = d_cur;
+        k_d       = dc_br - px_br;
+        bs_d      = fwd_q ? a_q + period_x : a_q - period_x;
+        at_last_d = tr_d == tr_pm1;
 
-        // 3. output step: the real count, or else the pending extra count
-        ostep_d = i_pstep;
-        if (!pstep_nz) begin
-            if (adj_tgt_d > adj_q) ostep_d = 2'sd1;
-            if (adj_tgt_d < adj_q) ostep_d = -2'sd1;
-            adj_d = adj_q + ostep_d;
-        end
+        // 5. output step: the real count, or else one pending extra count
+        ostep_d   = ostep_n;
+        out_pos_d = out_pos_q + ostep_x;
+        adj_d     = pz ? adj_q + lsgn_x : adj_q;
+        lag_d     = lag_n;
+        lsgn_d    = lsgn_n;
 
-        // 4. reference mark: a pure function of real position once homed
-        lo     = fwd_d ? b_d : c_d;
-        hi     = fwd_d ? c_d : b_d;
-        mark_d = (stage_d == 2'd3) && (paced_d >= lo) && (paced_d <= hi);
+        // 6. reference mark
+        u_d    = homing ? {W_POS{1'b0}} : u_q + s_x;
+        mark_d = homing || (in3 && in_rng);
     end
 
     always @(posedge i_clk) begin
         if (i_rst) begin
             stage_q    <= 2'd1;
             paced_q    <= {W_POS{1'b0}};
+            out_pos_q  <= {W_POS{1'b0}};
+            adj_q      <= {W_POS{1'b0}};
             fwd_last_q <= 1'b1;
             sw_prev_q  <= 1'b0;
             sw_seen_q  <= 1'b0;
             a_q        <= {W_POS{1'b0}};
+            bs_q       <= {W_POS{1'b0}};
             fwd_q      <= 1'b1;
             d_q        <= {W_PH{1'b0}};
+            wa_q       <= {W_PH{1'b0}};
+            dnew_q     <= 1'b0;
+            k_q        <= {W_BR{1'b0}};
             tr_q       <= {W_TR{1'b0}};
+            at_last_q  <= 1'b0;
+            fresh_q    <= 1'b0;
             num_q      <= {W_PH{1'b0}};
-            q_q        <= {W_P{1'b0}};
-            adj0_q     <= {W_POS{1'b0}};
-            adj_tgt_q  <= {W_POS{1'b0}};
-            adj_q      <= {W_POS{1'b0}};
-            ph_q       <= {W_PH{1'b0}};
+            t_q        <= {W_BR{1'b0}};
+            v_q        <= {W_BR{1'b0}};
+            lag_q      <= {W_LAG{1'b0}};
+            lsgn_q     <= 2'sd0;
+            w_q        <= {W_PH{1'b0}};
+            w_init_q   <= 1'b0;
+            u_q        <= {W_POS{1'b0}};
+            len_q      <= {W_P{1'b0}};
+            len1_q     <= {(W_P+1){1'b0}};
             b_q        <= {W_POS{1'b0}};
             c_q        <= {W_POS{1'b0}};
             z_q        <= {W_POS{1'b0}};
@@ -247,19 +317,31 @@ module rephase (
         end else begin
             stage_q    <= stage_d;
             paced_q    <= paced_d;
+            out_pos_q  <= out_pos_d;
+            adj_q      <= adj_d;
             fwd_last_q <= fwd_last_d;
-            sw_prev_q  <= sw_prev_d;
-            sw_seen_q  <= sw_seen_d;
+            sw_prev_q  <= i_sw;
+            sw_seen_q  <= i_sw_valid;
             a_q        <= a_d;
+            bs_q       <= bs_d;
             fwd_q      <= fwd_d;
             d_q        <= d_d;
+            wa_q       <= wa_d;
+            dnew_q     <= dnew_d;
+            k_q        <= k_d;
             tr_q       <= tr_d;
+            at_last_q  <= at_last_d;
+            fresh_q    <= fresh_d;
             num_q      <= num_d;
-            q_q        <= q_d;
-            adj0_q     <= adj0_d;
-            adj_tgt_q  <= adj_tgt_d;
-            adj_q      <= adj_d;
-            ph_q       <= ph_d;
+            t_q        <= t_d;
+            v_q        <= v_d;
+            lag_q      <= lag_d;
+            lsgn_q     <= lsgn_d;
+            w_q        <= w_d;
+            w_init_q   <= 1'b1;
+            u_q        <= u_d;
+            len_q      <= len_d;
+            len1_q     <= len1_d;
             b_q        <= b_d;
             c_q        <= c_d;
             z_q        <= z_d;
@@ -269,11 +351,11 @@ module rephase (
     end
 
     assign o_ostep   = ostep_q;
-    assign o_out_pos = paced_q + adj_q;
+    assign o_out_pos = out_pos_q;
     assign o_mark    = mark_q;
     assign o_stage   = stage_q;
     assign o_a       = a_q;
-    assign o_d       = d_q;
+    assign o_d       = d_cur;
     assign o_b       = b_q;
     assign o_c       = c_q;
     assign o_z       = z_q;
