@@ -27,7 +27,11 @@ void axis_chain::reset() {
     const uint64_t keep_ratio = ratio_held_;  // held registers: register file, not chain state
     const int64_t keep_offset = offset_held_;
     error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
+    const axis_regs keep_regs = in_force_;  // the register stage is not chain state
+    const bool keep_powered = powered_;
     *this = axis_chain{};
+    in_force_ = keep_regs;
+    powered_ = keep_powered;
     emap_ = std::move(keep_map);
     emap_.reset();
     last_period_ = keep;
@@ -36,8 +40,17 @@ void axis_chain::reset() {
     offset_held_ = keep_offset;
 }
 
-axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
+axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
     axis_out o{};
+    // DESIGN 4.7 register stage: this call runs on the registers presented in the previous call
+    const axis_regs regs = in_force_;
+    in_force_ = presented;
+    if (!powered_) {  // power-up call: no registers in force, every block in reset, outputs 0
+        powered_ = true;
+        reset();
+        o.stage = 1;
+        return o;
+    }
     // DESIGN 4.7: ratio and comp_offset in force are loaded in every call without comp_sync,
     // else only in a call with comp_commit
     if (!regs.comp_sync || regs.comp_commit) {

@@ -114,6 +114,10 @@ private:
     int64_t offset_held_ = 0;                // comp_offset in force
     bool was_running_ = false;   // the previous call ran with a valid configuration
     bool dac_clip_st_ = false;   // DAC range guard (DESIGN 4.7), reset with the chain
+    // DESIGN 4.7 register stage: the registers presented in a call are in force in the next one;
+    // the first call after power-up has none in force (power-up call). Not part of reset().
+    axis_regs in_force_{};
+    bool powered_ = false;
 };
 
 }  // namespace golden

@@ -156,7 +156,17 @@ public:
 
     dds_sincos& dds() { return dds_; }
 
-    axis_out step(const axis_pins& pins, const axis_regs& regs) {
+    axis_out step(const axis_pins& pins, const axis_regs& presented) {
+        // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
+        // call; the configuration check of those values was (in hardware) made in that call
+        const axis_regs regs = regs_q_;
+        regs_q_ = presented;
+        if (!powered_) {  // power-up call: no registers in force, every block in reset
+            powered_ = true;
+            axis_out o;
+            o.stage = 1;
+            return o;
+        }
         // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
         // not part of the chain reset (register file state)
         if (!regs.comp_sync || regs.comp_commit) {
@@ -268,6 +278,8 @@ private:
     offset_t offset_h_ = 0;                           // comp_offset in force
     bool run_q_ = false;     // the previous call ran with a valid configuration
     bool dac_clip_st_ = false;  // DAC range guard sticky flag
+    axis_regs regs_q_ = axis_regs{};  // registers presented in the previous call (in force now)
+    bool powered_ = false;            // false until the power-up call
 
     static dac_t clamp_dac(dac_t v, dac_t hi, bool& clip) {
         if (v > hi) {

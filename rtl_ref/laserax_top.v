@@ -14,16 +14,18 @@
 // call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1,
 // DESIGN 4.7).
 //
-// Safe state: while the configuration check fails, and in the call in which a new period value
-// first appears after a running call (period_q != period with run_q = 1; coming out of power-up
-// or of an invalid configuration the blocks are already reset, so no extra call), every block is
-// reset at the edge (the C++ axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz =
-// ref_mark = 0, stage 1. A table write (i_tbl_we = 1) fails the configuration check, so it is
-// made only in a safe-state edge, in which the DDS is in reset (hls: dds_.write() only in the
-// safe state of axis_core::step(); DESIGN 4.6).
+// Register stage (DESIGN 4.7): the register inputs presented before edge t are in force at edge
+// t+1 (registers r_*). The configuration check and the period-change test are made on the
+// presented values and registered (safe_q), so the block reset is one LUT from a flip-flop.
+// Safe state: in a call whose registers in force fail the check, and in the call in which a new
+// period is first in force after a running call, every block is reset at the edge (the C++
+// axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz = ref_mark = 0, stage 1. A table
+// write (tbl_we = 1) fails the check, so it is made only in a safe-state edge, in which the DDS is
+// in reset (hls: dds_.write() only in the safe state of axis_core::step(); DESIGN 4.6).
 //
-// i_rst (synchronous, active high) is the power-up state of the C++ object: every block reset,
-// period_q = 0, run_q = 0, cfg_err = 0. The table RAM is not affected by any reset.
+// i_rst (synchronous, active high) is the power-up state of the C++ object: the first edge after
+// it is the power-up call (blocks in reset, cfg_err = 0, no registers in force yet). The table
+// RAM is not affected by any reset.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -127,13 +129,82 @@ module laserax_top #(
         end
     endgenerate
 
-    // ---- compensation registers in force (DESIGN 4.7): loaded in every call without
-    // i_comp_sync, else only with i_comp_commit; register-file state, not reset by the safe state
+    // ---- register stage (DESIGN 4.7): the registers presented in call t are in force in call
+    // t+1 (r_*); the configuration check of the presented values is registered with them
+    // (safe_q), so the block reset is one LUT from a flip-flop. No reset: the power-up call
+    // (blocks in reset) does not read them.
+    reg        [12:0]   r_period;
+    reg        [36:0]   r_ratio;
+    reg signed [63:0]   r_comp_offset;
+    reg                 r_comp_sync;
+    reg                 r_comp_commit;
+    reg        [7:0]    r_glitch_n;
+    reg        [15:0]   r_sw_debounce;
+    reg        [15:0]   r_min_spacing;
+    reg        [15:0]   r_pace_m;
+    reg        [31:0]   r_backlog_thr;
+    reg        [12:0]   r_mark_len;
+    reg        [4:0]    r_dac_width;
+    reg        [17:0]   r_amplitude;
+    reg        [12:0]   r_tbl_period;
+    reg                 r_rehome;
+    reg                 r_clear;
+    reg                 r_tbl_we;
+    reg        [9:0]    r_tbl_addr;
+    reg        [16:0]   r_tbl_data;
+    reg                 r_map_en;
+    reg                 r_bank_sel;
+    reg signed [37:0]   r_map_origin0;
+    reg        [4:0]    r_map_k0;
+    reg        [10:0]   r_map_n0;
+    reg signed [37:0]   r_map_origin1;
+    reg        [4:0]    r_map_k1;
+    reg        [10:0]   r_map_n1;
+    reg                 r_map_we;
+    reg        [9:0]    r_map_addr;
+    reg signed [23:0]   r_map_data;
+    always @(posedge i_clk) begin
+        r_period        <= i_period;
+        r_ratio         <= i_ratio;
+        r_comp_offset   <= i_comp_offset;
+        r_comp_sync     <= i_comp_sync;
+        r_comp_commit   <= i_comp_commit;
+        r_glitch_n      <= i_glitch_n;
+        r_sw_debounce   <= i_sw_debounce;
+        r_min_spacing   <= i_min_spacing;
+        r_pace_m        <= i_pace_m;
+        r_backlog_thr   <= i_backlog_thr;
+        r_mark_len      <= i_mark_len;
+        r_dac_width     <= i_dac_width;
+        r_amplitude     <= i_amplitude;
+        r_tbl_period    <= i_tbl_period;
+        r_rehome        <= i_rehome;
+        r_clear         <= i_clear;
+        r_tbl_we        <= i_tbl_we;
+        r_tbl_addr      <= i_tbl_addr;
+        r_tbl_data      <= i_tbl_data;
+        r_map_en        <= i_map_en;
+        r_bank_sel      <= i_bank_sel;
+        r_map_origin0   <= i_map_origin0;
+        r_map_k0        <= i_map_k0;
+        r_map_n0        <= i_map_n0;
+        r_map_origin1   <= i_map_origin1;
+        r_map_k1        <= i_map_k1;
+        r_map_n1        <= i_map_n1;
+        r_map_we        <= i_map_we;
+        r_map_addr      <= i_map_addr;
+        r_map_data      <= i_map_data;
+    end
+
+    // ---- compensation registers in force (DESIGN 4.7): loaded from the registers in force in
+    // every call without comp_sync, else only with comp_commit (not in the power-up call);
+    // register-file state, not reset by the safe state
     reg  [36:0]        ratio_h_q;
     reg  signed [63:0] offset_h_q;
-    wire               comp_load  = !i_comp_sync || i_comp_commit;
-    wire [36:0]        ratio_eff  = comp_load ? i_ratio : ratio_h_q;
-    wire signed [63:0] offset_eff = comp_load ? i_comp_offset : offset_h_q;
+    reg                pup_q;       // this call is the power-up call (DESIGN 4.7)
+    wire               comp_load  = !pup_q && (!r_comp_sync || r_comp_commit);
+    wire [36:0]        ratio_eff  = comp_load ? r_ratio : ratio_h_q;
+    wire signed [63:0] offset_eff = comp_load ? r_comp_offset : offset_h_q;
     always @(posedge i_clk) begin
         if (i_rst) begin
             ratio_h_q  <= RATIO_DEFAULT;
@@ -143,37 +214,39 @@ module laserax_top #(
             offset_h_q <= offset_eff;
         end
     end
+    // the ratio in force in the next call
+    wire [36:0]        ratio_next = (!i_comp_sync || i_comp_commit) ? i_ratio : ratio_eff;
 
-    // ---- configuration check (combinational, every call) -------------------------------------
+    // ---- configuration check of the presented registers (for the next call) ----------------
     wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
     wire        width_ok  = i_dac_width >= W_DAC_MIN && i_dac_width <= W_DAC_MAX;
     wire [17:0] amp_max   = (18'd1 << (i_dac_width - 5'd1)) - 18'd1;   // used only if width_ok
     wire        amp_ok    = width_ok && i_amplitude >= 18'd1 && i_amplitude <= amp_max;
     wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
     // count integrity (DESIGN 4.2): min_spacing > max(glitch_n, 1)
-    wire [7:0]  glitch_fl = (i_glitch_n == 8'd0) ? 8'd1 : i_glitch_n;
-    wire        spacing_ok = i_min_spacing > {8'd0, glitch_fl};
+    // (as two comparisons side by side: min_spacing > glitch_n and min_spacing > 1)
+    wire        spacing_ok = i_min_spacing > {8'd0, i_glitch_n} && i_min_spacing > 16'd1;
     wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && spacing_ok && i_ratio != 37'd0 &&
-                            ratio_eff != 37'd0 &&
+                            ratio_next != 37'd0 &&
                             i_pace_m >= 16'd2 && i_tbl_period == i_period && !i_tbl_we;
 
     // a period change between two running calls is a reconfiguration: one call in the safe state
-    reg  [12:0] period_q;                             // period register of the previous call
-    reg         run_q;                                // the previous call ran (not safe state)
-    wire        period_changed = run_q && i_period != period_q;
-    wire        safe      = !cfg_ok || period_changed;
-    wire        blk_rst   = i_rst || safe;            // every block held in reset
-
-    reg         cfg_err_q;
+    // (this call runs when !safe_q; r_period is the period in force in it)
+    reg         safe_q;                               // this call is in the safe state
+    reg         cfg_err_q, run_out_q;
+    wire        safe_next = !cfg_ok || (!safe_q && i_period != r_period);
+    wire        blk_rst   = i_rst || safe_q;          // every block held in reset
     always @(posedge i_clk) begin
         if (i_rst) begin
-            period_q  <= 13'd0;
-            run_q     <= 1'b0;
+            safe_q    <= 1'b1;                        // the power-up call: blocks in reset
+            pup_q     <= 1'b1;
             cfg_err_q <= 1'b0;
+            run_out_q <= 1'b0;
         end else begin
-            period_q  <= i_period;
-            run_q     <= !safe;
-            cfg_err_q <= safe;
+            safe_q    <= safe_next;
+            pup_q     <= 1'b0;
+            cfg_err_q <= safe_q && !pup_q;
+            run_out_q <= !safe_q;
         end
     end
 
@@ -181,7 +254,7 @@ module laserax_top #(
     // switch debounce
     wire swf_f, swf_valid, swf_glitch, swf_f_d, swf_valid_d, swf_glitch_d;
     input_filter #(.W_CNT(16)) u_swf (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_pin(i_sw), .i_n(i_sw_debounce),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_pin(i_sw), .i_n(r_sw_debounce),
         .o_f(swf_f), .o_valid(swf_valid), .o_glitch(swf_glitch),
         .o_f_d(swf_f_d), .o_valid_d(swf_valid_d), .o_glitch_d(swf_glitch_d));
 
@@ -193,7 +266,7 @@ module laserax_top #(
     wire [7:0]         dec_err_cnt;
     quad_decoder u_dec (
         .i_clk(i_clk), .i_rst(blk_rst), .i_a(i_a), .i_b(i_b), .i_lerr(i_lerr),
-        .i_glitch_n(i_glitch_n), .i_min_spacing(i_min_spacing), .i_clear(i_clear),
+        .i_glitch_n(r_glitch_n), .i_min_spacing(r_min_spacing), .i_clear(r_clear),
         .o_step(dec_step), .o_raw_count(dec_raw), .o_illegal(dec_illegal), .o_ovs(dec_ovs),
         .o_err_cnt(dec_err_cnt), .o_illegal_st(dec_illegal_st), .o_ovs_st(dec_ovs_st),
         .o_lerr(dec_lerr), .o_lerr_alarm(dec_lerr_alarm), .o_glitch_st(dec_glitch_st));
@@ -219,10 +292,10 @@ module laserax_top #(
     wire               map_active, map_in_range, map_clamped, map_cfg_err;
     error_map u_map (
         .i_clk(i_clk), .i_rst(blk_rst), .i_p(mul_comp), .i_homed(rep_homed),
-        .i_map_en(i_map_en), .i_bank_sel(i_bank_sel),
-        .i_origin0(i_map_origin0), .i_k0(i_map_k0), .i_n0(i_map_n0),
-        .i_origin1(i_map_origin1), .i_k1(i_map_k1), .i_n1(i_map_n1),
-        .i_we(i_map_we), .i_addr(i_map_addr), .i_data(i_map_data),
+        .i_map_en(r_map_en), .i_bank_sel(r_bank_sel),
+        .i_origin0(r_map_origin0), .i_k0(r_map_k0), .i_n0(r_map_n0),
+        .i_origin1(r_map_origin1), .i_k1(r_map_k1), .i_n1(r_map_n1),
+        .i_we(r_map_we), .i_addr(r_map_addr), .i_data(r_map_data),
         .o_corr(map_corr), .o_delta(map_delta), .o_active(map_active), .o_in_range(map_in_range),
         .o_clamped(map_clamped), .o_cfg_err(map_cfg_err));
 
@@ -236,15 +309,15 @@ module laserax_top #(
     wire signed [39:0] pac_backlog;
     wire               pac_ovs, pac_ovs_st;
     output_pacer u_pac (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(pac_delta), .i_pace_m(i_pace_m),
-        .i_thr(i_backlog_thr), .i_clear(i_clear),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(pac_delta), .i_pace_m(r_pace_m),
+        .i_thr(r_backlog_thr), .i_clear(r_clear),
         .o_pstep(pac_pstep), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
         .o_ovs_st(pac_ovs_st));
 
     // rephase: pacer step, debounced switch and laser error of the previous call
     rephase u_rep (
         .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_sw(swf_f), .i_sw_valid(swf_valid),
-        .i_rehome(i_rehome), .i_unhome(dec_lerr), .i_period(i_period), .i_mark_len(i_mark_len),
+        .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_period(r_period), .i_mark_len(r_mark_len),
         .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
         .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),
         .o_homed(rep_homed));
@@ -252,9 +325,9 @@ module laserax_top #(
     // DDS: rephase output step of the previous call; the table port is always active
     wire signed [17:0] dds_sin, dds_cos;
     dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(i_period),
-        .i_amplitude(i_amplitude), .i_tbl_we(i_tbl_we), .i_tbl_addr(i_tbl_addr),
-        .i_tbl_data(i_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
+        .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period),
+        .i_amplitude(r_amplitude), .i_tbl_we(r_tbl_we), .i_tbl_addr(r_tbl_addr),
+        .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
 
     // ---- digital A/B/Z: rephase outputs of call t-3 ------------------------------------------
     reg [1:0] rep_pos2_q, rep_pos3_q, out_pos2_q;   // out_pos mod 4: rep_q2, rep_q3, output stage
@@ -286,22 +359,22 @@ module laserax_top #(
     // +-(2^(dac_width-1) - 1) with the dac_width of call t; a clamp sets the sticky dac_clip_st
     // (clear of call t acts first, the event wins; reset with the chain). dac_width and clear of
     // call t are registered with the DDS outputs, so the clamp sits after registers only.
-    reg  [4:0]         dacw_q;
+    reg  signed [17:0] dac_hi;      // 2^(dac_width-1) - 1 of call t, formed before the register
     reg                clear_q, clip_st_q;
-    wire signed [17:0] dac_hi   = $signed((18'd1 << (dacw_q - 5'd1)) - 18'd1);
-    wire               run_now  = !cfg_err_q;    // dac_width is legal (12..18) in a running call
+    wire [17:0]        dac_hi_d = (18'd1 << (r_dac_width - 5'd1)) - 18'd1;
+    wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
     wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < -dac_hi;
     wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < -dac_hi;
     wire               clip_now = sin_hi || sin_lo || cos_hi || cos_lo;
     wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_now);
     always @(posedge i_clk) begin
         if (i_rst) begin
-            dacw_q    <= 5'd16;
+            dac_hi    <= 18'sd32767;
             clear_q   <= 1'b0;
             clip_st_q <= 1'b0;
         end else begin
-            dacw_q    <= i_dac_width;
-            clear_q   <= i_clear;
+            dac_hi    <= $signed(dac_hi_d);
+            clear_q   <= r_clear;
             clip_st_q <= clip_st;
         end
     end

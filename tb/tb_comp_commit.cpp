@@ -136,10 +136,14 @@ int main(int argc, char** argv) {
         s.comp_commit = true;
         lxt::dual_axis ax(s);
         lx::axis_pins p;
+        res.check(ax.step(p).empty() && !ax.gold().cfg_err, "commit of a valid ratio (power-up call)");
         res.check(ax.step(p).empty() && !ax.gold().cfg_err, "commit of a valid ratio");
         s.comp_commit = false;
         s.ratio = 0;
         ax.set(s);
+        // register stage (DESIGN 4.7): presented in this call, in force in the next one
+        res.check(ax.step(p).empty() && !ax.gold().cfg_err && !ax.hls().cfg_err,
+                  "ratio register 0 with comp_sync: cfg_err in the call it is presented (no register stage?)");
         res.check(ax.step(p).empty() && ax.gold().cfg_err && ax.hls().cfg_err, "ratio register 0 with comp_sync: no cfg_err");
         s.ratio = 5ULL << 32;  // valid register, not committed: the held 3.0 is in force
         ax.set(s);

@@ -110,8 +110,10 @@ int main(int argc, char** argv) {
             const std::string m = ax.step(p);
             res.expect(m.empty(), [&] { return "period change: " + m; });
             if (ax.hls().cfg_err) ++safe_calls;
-            if (t == 2000) res.check(ax.hls().cfg_err && ax.hls().raw_count == 0, "period change: no safe-state call");
-            if (t == 2001) res.check(!ax.hls().cfg_err, "period change: more than one safe-state call");
+            // register stage (DESIGN 4.7): the period presented in call 2000 is in force in 2001
+            if (t == 2000) res.check(!ax.hls().cfg_err, "period change: safe state before the period is in force");
+            if (t == 2001) res.check(ax.hls().cfg_err && ax.hls().raw_count == 0, "period change: no safe-state call");
+            if (t == 2002) res.check(!ax.hls().cfg_err, "period change: more than one safe-state call");
         }
         res.check(safe_calls == 1, "period change: " + std::to_string(safe_calls) + " safe-state calls (power-up must cost none)");
     }

@@ -185,8 +185,13 @@ load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, c
         const double cpr = static_cast<double>(img.get(rm::idx::ratio)) / 4294967296.0;
         return static_cast<long>(static_cast<double>(img.get(rm::idx::pace_m)) * cpr) + 4;
     };
-    const auto call = [&](bool in_window) {
+    // register stage (DESIGN 4.7): a call runs on the registers presented in the previous call,
+    // so each call is judged by the window state of the previous one
+    bool prev_in_window = false;
+    const auto call = [&](bool presented_in_window) {
         const lx::axis_out o = core.step(ax.pins(), lxt::hls_from(img));
+        const bool in_window = prev_in_window;
+        prev_in_window = presented_in_window;
         ++st.calls;
         if (in_window) {
             ++st.window_calls;

@@ -61,9 +61,10 @@ struct rig {
         s.rehome = rehome;
         s.clear = clear;
         ax.set(s);
-        call(what);
+        call(what);  // presented in this call ...
         s.rehome = s.clear = false;
         ax.set(s);
+        call(what);  // ... in force in this one (register stage, DESIGN 4.7)
     }
     const lx::axis_out& h() const { return ax.hls(); }
 };

@@ -160,11 +160,9 @@ dual_axis::dual_axis(const axis_settings& s) : s_(s), hr_(to_hls(s)), gr_(to_gol
 }
 
 void dual_axis::set(const axis_settings& s) {
-    if (s.period != s_.period || s.amplitude != s_.amplitude) {
-        std::string err;
-        if (!dds_table(static_cast<int>(s.period), static_cast<int>(s.amplitude), &err).empty())
-            load_table(core_, static_cast<int>(s.period), static_cast<int>(s.amplitude));
-    }
+    // the table is reloaded after the call in which the new P / amplitude are presented, i.e. just
+    // before the call in which they are in force (register stage, DESIGN 4.7)
+    if (s.period != s_.period || s.amplitude != s_.amplitude) table_pending_ = true;
     s_ = s;
     hr_ = to_hls(s);
     gr_ = to_golden(s);
@@ -179,10 +177,17 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     h_ = core_.step(p, hr_);
     g_ = gold_.step(gp, gr_);
     ++calls_;
-    if (!s_.comp_sync || s_.comp_commit) {
-        if (eff_ratio_ != s_.ratio || eff_offset_ != s_.comp_offset) settled_ = 0;
-        eff_ratio_ = s_.ratio;
-        eff_offset_ = s_.comp_offset;
+    // the call ran on f_ (the settings presented in the previous call); none in the power-up call
+    if (have_f_ && (!f_.comp_sync || f_.comp_commit)) {
+        if (eff_ratio_ != f_.ratio || eff_offset_ != f_.comp_offset) settled_ = 0;
+        eff_ratio_ = f_.ratio;
+        eff_offset_ = f_.comp_offset;
+    }
+    if (table_pending_) {
+        std::string err;
+        if (!dds_table(static_cast<int>(s_.period), static_cast<int>(s_.amplitude), &err).empty())
+            load_table(core_, static_cast<int>(s_.period), static_cast<int>(s_.amplitude));
+        table_pending_ = false;
     }
     if (s_.emap.we) {  // write_map(): one call only
         s_.emap.we = false;
@@ -191,6 +196,8 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     }
     std::string m = compare(h_, g_);
     if (m.empty()) m = integrity();
+    f_ = s_;
+    have_f_ = true;
     return m;
 }
 
@@ -220,7 +227,7 @@ std::string dual_axis::integrity() {
         else if (g_.paced_pos + g_.backlog != cc_hist_[2])  // pacer taps: 2 calls late (DESIGN 4.4)
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
                 " != comp + corr of three calls earlier " + std::to_string(cc_hist_[2]);
-        const bool use_sc = static_cast<double>(s_.amplitude) * 6.283185307179586 / static_cast<double>(s_.period) >= 8.0;
+        const bool use_sc = static_cast<double>(f_.amplitude) * 6.283185307179586 / static_cast<double>(f_.period) >= 8.0;
         if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
         prev_use_sc_ = use_sc;
         const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);

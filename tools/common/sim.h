@@ -154,6 +154,10 @@ private:
     int64_t raw_hist_[L_MUL + 1] = {};  // golden raw_count of calls t-1 .. t-1-L_MUL
     long long settled_ = 0;             // calls since the pair in force last changed (or restart)
     bool prev_use_sc_ = false;          // sin/cos decoded on the previous call
+    // register stage (DESIGN 4.7): the settings presented in a call are in force in the next one
+    axis_settings f_{};          // settings in force in the current call (presented in the previous)
+    bool have_f_ = false;        // false in the power-up call (no settings in force)
+    bool table_pending_ = false;  // DDS table to reload after the call in which P / amp were presented
     // ratio / comp_offset in force (DESIGN 4.7: loaded every call without comp_sync, else on comp_commit)
     uint64_t eff_ratio_ = golden::default_ratio();
     int64_t eff_offset_ = 0;
