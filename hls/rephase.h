@@ -13,9 +13,10 @@
 //     call after A; the first count after A never carries and needs no k: `fresh`);
 //   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else
 //     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
-//   * the phase of the target output position is kept as w = (ph + P/8) mod P (w moves by
-//     pstep + extra count, -2..2); at A it is registered (wA) and d is formed from it in the call
-//     after A (one subtract: P - wA forward, wA -/+ P/2 backward; o.d shows it from A on);
+//   * the phase is kept as w = (ph_out + P/8) mod P of the output position (w moves by ostep,
+//     -1..1, with registered wrap flags); at A no extra count is pending, so it is the target
+//     phase there; at A it is registered (wA) and d is formed from it in the call after A (one
+//     subtract: P - wA forward, wA -/+ P/2 backward; o.d shows it from A on);
 //   * the mark is a relative counter u = dir * (paced - B) from homing on: mark = u in [0, L]
 //     (L = mark_len at homing);
 //   * the homing call is flagged a call ahead (`at_last`: tr == P - 1) and B = A + dir*P is formed
@@ -89,6 +90,8 @@ public:
         v_ = 0;
         lag_ = 0;
         w_ = 0;
+        t1_ = false;
+        z0_ = false;
         w_init_ = false;
         u_ = 0;
         len_ = 0;
@@ -116,14 +119,50 @@ public:
         if (in2 && s < 0 && tr_ > 0 && v_ < 0) dq = -1;
         const step_t dadj = fwd_ ? dq : step_t(-dq);
 
-        // 3. phase of the target output position, w = (ph + P/8) mod P: moves by pstep + dadj
-        const cfg::ph_t w0 = w_init_ ? w_ : p8;  // ph = 0 after reset
-        w_ = w_move(w0, pstep.to_int() + dadj.to_int(), pp);
-        w_init_ = true;
+        // 3. phase of the output position, w = (ph_out + P/8) mod P: moves by ostep (-1..1). At A
+        //    no extra count is pending (lag = 0: the block precondition), so this is the phase of
+        //    the target position there. The wrap flags t1 (w == P - 1) and z0 (w == 0) are
+        //    registers, formed for the next value from w by equality with P - 2, P, 1, all ones.
+        step_t ostep = pstep;
+        if (pstep == 0) {
+            if (lag_ > 0) ostep = 1;
+            if (lag_ < 0) ostep = -1;
+        }
+        {
+            using x_t = sint<cfg::W_P + 2>;
+            const x_t px = x_t(pp);
+            const cfg::ph_t w0 = w_init_ ? w_ : p8;  // ph = 0 after reset
+            const bool t1 = w_init_ ? t1_ : (pp == 1);
+            const bool z0 = w_init_ ? z0_ : (p8 == 0);
+            if (ostep > 0) {
+                w_ = t1 ? cfg::ph_t(0) : cfg::ph_t(w0 + 1);
+                t1_ = t1 ? (px == 1) : (x_t(w0) == px - 2);
+                z0_ = t1 ? true : (w0 == cfg::ph_t(-1));
+            } else if (ostep < 0) {
+                w_ = z0 ? cfg::ph_t(px - 1) : cfg::ph_t(w0 - 1);
+                t1_ = z0 ? true : (x_t(w0) == px);
+                z0_ = z0 ? (cfg::ph_t(px - 1) == 0) : (w0 == 1);
+            } else {
+                w_ = w0;
+                t1_ = t1;
+                z0_ = z0;
+            }
+            w_init_ = true;
+        }
 
         // 4. stage machine
         // d: formed from the phase at A in the call after A (dnew), then held
+        const cfg::ph_t d_reg = d_;
         const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
+        // 2d - P for the first count after A: in the call after A straight from wA (-P or P - 2 wA
+        // forward, 2 wA or 2 wA - 2P backward; equal to 2d - P for P <= 4096), later from d
+        const bool dnew_now = dnew_;
+        const auto t_fresh = [&](cfg::p_t p) {
+            const cfg::br_t px = cfg::br_t(p), wa2 = cfg::br_t(cfg::br_t(wa_) + cfg::br_t(wa_));
+            if (!dnew_now) return cfg::br_t(cfg::br_t(d_reg) + cfg::br_t(d_reg) - px);
+            if (fwd_) return (wa_ == 0) ? cfg::br_t(-px) : cfg::br_t(px - wa2);
+            return (wa_ < (p >> 1)) ? wa2 : cfg::br_t(wa2 - px - px);
+        };
         dnew_ = false;
         const pos_t a_prev = a_;
         const bool fwd_prev = fwd_;
@@ -146,7 +185,7 @@ public:
             if (s > 0) {
                 if (fresh_) {  // num = 0: no carry; num' = d
                     num_ = d_cur;
-                    t_ = cfg::br_t(cfg::br_t(d_cur) + cfg::br_t(d_cur) - cfg::br_t(pp));
+                    t_ = t_fresh(pp);  // 2d - P
                     v_ = 0;
                     fresh_ = false;
                 } else if (t_ >= 0) {  // num + d >= P: carry
@@ -187,19 +226,18 @@ public:
             }
         }
         d_ = d_cur;
-        k_ = cfg::br_t(cfg::br_t(d_cur) - cfg::br_t(pp));
+        // k = d - P from the register d (before this call's load): valid from the third call
+        // after A, and the first carry can come no earlier (counts >= 2 calls apart)
+        k_ = cfg::br_t(cfg::br_t(d_reg) - cfg::br_t(pp));
         bs_ = fwd_prev ? pos_t(a_prev + pos_t(pp)) : pos_t(a_prev - pos_t(pp));
         at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
 
-        // 5. output step: the real count, or else one pending extra count
-        step_t ostep = pstep;
+        // 5. output step (ostep above): the real count, or else one pending extra count
         if (pstep != 0) {
             lag_ = lag_ + dadj;
         } else {
-            if (lag_ > 0) ostep = 1;
-            if (lag_ < 0) ostep = -1;
             lag_ = lag_ - ostep;
             adj_ = adj_ + ostep;
         }
@@ -236,21 +274,6 @@ private:
         return (w >= p2) ? cfg::ph_t(w - p2) : cfg::ph_t(w + p2);
     }
 
-    // (w + e) mod P for w in [0, P), e in -2..2: one narrow add, the wrap found by equality with
-    // P (or 0, 1) and the wrapped value formed from P in parallel, so no compare follows an add
-    static cfg::ph_t w_move(cfg::ph_t w, int e, cfg::p_t p) {
-        using x_t = sint<cfg::W_P + 2>;
-        const x_t x = x_t(w) + x_t(e);
-        const x_t px = x_t(p);
-        if (e == 1 && x == px) return cfg::ph_t(0);
-        if (e == 2 && x == px) return cfg::ph_t(0);
-        if (e == 2 && x == px + 1) return cfg::ph_t(1);
-        if (e == -1 && w == 0) return cfg::ph_t(px - 1);
-        if (e == -2 && w == 0) return cfg::ph_t(px - 2);
-        if (e == -2 && w == 1) return cfg::ph_t(px - 1);
-        return cfg::ph_t(x);
-    }
-
     cfg::stage_t stage_;
     pos_t paced_, out_pos_, adj_;
     bool fwd_last_, sw_prev_, sw_seen_;
@@ -265,7 +288,7 @@ private:
     cfg::br_t t_, v_;
     cfg::lag_t lag_;
     cfg::ph_t w_;
-    bool w_init_;
+    bool t1_, z0_, w_init_;
     pos_t u_;
     cfg::p_t len_;
     pos_t b_, c_, z_;

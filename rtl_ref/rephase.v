@@ -9,7 +9,7 @@
 //   2. the extra count dq of this call from registers: a forward count carries when t >= 0, a
 //      backward count inside the window borrows when v < 0 (Bresenham state num, t = num + d - P,
 //      v = num - d; k = d - P).
-//   3. phase of the target output position w = (ph + P/8) mod P moves by pstep + dadj (-2..2).
+//   3. phase w = (ph_out + P/8) mod P of the output position moves by ostep (-1..1).
 //   4. stage machine: unhome/rehome -> stage 1; stage 1: rising switch edge (and !unhome) ->
 //      stage 2, A = paced', d from w (P - w forward, w -/+ P/2 backward); stage 2: (num, t, v)
 //      step, tr < 0 -> stage 1, tr == P (flagged a call ahead: at_last) -> stage 3, B = bs (A +
@@ -74,7 +74,7 @@ module rephase (
     reg signed [W_LAG-1:0] lag_q, lag_d;
     reg signed [1:0]       lsgn_q, lsgn_d;     // sgn(lag): the extra count of an idle call
     reg [W_PH-1:0]         w_q, w_d;
-    reg                    w_init_q;
+    reg                    t1_q, z0_q, w_init_q;  // w == P - 1, w == 0
     reg signed [W_POS-1:0] u_q, u_d;
     reg [W_P-1:0]          len_q, len_d;
     reg [W_P:0]            len1_q, len1_d;      // L + 1
@@ -110,24 +110,26 @@ module rephase (
     wire dq_nz = dq_up || dq_dn;     // an extra count rides on this real count
     // dadj = dir * dq = pstep * |dq| (dq has the sign of s = dir * pstep)
 
-    // 3. w moves by e = pstep + dadj: candidates from registers, the wrap found by equality
+    // 3. w = (ph_out + P/8) mod P moves by ostep (-1..1): candidates from registers, the wrap
+    //    taken from the registered flags t1 (w == P - 1) and z0 (w == 0); the flags of the next
+    //    value come from equalities of w with P - 2, P, 1 and all ones (beside the candidates)
+    wire signed [1:0]     ostep_n = pz ? lsgn_q : i_pstep;
+    wire                  eup  = ostep_n == 2'sd1;
+    wire                  edn  = ostep_n == -2'sd1;
     wire [W_PH-1:0]       w0   = w_init_q ? w_q : p8;                          // ph = 0 after reset
+    wire                  t1   = w_init_q ? t1_q : (i_period == 13'd1);
+    wire                  z0   = w_init_q ? z0_q : (p8 == {W_PH{1'b0}});
     wire signed [W_X-1:0] w0x  = $signed({{(W_X-W_PH){1'b0}}, w0});
     wire signed [W_X-1:0] x_p1 = w0x + 1;
-    wire signed [W_X-1:0] x_p2 = w0x + 2;
     wire signed [W_X-1:0] x_m1 = w0x - 1;
-    wire signed [W_X-1:0] x_m2 = w0x - 2;
     wire signed [W_X-1:0] p_m1 = px - 1;
     wire signed [W_X-1:0] p_m2 = px - 2;
-    wire                  w0_0 = w0 == {W_PH{1'b0}};
-    wire                  w0_1 = w0 == {{(W_PH-1){1'b0}}, 1'b1};
-    wire                  w0_t1 = w0x == p_m1;                               // w0 == P - 1
-    wire                  w0_t2 = w0x == p_m2;                               // w0 == P - 2
-    wire [W_PH-1:0] w_p1 = w0_t1 ? {W_PH{1'b0}} : x_p1[W_PH-1:0];
-    wire [W_PH-1:0] w_p2 = w0_t2 ? {W_PH{1'b0}} : w0_t1 ? {{(W_PH-1){1'b0}}, 1'b1} : x_p2[W_PH-1:0];
-    wire [W_PH-1:0] w_m1 = w0_0 ? p_m1[W_PH-1:0] : x_m1[W_PH-1:0];
-    wire [W_PH-1:0] w_m2 = w0_0 ? p_m2[W_PH-1:0] : w0_1 ? p_m1[W_PH-1:0] : x_m2[W_PH-1:0];
-    wire [W_PH-1:0] w_n  = pz ? w0 : pfwd ? (dq_nz ? w_p2 : w_p1) : (dq_nz ? w_m2 : w_m1);
+    wire [W_PH-1:0] w_n  = eup ? (t1 ? {W_PH{1'b0}} : x_p1[W_PH-1:0]) :
+                           edn ? (z0 ? p_m1[W_PH-1:0] : x_m1[W_PH-1:0]) : w0;
+    wire            t1_n = eup ? (t1 ? (px == 1) : (w0x == p_m2)) :
+                           edn ? (z0 ? 1'b1 : (w0x == px)) : t1;
+    wire            z0_n = eup ? (t1 ? 1'b1 : (w0 == {W_PH{1'b1}})) :
+                           edn ? (z0 ? (p_m1[W_PH-1:0] == {W_PH{1'b0}}) : (w0 == {{(W_PH-1){1'b0}}, 1'b1})) : z0;
 
     // d from the phase at A (wA, registered at A): P - wA forward, (wA - P/2) mod P backward. It
     // is formed from registers in the call after A (dnew) and loaded into d there; the output o_d
@@ -143,9 +145,14 @@ module rephase (
     // Bresenham candidates (one 14-bit add of registers each)
     wire signed [W_BR-1:0] px_br  = $signed({1'b0, i_period});
     wire signed [W_BR-1:0] d_br   = $signed({{(W_BR-W_PH){1'b0}}, d_q});
-    wire signed [W_BR-1:0] dc_br  = $signed({{(W_BR-W_PH){1'b0}}, d_cur});
+    // 2d - P for the first count after A (num' = d): in the call after A straight from wA
+    // (-P or P - 2 wA forward, 2 wA or 2 wA - 2P backward), later from the register d
+    wire signed [W_BR-1:0] wa_br  = $signed({{(W_BR-W_PH){1'b0}}, wa_q});
+    wire signed [W_BR-1:0] tf_fwd = (wa_q == {W_PH{1'b0}}) ? -px_br : px_br - (wa_br <<< 1);
+    wire signed [W_BR-1:0] wa_mp  = wa_br - px_br;
+    wire signed [W_BR-1:0] tf_bwd = wa_mp2[W_X-1] ? (wa_br <<< 1) : (wa_mp <<< 1);
     wire signed [W_BR-1:0] num_br = $signed({{(W_BR-W_PH){1'b0}}, num_q});
-    wire signed [W_BR-1:0] t_fresh = (dc_br <<< 1) - px_br;  // 2d - P
+    wire signed [W_BR-1:0] t_fresh = dnew_q ? (fwd_q ? tf_fwd : tf_bwd) : (d_br <<< 1) - px_br;
     wire signed [W_BR-1:0] t_pk   = t_q + k_q;
     wire signed [W_BR-1:0] t_pd   = t_q + d_br;
     wire signed [W_BR-1:0] num_mp = num_br - px_br;
@@ -157,7 +164,21 @@ module rephase (
     // homing: the count that makes tr == P (at_last: tr == P - 1 after the previous call)
     wire homing = in2 && s_pos && at_last_q;
     wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
-    wire signed [W_TR-1:0] tr_pm1 = $signed({1'b0, i_period}) - 1;
+    // A + dir*P for B (formed every call from registers; used at homing, >= P calls after A):
+    // two plain adders and a select, so no negation chain precedes the 38-bit add
+    wire signed [W_POS-1:0] bs_fwd = a_q + period_x;
+    wire signed [W_POS-1:0] bs_bwd = a_q - period_x;
+    // the next at_last (tr' == P - 1) by equalities of the register tr (tr >= 0 always), and the
+    // step back past A (tr' < 0) without the add: no compare follows the tr add
+    wire signed [W_TR-1:0] tr_px  = $signed({1'b0, i_period});
+    wire signed [W_TR-1:0] tr_pm1 = tr_px - 1;
+    wire signed [W_TR-1:0] tr_pm2 = tr_px - 2;
+    wire        tr_is0   = tr_q == {W_TR{1'b0}};
+    wire        tr_ismax = tr_q == {1'b0, {(W_TR-1){1'b1}}};
+    wire        tr_back  = (s_neg && tr_is0) || (s_pos && tr_ismax);   // tr + s < 0
+    wire        p_is1    = i_period == 13'd1;                          // 0 == P - 1
+    wire        last_hold = tr_q == tr_pm1;
+    wire        last_s    = s_pos ? (tr_q == tr_pm2) : s_neg ? (tr_q == tr_px) : last_hold;
 
     // 6. mark test on u before the count: u' = u + s in [0, L]
     wire        u_hz   = u_q[W_POS-1:W_P+1] == {(W_POS-W_P-1){1'b0}}; // 0 <= u < 2^14
@@ -170,8 +191,7 @@ module rephase (
     wire        in_rng = s_pos ? (u_m1 || (u_hz && u_lt)) :
                          s_neg ? (u_hz && u_ge1 && u_le1) : (u_hz && u_le);
 
-    // 5. the output step
-    wire signed [1:0] ostep_n = pz ? lsgn_q : i_pstep;
+    // 5. the output step (ostep_n above)
     wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn_q[1]}}, lsgn_q};
     wire signed [W_POS-1:0] ostep_x = {{(W_POS-2){ostep_n[1]}}, ostep_n};
     wire signed [W_LAG-1:0] lag_n = pz ? lag_q - {{(W_LAG-2){lsgn_q[1]}}, lsgn_q} :
@@ -180,7 +200,6 @@ module rephase (
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
-    wire              tr_neg = tr_s[W_TR-1];
     wire [W_PH-1:0]   t_lo   = t_q[W_PH-1:0];
     wire [W_PH-1:0]   v_lo   = v_q[W_PH-1:0];
     wire [W_PH-1:0]   v_pp_lo = v_pp[W_PH-1:0];
@@ -251,7 +270,7 @@ module rephase (
                 end
             end
             tr_d = tr_s;
-            if (tr_neg) begin
+            if (tr_back) begin
                 stage_d = 2'd1;                                 // back past A
                 tr_d    = {W_TR{1'b0}};
             end else if (homing) begin
@@ -264,9 +283,12 @@ module rephase (
             end
         end
         if (dnew_q) d_d = d_cur;
-        k_d       = dc_br - px_br;
-        bs_d      = fwd_q ? a_q + period_x : a_q - period_x;
-        at_last_d = tr_d == tr_pm1;
+        k_d       = d_br - px_br;     // from the register d: valid from the third call after A
+        bs_d      = fwd_q ? bs_fwd : bs_bwd;
+        // at_last' = (tr' == P - 1), from the case that formed tr'
+        if (cap || (in2 && tr_back)) at_last_d = p_is1;
+        else if (in2)                at_last_d = last_s;
+        else                         at_last_d = last_hold;
 
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
@@ -305,6 +327,8 @@ module rephase (
             lag_q      <= {W_LAG{1'b0}};
             lsgn_q     <= 2'sd0;
             w_q        <= {W_PH{1'b0}};
+            t1_q       <= 1'b0;
+            z0_q       <= 1'b0;
             w_init_q   <= 1'b0;
             u_q        <= {W_POS{1'b0}};
             len_q      <= {W_P{1'b0}};
@@ -338,6 +362,8 @@ module rephase (
             lag_q      <= lag_d;
             lsgn_q     <= lsgn_d;
             w_q        <= w_d;
+            t1_q       <= t1_n;
+            z0_q       <= z0_n;
             w_init_q   <= 1'b1;
             u_q        <= u_d;
             len_q      <= len_d;
