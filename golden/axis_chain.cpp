@@ -27,9 +27,12 @@ void axis_chain::reset() {
     const uint64_t keep_ratio = ratio_held_;  // held registers: register file, not chain state
     const int64_t keep_offset = offset_held_;
     error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
+    dds_sincos keep_dds = std::move(dds_);  // keeps its memo of the codes (a pure function)
     *this = axis_chain{};
     emap_ = std::move(keep_map);
     emap_.reset();
+    dds_ = std::move(keep_dds);
+    dds_.reset();
     last_period_ = keep;
     was_running_ = keep_run;
     ratio_held_ = keep_ratio;

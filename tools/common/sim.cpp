@@ -121,10 +121,19 @@ void controller_decoder::reset(int period, int64_t start_pos) {
 }
 
 bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb) {
-    const double two_pi = 6.283185307179586;
-    double ang = std::atan2(static_cast<double>(sin_code), static_cast<double>(cos_code));
-    if (ang < 0) ang += two_pi;
-    const int ph = static_cast<int>(std::lround(ang / two_pi * period_)) % period_;
+    // the phase is a pure function of (sin, cos, P): memoised for the last triple (the codes
+    // change only when the output moves)
+    if (!ph_memo_ok_ || sin_code != memo_sin_ || cos_code != memo_cos_ || period_ != memo_period_) {
+        const double two_pi = 6.283185307179586;
+        double ang = std::atan2(static_cast<double>(sin_code), static_cast<double>(cos_code));
+        if (ang < 0) ang += two_pi;
+        memo_ph_ = static_cast<int>(std::lround(ang / two_pi * period_)) % period_;
+        memo_sin_ = sin_code;
+        memo_cos_ = cos_code;
+        memo_period_ = period_;
+        ph_memo_ok_ = true;
+    }
+    const int ph = memo_ph_;
     const int qi = qa ? (qb ? 2 : 1) : (qb ? 3 : 0);
     bool ok = true;
     if (!primed_) {
