@@ -162,6 +162,18 @@ template <int W> using uint = fixed_int<W, false>;
 }  // namespace lx
 #endif
 
+// LASERAX_FLATTEN: on the per-call step() of a chain, inlines every call in its body (GCC /
+// Clang, own integer back end, C simulation only): the block outputs then pass in registers
+// instead of through memory (issue 13: simulation speed). No effect on what is computed; empty
+// for synthesis and with the vendor types (their deep class hierarchies would make every chain
+// step one very large function to compile, at -O0 too).
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
+    !defined(LASERAX_USE_AC_TYPES)
+#define LASERAX_FLATTEN __attribute__((flatten))
+#else
+#define LASERAX_FLATTEN
+#endif
+
 namespace lx {
 // Number of bits needed to hold values 0..v; usable with both back ends for derived widths.
 // (compile-time only; a loop rather than recursion to keep the hls/ lint simple).
