@@ -137,7 +137,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& regs) {
     pac_q_ = pac_o;
     emap_q_ = emap_o;
     rep_q3_ = rep_q2_;
-    rep_q2_ = rep_q_;
+    rep_q2_ = rep_tap{rep_q_.out_pos, rep_q_.mark};
     rep_q_ = rep_o;
     return o;
 }
