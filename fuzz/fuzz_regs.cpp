@@ -7,9 +7,11 @@
 // value is taken modulo the register's width, so every width value is reachable, legal or not;
 // table-port registers and registers golden lacks are skipped), 1..3 = run 1..64 clocks of motion
 // (direction, edge spacing, switch level and laser-error pulses from the next byte).
-// Any mismatch traps (libFuzzer saves the input). Build and run: scripts/fuzz.sh.
+// Any mismatch traps (libFuzzer saves the input). Build and run: scripts/fuzz.sh. With FUZZ_TRACE=1
+// in the environment the register writes of an input are printed (to read a saved crash).
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "tools/common/regmap_table.h"
@@ -36,6 +38,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             if (!rm::set(ns, r, rm::from_bits(info, bits))) continue;
             s = ns;
             ax.set(s);
+            if (std::getenv("FUZZ_TRACE"))
+                std::fprintf(stderr, "call %lld: write %s = %llu\n", calls, info.name,
+                             static_cast<unsigned long long>(rm::from_bits(info, bits)));
         } else {
             const uint8_t m = next();
             const int n = 1 + (m & 63);

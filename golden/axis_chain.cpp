@@ -29,11 +29,14 @@ void axis_chain::reset() {
     error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
     const axis_regs keep_regs = in_force_;  // the register stage is not chain state
     const bool keep_powered = powered_;
+    dds_sincos keep_dds = std::move(dds_);  // keeps its memo of the codes (a pure function)
     *this = axis_chain{};
     in_force_ = keep_regs;
     powered_ = keep_powered;
     emap_ = std::move(keep_map);
     emap_.reset();
+    dds_ = std::move(keep_dds);
+    dds_.reset();
     last_period_ = keep;
     was_running_ = keep_run;
     ratio_held_ = keep_ratio;
@@ -147,7 +150,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
     pac_q_ = pac_o;
     emap_q_ = emap_o;
     rep_q3_ = rep_q2_;
-    rep_q2_ = rep_q_;
+    rep_q2_ = rep_tap{rep_q_.out_pos, rep_q_.mark};
     rep_q_ = rep_o;
     return o;
 }

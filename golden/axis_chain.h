@@ -107,8 +107,12 @@ private:
     output_pacer::out pac_q_{};
     error_map::out emap_q_{};
     rephase::out rep_q_{};   // rephase output of call t-1
-    rephase::out rep_q2_{};  // rephase output of call t-2
-    rephase::out rep_q3_{};  // rephase output of call t-3 (qa, qb, qz, ref_mark: DESIGN 4.7)
+    struct rep_tap {         // the rephase outputs qa, qb, qz and ref_mark use (DESIGN 4.7)
+        int64_t out_pos = 0;
+        bool mark = false;
+    };
+    rep_tap rep_q2_{};  // of call t-2
+    rep_tap rep_q3_{};  // of call t-3
     int64_t last_period_ = 0;    // period register of the previous call
     uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
     int64_t offset_held_ = 0;                // comp_offset in force

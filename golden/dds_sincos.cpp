@@ -40,7 +40,39 @@ int64_t rha(long double v) { return static_cast<int64_t>(std::llround(v)); }  //
 
 }  // namespace
 
-void dds_sincos::reset() { *this = dds_sincos{}; }
+void dds_sincos::reset() {
+    ph_ = 0;
+    s1_ = 0;
+    c1_ = 0;
+    sin_q_ = 0;
+    cos_q_ = 0;
+}
+
+void dds_sincos::codes(int64_t k, int64_t P, int64_t amplitude, int64_t& s, int64_t& c) {
+    const long double amp = static_cast<long double>(amplitude);
+    if (P > kMemoMaxP) {
+        s = rha(amp * sincos_turn(k, P, false));
+        c = rha(amp * sincos_turn(k, P, true));
+        return;
+    }
+    if (P != memo_P_ || amplitude != memo_amp_) {  // a new (P, amp): every entry is stale
+        memo_P_ = P;
+        memo_amp_ = amplitude;
+        if (++memo_gen_ == 0) {  // generation wrapped: clear explicitly
+            for (memo_entry& e : memo_) e.gen = 0;
+            memo_gen_ = 1;
+        }
+        if (memo_.size() < static_cast<size_t>(P)) memo_.resize(static_cast<size_t>(P));
+    }
+    memo_entry& e = memo_[static_cast<size_t>(k)];
+    if (e.gen != memo_gen_) {
+        e.s = rha(amp * sincos_turn(k, P, false));
+        e.c = rha(amp * sincos_turn(k, P, true));
+        e.gen = memo_gen_;
+    }
+    s = e.s;
+    c = e.c;
+}
 
 dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
     const int64_t P = period;
@@ -50,9 +82,7 @@ dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
         // outputs from the phase before this call's update. Reading: amplitude and P of this
         // call; ph is reduced mod the current P (only matters if P changed while running).
         const int64_t k = mod(ph_, P);
-        const long double amp = static_cast<long double>(amplitude);
-        s1_ = rha(amp * sincos_turn(k, P, false));
-        c1_ = rha(amp * sincos_turn(k, P, true));
+        codes(k, P, amplitude, s1_, c1_);
         ph_ = mod(ph_ + ostep, P);
     } else {
         // invalid configuration (never reached through axis_chain): hold, no division by 0

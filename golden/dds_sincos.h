@@ -12,8 +12,13 @@
 // distance of any non-tie value to a rounding boundary. Exact ties (amp odd and sin/cos = +-1/2,
 // i.e. angles k*30 deg by Niven's theorem) and the exact values 0, +-1 are taken from the
 // exact rational value instead of sinl/cosl, so rha's tie rule is applied to the true value.
+//
+// Speed (issue 13): the codes are a pure function of (k, P, amp), so each instance memoises them
+// in a table indexed by k for the (P, amp) of the last call (a generation number invalidates the
+// whole table when P or amp changes); reset() clears the registers, not the memo.
 #pragma once
 #include <cstdint>
+#include <vector>
 
 namespace golden {
 
@@ -27,6 +32,17 @@ public:
     out step(int ostep, int64_t period, int64_t amplitude);
 
 private:
+    void codes(int64_t k, int64_t P, int64_t amplitude, int64_t& s, int64_t& c);
+
+    struct memo_entry {
+        int64_t s = 0, c = 0;
+        uint32_t gen = 0;  // valid if equal to memo_gen_
+    };
+    static constexpr int64_t kMemoMaxP = 1 << 16;  // larger periods (never valid) are not memoised
+    std::vector<memo_entry> memo_;
+    int64_t memo_P_ = 0, memo_amp_ = 0;
+    uint32_t memo_gen_ = 0;
+
     int64_t ph_ = 0;       // phase in [0, P)
     int64_t s1_ = 0;       // codes of the read stage (reset 0/0)
     int64_t c1_ = 0;

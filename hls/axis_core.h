@@ -149,14 +149,14 @@ public:
         mul_q_ = pulse_multiplier::out_t{};
         pac_q_ = output_pacer::out_t{};
         rep_q_ = rephase::out_t{};
-        rep_q2_ = rephase::out_t{};
-        rep_q3_ = rephase::out_t{};
+        rep_q2_ = rep_tap{};
+        rep_q3_ = rep_tap{};
         emap_q_ = error_map::out_t{};
     }
 
     dds_sincos& dds() { return dds_; }
 
-    axis_out step(const axis_pins& pins, const axis_regs& presented) {
+    LASERAX_FLATTEN axis_out step(const axis_pins& pins, const axis_regs& presented) {
         // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
         // call; the configuration check of those values was (in hardware) made in that call
         const axis_regs regs = regs_q_;
@@ -254,7 +254,8 @@ public:
         pac_q_ = pac;
         emap_q_ = emap;
         rep_q3_ = rep_q2_;
-        rep_q2_ = rep_q_;
+        rep_q2_.out_pos = rep_q_.out_pos;
+        rep_q2_.mark = rep_q_.mark;
         rep_q_ = rep;
         return o;
     }
@@ -271,7 +272,12 @@ private:
     quad_decoder::out_t dec_q_;
     pulse_multiplier::out_t mul_q_;
     output_pacer::out_t pac_q_;
-    rephase::out_t rep_q_, rep_q2_, rep_q3_;  // rephase outputs of calls t-1, t-2, t-3
+    rephase::out_t rep_q_;  // rephase outputs of call t-1
+    struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
+        pos_t out_pos = 0;
+        bool mark = false;
+    };
+    rep_tap rep_q2_, rep_q3_;
     error_map::out_t emap_q_;
     period_t period_q_ = 0;  // period register of the previous call
     ratio_t ratio_h_ = axis_core_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)

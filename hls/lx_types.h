@@ -86,7 +86,7 @@ public:
     constexpr fixed_int() : v_(0) {}
     // Any integer or lx value: keep the low W bits (two's complement wrap), like ap_int.
     template <typename T, typename = typename std::enable_if<!std::is_floating_point<T>::value>::type>
-    constexpr fixed_int(T x) : v_(wrap(to_u128(x))) {}  // by value: no ODR-use of constants
+    constexpr fixed_int(T x) : v_(from(x)) {}  // by value: no ODR-use of constants
 
     constexpr operator store_t() const { return v_; }
 
@@ -96,22 +96,54 @@ public:
     constexpr uint64_t to_uint64() const { return static_cast<uint64_t>(v_); }
 
     static constexpr int width = W;
+    static constexpr bool is_signed = S;
 
 private:
-    template <typename T>
-    static constexpr u128 to_u128(T x) {
-        // lx types convert through their store type; native integers directly. Conversion of a
-        // negative value to an unsigned type is modular (well defined).
-        return static_cast<u128>(static_cast<typename conv<T>::type>(x));
-    }
+    // Width and signedness of a source type: lx types by their W and S (their value always lies
+    // in that range), native integers by their size (bool: 1 bit unsigned).
     template <typename T, typename = void>
-    struct conv { using type = T; };
-    template <typename T>
-    struct conv<T, typename std::enable_if<!std::is_integral<T>::value &&
-                                           !std::is_same<T, i128>::value &&
-                                           !std::is_same<T, u128>::value>::type> {
-        using type = typename T::store_t;
+    struct src {
+        using type = T;
+        static constexpr int bits = std::is_same<T, bool>::value ? 1 : static_cast<int>(sizeof(T) * 8);
+        static constexpr bool sgn = std::is_same<T, i128>::value || std::is_signed<T>::value;
     };
+    template <typename T>
+    struct src<T, typename std::enable_if<!std::is_integral<T>::value && !std::is_same<T, i128>::value &&
+                                          !std::is_same<T, u128>::value>::type> {
+        using type = typename T::store_t;
+        static constexpr int bits = T::width;
+        static constexpr bool sgn = T::is_signed;
+    };
+
+    // The value conversion, specialised at compile time by the source range (the result is the
+    // same in every branch: the low W bits, two's complement):
+    //   * a source whose every value fits W bits (same signedness and not wider, or unsigned and
+    //     narrower than a signed W) is copied: no masking;
+    //   * otherwise the low W bits are kept, in 64-bit arithmetic when the source and W fit 64
+    //     bits, in 128-bit arithmetic only when one of them is wider.
+    template <typename I>
+    static constexpr int mode() {
+        return ((I::sgn == S && I::bits <= W) || (!I::sgn && S && I::bits < W)) ? 0 : (!kWide && I::bits <= 64) ? 1 : 2;
+    }
+    template <typename T>
+    static constexpr store_t from(T x) {
+        using I = src<T>;
+        return conv_(static_cast<typename I::type>(x), std::integral_constant<int, mode<I>()>{});
+    }
+    template <typename N>
+    static constexpr store_t conv_(N n, std::integral_constant<int, 0>) { return static_cast<store_t>(n); }
+    template <typename N>  // negative to unsigned: modular (well defined)
+    static constexpr store_t conv_(N n, std::integral_constant<int, 1>) { return wrap64(static_cast<uint64_t>(n)); }
+    template <typename N>
+    static constexpr store_t conv_(N n, std::integral_constant<int, 2>) { return wrap(static_cast<u128>(n)); }
+
+    // W <= 64: sign extension by a left shift of the unsigned pattern and an arithmetic right
+    // shift (GCC / Clang: conversion to int64_t is modular, >> of a negative value is arithmetic).
+    static constexpr store_t wrap64(uint64_t u) {
+        return W == 64 ? static_cast<store_t>(u)
+               : S     ? static_cast<store_t>(static_cast<int64_t>(u << ((64 - W) % 64)) >> ((64 - W) % 64))
+                       : static_cast<store_t>(u & ((uint64_t(1) << (W % 64)) - 1));
+    }
 
     static constexpr store_t wrap(u128 x) {
         const ustore mask = W == (kWide ? 128 : 64) ? ~ustore(0) : ((ustore(1) << (W % (kWide ? 128 : 64))) - 1);
@@ -128,6 +160,18 @@ template <int W> using sint = fixed_int<W, true>;
 template <int W> using uint = fixed_int<W, false>;
 
 }  // namespace lx
+#endif
+
+// LASERAX_FLATTEN: on the per-call step() of a chain, inlines every call in its body (GCC /
+// Clang, own integer back end, C simulation only): the block outputs then pass in registers
+// instead of through memory (issue 13: simulation speed). No effect on what is computed; empty
+// for synthesis and with the vendor types (their deep class hierarchies would make every chain
+// step one very large function to compile, at -O0 too).
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
+    !defined(LASERAX_USE_AC_TYPES)
+#define LASERAX_FLATTEN __attribute__((flatten))
+#else
+#define LASERAX_FLATTEN
 #endif
 
 namespace lx {

@@ -220,8 +220,21 @@ module laserax_top #(
     // ---- configuration check of the presented registers (for the next call) ----------------
     wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
     wire        width_ok  = i_dac_width >= W_DAC_MIN && i_dac_width <= W_DAC_MAX;
-    wire [17:0] amp_max   = (18'd1 << (i_dac_width - 5'd1)) - 18'd1;   // used only if width_ok
-    wire        amp_ok    = width_ok && i_amplitude >= 18'd1 && i_amplitude <= amp_max;
+    // amplitude <= 2^(w-1) - 1  <=>  amplitude < 2^(w-1)  <=>  bits [17:w-1] all 0 (w = 12..18):
+    // a mask per legal width, so no shift, decrement or compare chain
+    reg  [17:0] amp_hi;                                // bits that must be 0 at this width
+    always @* begin
+        case (i_dac_width)
+            5'd12:   amp_hi = 18'h3f800;
+            5'd13:   amp_hi = 18'h3f000;
+            5'd14:   amp_hi = 18'h3e000;
+            5'd15:   amp_hi = 18'h3c000;
+            5'd16:   amp_hi = 18'h38000;
+            5'd17:   amp_hi = 18'h30000;
+            default: amp_hi = 18'h20000;               // 18 (other widths fail width_ok)
+        endcase
+    end
+    wire        amp_ok    = width_ok && i_amplitude != 18'd0 && (i_amplitude & amp_hi) == 18'd0;
     wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
     // count integrity (DESIGN 4.2): min_spacing > max(glitch_n, 1)
     // (as two comparisons side by side: min_spacing > glitch_n and min_spacing > 1)

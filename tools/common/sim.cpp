@@ -121,10 +121,19 @@ void controller_decoder::reset(int period, int64_t start_pos) {
 }
 
 bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool qb) {
-    const double two_pi = 6.283185307179586;
-    double ang = std::atan2(static_cast<double>(sin_code), static_cast<double>(cos_code));
-    if (ang < 0) ang += two_pi;
-    const int ph = static_cast<int>(std::lround(ang / two_pi * period_)) % period_;
+    // the phase is a pure function of (sin, cos, P): memoised for the last triple (the codes
+    // change only when the output moves)
+    if (!ph_memo_ok_ || sin_code != memo_sin_ || cos_code != memo_cos_ || period_ != memo_period_) {
+        const double two_pi = 6.283185307179586;
+        double ang = std::atan2(static_cast<double>(sin_code), static_cast<double>(cos_code));
+        if (ang < 0) ang += two_pi;
+        memo_ph_ = static_cast<int>(std::lround(ang / two_pi * period_)) % period_;
+        memo_sin_ = sin_code;
+        memo_cos_ = cos_code;
+        memo_period_ = period_;
+        ph_memo_ok_ = true;
+    }
+    const int ph = memo_ph_;
     const int qi = qa ? (qb ? 2 : 1) : (qb ? 3 : 0);
     bool ok = true;
     if (!primed_) {
@@ -227,7 +236,11 @@ std::string dual_axis::integrity() {
         else if (g_.paced_pos + g_.backlog != cc_hist_[2])  // pacer taps: 2 calls late (DESIGN 4.4)
             m = "integrity: paced + backlog " + std::to_string(g_.paced_pos + g_.backlog) +
                 " != comp + corr of three calls earlier " + std::to_string(cc_hist_[2]);
-        const bool use_sc = static_cast<double>(f_.amplitude) * 6.283185307179586 / static_cast<double>(f_.period) >= 8.0;
+        // sin/cos are decoded only while they can carry the position: enough codes per count, and
+        // no DAC clamp flagged (a clamped pair has the wrong angle; dac_clip_st is the flag, the
+        // A/B outputs still carry every count)
+        const bool use_sc = static_cast<double>(f_.amplitude) * 6.283185307179586 / static_cast<double>(f_.period) >= 8.0 &&
+                            !g_.dac_clip_st;
         if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
         prev_use_sc_ = use_sc;
         const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);

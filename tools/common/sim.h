@@ -101,6 +101,11 @@ private:
     int last_q_ = 0;
     bool primed_ = false;
     bool sc_primed_ = true;
+    // memo of the last atan2 phase (a pure function of sin, cos, period)
+    bool ph_memo_ok_ = false;
+    int64_t memo_sin_ = 0, memo_cos_ = 0;
+    int memo_period_ = 0;
+    int memo_ph_ = 0;
 };
 
 // Convenience: both models, the same settings, stepped together and compared. Every call also
