@@ -269,6 +269,95 @@ module pulse_multiplier (
     assign o_comp  = comp_q;
     assign o_delta = delta_q;
 
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Proof `pulse_multiplier` (k-induction, every state after a reset, every input sequence): the
+    //    step accumulator and the output pipeline. A reference accumulator f_acc (one plain 70-bit
+    //    adder) adds s * R_use per call (and the wrap term -s * R_use * 2^32 when N wraps); the
+    //    split acc = {hi + inc + c, lo} equals it, and comp(t) = floor((acc + T) / 2^32) of the
+    //    state three calls back (mod 2^38), delta = its difference, T the base register. The
+    //    re-base timing follows the Definition of DESIGN §4.3 (reference pend / start / target
+    //    pair), and T changes only in the apply call (K_REBASE calls after a start).
+    reg               f_init;
+    reg signed [W_RAW-1:0] f_n;
+    reg [W_ACC-1:0]   f_acc, f_acc1, f_t1;   // acc after the last edge; acc, T one edge earlier
+    reg [W_HI-1:0]    f_ca, f_cb, f_cc;      // comp_int of two, three, four calls back
+    reg               f_pend;
+    reg [6:0]         f_age;                 // calls since the last start (127: none / long ago)
+    reg [W_RATIO-1:0] f_rt;
+    reg signed [W_OFFSET-1:0] f_ot;
+    reg [W_ACC-1:0]   f_tp;                  // T before the last edge
+    reg               f_start_p;             // the last edge was a start
+    initial f_init = 1'b0;
+
+    wire [W_ACC-1:0] f_t    = {t_hi_q, t_lo_q};
+    wire [W_ACC-1:0] f_rx   = {{(W_ACC-W_RATIO){1'b0}}, r_use_q};
+    wire             f_wrap = (step_pos && f_n == {1'b0, {(W_RAW-1){1'b1}}}) ||
+                              (step_neg && f_n == {1'b1, {(W_RAW-1){1'b0}}});
+    wire [W_ACC-1:0] f_add  = step_pos ? (f_wrap ? f_rx - (f_rx << 32) : f_rx) :
+                              step_neg ? (f_wrap ? (f_rx << 32) - f_rx : -f_rx) : {W_ACC{1'b0}};
+    wire [W_HI-1:0]  f_acch = hi_q + inc_q[W_HI-1:0] + {{(W_HI-1){1'b0}}, c_q};
+    wire [W_ACC-1:0] f_v1   = f_acc1 + f_t1;
+    wire [W_ACC:0]   f_c2s  = {1'b0, f_acc1[31:0]} + {1'b0, f_t1[31:0]};
+    wire             f_idle  = f_age >= K_REBASE - 1;    // no re-base in progress before this call
+    wire             f_start = f_idle && f_pend;
+    wire [W_RATIO-1:0] f_rt_n = f_start ? i_ratio : f_rt;
+    wire signed [W_OFFSET-1:0] f_ot_n = f_start ? i_comp_offset : f_ot;
+
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            f_init <= 1'b1;
+            f_n <= 0; f_acc <= 0; f_acc1 <= 0; f_t1 <= 0; f_ca <= 0; f_cb <= 0; f_cc <= 0;
+            f_pend <= 1'b0; f_age <= 7'd127; f_rt <= 0; f_ot <= 0;
+        end else begin
+            f_n    <= f_n + {{(W_RAW-2){i_step[1]}}, i_step};
+            f_acc  <= f_acc + f_add;
+            f_acc1 <= f_acc;
+            f_t1   <= f_t;
+            f_ca   <= f_v1[W_ACC-1:R_FRAC];
+            f_cb   <= f_ca;
+            f_cc   <= f_cb;
+            f_pend <= !f_start && (i_ratio != f_rt_n || i_comp_offset != f_ot_n);
+            f_age  <= f_start ? 7'd0 : (f_age == 7'd127 ? f_age : f_age + 7'd1);
+            f_rt   <= f_rt_n;
+            f_ot   <= f_ot_n;
+        end
+        f_tp      <= i_rst ? {W_ACC{1'b0}} : f_t;
+        f_start_p <= !i_rst && f_start;
+    end
+
+    always @* begin
+        assume(i_step != -2'sd2);      // the step is -1, 0 or +1
+        if (f_init) begin
+            assert(n_q == f_n);
+            // the split accumulator {hi + inc + c, lo} is the reference accumulator
+            assert({f_acch, lo_q} == f_acc);
+            // stage 2 and 3 hold the parts of acc + T of one and two calls back
+            assert(hi_q == f_acc1[W_ACC-1:R_FRAC]);
+            assert(c2_q == f_c2s[R_FRAC]);
+            assert(t_hi_d_q == f_t1[W_ACC-1:R_FRAC]);
+            assert(ci_q == f_ca);
+            // outputs: comp = floor((acc + T) / 2^32) of three calls back, delta its difference
+            assert(comp_q == f_cb);
+            assert(delta_q == $signed({f_cb[W_HI-1], f_cb}) - $signed({f_cc[W_HI-1], f_cc}));
+            // re-base timing (Definition, DESIGN §4.3): pend, start, target pair, apply call
+            assert(pend_q == f_pend);
+            assert(r_use_q == f_rt);
+            assert(off_tgt_q == f_ot);
+            assert(busy_q == (f_age < K_REBASE));
+            if (busy_q) assert(cnt_q == f_age[W_CNT-1:0] + 1'b1);
+            assert(f_last_q == (f_age == K_REBASE - 1));
+            if (f_t != f_tp && !f_start_p) assert(f_age == 7'd0 || f_age == K_REBASE);
+            if (f_start_p) assert(f_age == 7'd0);
+            // helper invariants: the precomputed wrap increments and the decoded count
+            assert(wrap_pos_q == $signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) -
+                                 $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
+            assert(wrap_neg_q == ~$signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) +
+                                 $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
+        end
+    end
+`endif
+
 endmodule
 
 `default_nettype wire
