@@ -50,6 +50,11 @@ module dds_sincos #(
     input  wire [16:0]        i_tbl_data,   // table write data
     output wire signed [17:0] o_sin,        // sine code
     output wire signed [17:0] o_cos         // cosine code
+`ifdef FORMAL
+    ,
+    input  wire [16:0]        f_i_rd_dir,   // formal only: the table RAM abstracted (see the
+    input  wire [16:0]        f_i_rd_mir    //   FORMAL block): its two read data, free values
+`endif
 );
 
     // ---- fixed widths (hls: dds_sincos_cfg, axis_widths) -------------------------------------
@@ -66,12 +71,16 @@ module dds_sincos #(
     endgenerate
 
     // ---- table RAM ---------------------------------------------------------------------------
+    // (the formal proof replaces the RAM by free read data constrained at one witness address:
+    // see the FORMAL block at the end; simulation and synthesis never define FORMAL)
+`ifndef FORMAL
     (* no_rw_check *)   // a read of the address written in the same edge is replaced by the bypass
     reg [W_TBL-1:0] tbl [0:TBL_DEPTH-1];
     // RAM contents at configuration time. This `initial` is the standard FPGA block-RAM
     // initialisation idiom (the bitstream carries the contents); it is the only initial block in
     // the synthesisable RTL.
     initial $readmemh(INIT_FILE, tbl);
+`endif
 
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]        q_q;
@@ -118,9 +127,14 @@ module dds_sincos #(
     wire              r0_d  = i_rst || r_d == {W_R{1'b0}};
 
     always @(posedge i_clk) begin
+`ifdef FORMAL
+        t_dir_q <= f_i_rd_dir;
+        t_mir_q <= f_i_rd_mir;
+`else
         if (i_tbl_we) tbl[i_tbl_addr] <= i_tbl_data;
         t_dir_q <= tbl[a_dir];
         t_mir_q <= tbl[a_mir];
+`endif
     end
     always @(posedge i_clk) begin
         a_dir_q   <= a_dir;
@@ -180,6 +194,152 @@ module dds_sincos #(
 
     assign o_sin = sin_q;
     assign o_cos = cos_q;
+
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Table RAM abstraction: the RAM is replaced by the free read data f_i_rd_dir / f_i_rd_mir.
+    // One witness word is tracked: f_w is a free constant address (any value, never changes) and
+    // f_tw the content of word f_w (any initial content, then the writes to f_w). A read of
+    // address f_w returns f_tw before the write of the same edge (read-first, as the RAM); a read
+    // of any other address returns anything, the same word on both ports when they read the
+    // same address. Every property below that names a table word names
+    // f_w, so it holds for every address and every table content / write sequence.
+    // The period is a free constant (f_per) under the assumption 8 <= P <= 4096, P % 8 == 0.
+    reg [12:0]       f_per;       // P (no initial value: any, then kept)
+    reg [W_ADDR-1:0] f_w;         // witness address (any, kept)
+    reg [W_TBL-1:0]  f_tw;        // table word f_w (after the writes of the last edge)
+    reg [W_TBL-1:0]  f_tw_p;      //   before the last edge
+    reg              f_init;      // a reset has been seen
+    reg              f_v1, f_v2;  // the read stage / the output stage holds the codes of a phase
+    reg [12:0]       f_ph, f_ph1, f_ph2;  // reference phase after the last edge, 1 and 2 edges back
+    reg [1:0]        f_q1, f_q2;  // (q, r) of the RTL counter 1 and 2 edges back
+    reg [W_R-1:0]    f_r1, f_r2;
+    reg [W_DAC-1:0]  f_amp1, f_amp2;  // amplitude input of the last / last but one edge
+    initial f_init = 1'b0;
+
+    wire [12:0] f_p8   = {3'b000, f_per[12:3]};             // P/8
+    wire [12:0] f_qtr  = {2'b00, quarter};
+    // the reference phase counter: (ph + ostep) mod P, computed on the whole phase
+    wire [12:0] f_ph_n = i_rst ? 13'd0 :
+                         ostep_pos ? ((f_ph + 13'd1 == f_per) ? 13'd0 : f_ph + 13'd1) :
+                         ostep_neg ? ((f_ph == 13'd0) ? f_per - 13'd1 : f_ph - 13'd1) : f_ph;
+    // q * P/4 + r of the RTL counter
+    wire [12:0] f_qr   = (q_q == 2'd0) ? {2'b00, r_q} :
+                         (q_q == 2'd1) ? f_qtr + {2'b00, r_q} :
+                         (q_q == 2'd2) ? {f_qtr[11:0], 1'b0} + {2'b00, r_q} :
+                                         {f_qtr[11:0], 1'b0} + f_qtr + {2'b00, r_q};
+    wire [W_R-1:0] f_w_x = {1'b0, f_w};
+    // the output stage: the words of the phase two edges back, where they are known
+    wire             f_d_kn = f_r2 == f_w_x;                               // direct word = f_tw_p
+    wire             f_m_kn = f_r2 == {W_R{1'b0}} || quarter - f_r2 == f_w_x;
+    wire [W_DAC-1:0] f_dw   = {1'b0, f_tw_p};
+    wire [W_DAC-1:0] f_mw   = (f_r2 == {W_R{1'b0}}) ? f_amp2 : {1'b0, f_tw_p};
+
+    always @(posedge i_clk) begin
+        f_per  <= f_per;
+        f_w    <= f_w;
+        f_tw_p <= f_tw;
+        if (i_tbl_we && i_tbl_addr == f_w) f_tw <= i_tbl_data;
+        if (i_rst) f_init <= 1'b1;
+        f_v1   <= !i_rst && f_init;
+        f_v2   <= !i_rst && f_v1;
+        f_ph   <= f_ph_n;
+        f_ph1  <= f_ph;
+        f_ph2  <= f_ph1;
+        f_q1   <= q_q;
+        f_q2   <= f_q1;
+        f_r1   <= r_q;
+        f_r2   <= f_r1;
+        f_amp1 <= i_amplitude;
+        f_amp2 <= f_amp1;
+    end
+
+    always @* begin
+        // legal inputs: a constant legal period, ostep in {-1, 0, +1}
+        assume(i_period == f_per);
+        assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
+        assume(i_ostep != -2'sd2);
+        // the RAM: a read of the witness address returns its content (before this edge's write)
+        if (a_dir == f_w) assume(f_i_rd_dir == f_tw);
+        if (a_mir == f_w) assume(f_i_rd_mir == f_tw);
+        // and the two ports read one word when they read one address
+        if (a_dir == a_mir) assume(f_i_rd_dir == f_i_rd_mir);
+        // "T[P/8] > 0": the word at P/8 is never 0 (only this assumption is about the contents)
+        if ({3'b000, f_w} == f_p8) assume(f_tw != {W_TBL{1'b0}});
+
+        if (f_init) begin
+            // 1. the phase counter: ph in [0, P), moves by ostep mod P (reference f_ph), kept as
+            //    q * P/4 + r with r in [0, P/4) and the neighbours r + 1, r - 1 exact
+            assert(f_ph < f_per);
+            assert(r_q < quarter);
+            assert(f_qr == f_ph);
+            assert(rp1_q == r_q + one);
+            assert(rm1_q == r_q - one);
+            // helper invariants: the addresses read at the last edge are those of (q_q, r_q)
+            assert(a_dir_q == r_q[W_ADDR-1:0]);
+            assert(r0_q == (r_q == {W_R{1'b0}}));
+            if (r_q != {W_R{1'b0}}) assert({1'b0, a_mir_q} == quarter - r_q);
+            // the RAM abstraction: data read at the last edge, the write of the last edge
+            if (a_dir_q == f_w) assert(t_dir_q == f_tw_p);
+            if (a_mir_q == f_w) assert(t_mir_q == f_tw_p);
+            assert(f_tw == ((wp_we_q && wp_addr_q == f_w) ? wp_data_q : f_tw_p));
+            if (a_dir_q == a_mir_q) assert(t_dir_q == t_mir_q);
+            // 2. read stage: quadrant and words of the phase before the last edge, with the
+            //    table as it is after the last edge (write-first), the amplitude at r = 0
+            assert(s1_valid_q == f_v1);
+            if (f_v1) begin
+                assert(s1_q_q == f_q1);
+                if (f_r1 == f_w_x) assert(s1_dir_q == f_tw);
+                if (f_r1 == {W_R{1'b0}}) assert(s1_mir_q == f_amp1);
+                else if (quarter - f_r1 == f_w_x) assert(s1_mir_q == {1'b0, f_tw});
+                // (helper: at r = P/8 both words are the same read)
+                if (f_r1 != {W_R{1'b0}} && quarter - f_r1 == f_r1) assert(s1_mir_q == {1'b0, s1_dir_q});
+            end
+            // 3. output stage: the codes of the phase two edges back (ph2 = q2 * P/4 + r2):
+            //    the quadrant mapping of T[r2] and T[P/4 - r2] (amp at r2 = 0), table words as
+            //    they were after the previous edge; zero until the first phase reaches it
+            if (!f_v2) assert(sin_q == {W_DAC{1'b0}} && cos_q == {W_DAC{1'b0}});
+            if (f_v2) begin
+                if (f_d_kn) begin
+                    case (f_q2)
+                        2'd0:    assert(sin_q == f_dw);
+                        2'd1:    assert(cos_q == -f_dw);
+                        2'd2:    assert(sin_q == -f_dw);
+                        default: assert(cos_q == f_dw);
+                    endcase
+                end
+                if (f_m_kn) begin
+                    case (f_q2)
+                        2'd0:    assert(cos_q == f_mw);
+                        2'd1:    assert(sin_q == f_mw);
+                        2'd2:    assert(cos_q == -f_mw);
+                        default: assert(sin_q == -f_mw);
+                    endcase
+                end
+                // 4. the P/8 points, for any table content: sin == cos at P/8 (and > 0 when
+                //    T[P/8] > 0: the witness is P/8), sin == -cos at 3P/8, sin == cos at 5P/8,
+                //    cos == -sin at 7P/8
+                if (f_ph2 == f_p8) begin
+                    assert(sin_q == cos_q);
+                    if ({3'b000, f_w} == f_p8) assert(!sin_q[W_DAC-1] && sin_q != {W_DAC{1'b0}});
+                end
+                if (f_ph2 == f_qtr + f_p8)                        assert(sin_q == -cos_q);
+                if (f_ph2 == {f_qtr[11:0], 1'b0} + f_p8)          assert(sin_q == cos_q);
+                if (f_ph2 == {f_qtr[11:0], 1'b0} + f_qtr + f_p8)  assert(cos_q == -sin_q);
+                assert(f_ph2 == ((f_q2 == 2'd0) ? {2'b00, f_r2} :
+                                 (f_q2 == 2'd1) ? f_qtr + {2'b00, f_r2} :
+                                 (f_q2 == 2'd2) ? {f_qtr[11:0], 1'b0} + {2'b00, f_r2} :
+                                                  {f_qtr[11:0], 1'b0} + f_qtr + {2'b00, f_r2}));
+            end
+            if (f_v1) assert(f_ph1 == ((f_q1 == 2'd0) ? {2'b00, f_r1} :
+                                       (f_q1 == 2'd1) ? f_qtr + {2'b00, f_r1} :
+                                       (f_q1 == 2'd2) ? {f_qtr[11:0], 1'b0} + {2'b00, f_r1} :
+                                                        {f_qtr[11:0], 1'b0} + f_qtr + {2'b00, f_r1}) &&
+                             f_r1 < quarter);
+            if (f_v2) assert(f_r2 < quarter);
+        end
+    end
+`endif
 
 endmodule
 

@@ -269,6 +269,210 @@ module pulse_multiplier (
     assign o_comp  = comp_q;
     assign o_delta = delta_q;
 
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Proof `pulse_multiplier` (k-induction, every state after a reset, every input sequence): the
+    //    step accumulator and the output pipeline. A reference accumulator f_acc (one plain 70-bit
+    //    adder) adds s * R_use per call (and the wrap term -s * R_use * 2^32 when N wraps); the
+    //    split acc = {hi + inc + c, lo} equals it, and comp(t) = floor((acc + T) / 2^32) of the
+    //    state three calls back (mod 2^38), delta = its difference, T the base register. The
+    //    re-base timing follows the Definition of DESIGN §4.3 (reference pend / start / target
+    //    pair), and T changes only in the apply call (K_REBASE calls after a start).
+    reg               f_init;
+    reg signed [W_RAW-1:0] f_n;
+    reg [W_ACC-1:0]   f_acc, f_acc1, f_t1;   // acc after the last edge; acc, T one edge earlier
+    reg [W_HI-1:0]    f_ca, f_cb, f_cc;      // comp_int of two, three, four calls back
+    reg               f_pend;
+    reg [6:0]         f_age;                 // calls since the last start (127: none / long ago)
+    reg [W_RATIO-1:0] f_rt;
+    reg signed [W_OFFSET-1:0] f_ot;
+    reg [W_ACC-1:0]   f_tp;                  // T before the last edge
+    reg               f_start_p;             // the last edge was a start
+    initial f_init = 1'b0;
+    localparam integer F_NB = 8;   // N0 width of the multiplier proof
+
+    wire [W_ACC-1:0] f_t    = {t_hi_q, t_lo_q};
+    wire [W_ACC-1:0] f_rx   = {{(W_ACC-W_RATIO){1'b0}}, r_use_q};
+    wire             f_wrap = (step_pos && f_n == {1'b0, {(W_RAW-1){1'b1}}}) ||
+                              (step_neg && f_n == {1'b1, {(W_RAW-1){1'b0}}});
+    wire [W_ACC-1:0] f_add  = step_pos ? (f_wrap ? f_rx - (f_rx << 32) : f_rx) :
+                              step_neg ? (f_wrap ? (f_rx << 32) - f_rx : -f_rx) : {W_ACC{1'b0}};
+    wire [W_HI-1:0]  f_acch = hi_q + inc_q[W_HI-1:0] + {{(W_HI-1){1'b0}}, c_q};
+    wire [W_ACC-1:0] f_v1   = f_acc1 + f_t1;
+    wire [W_ACC:0]   f_c2s  = {1'b0, f_acc1[31:0]} + {1'b0, f_t1[31:0]};
+    wire             f_idle  = f_age >= K_REBASE - 1;    // no re-base in progress before this call
+    wire             f_start = f_idle && f_pend;
+    wire [W_RATIO-1:0] f_rt_n = f_start ? i_ratio : f_rt;
+    wire [7:0]       f_n_nb = f_n[7:0] + {{6{i_step[1]}}, i_step};   // N after the step, low 8 bits
+    wire signed [W_OFFSET-1:0] f_ot_n = f_start ? i_comp_offset : f_ot;
+
+`ifdef FORMAL_REBASE
+    // re-base proofs (-DFORMAL_REBASE: the sequencer's additions; with -DFORMAL_MUL as well: the
+    // serial multiplier): references captured at each start (N0, R_old, OFF_old); the target pair
+    // in force is R', OFF' (r_use_q / off_tgt_q, proven equal to the Definition's target above)
+    reg signed [W_RAW-1:0]    f_bn0;
+    reg [W_RATIO-1:0]         f_bro;
+    reg signed [W_OFFSET-1:0] f_boo;
+    reg [W_ACC-1:0]           f_yp;       // y_q before the last edge
+    reg                       f_app_p;    // the last edge applied T
+    wire signed [W_DRATIO-1:0] f_bdr = $signed({1'b0, r_use_q}) - $signed({1'b0, f_bro});
+    wire signed [W_OFFSET:0]   f_bdo = $signed({off_tgt_q[W_OFFSET-1], off_tgt_q}) -
+                                       $signed({f_boo[W_OFFSET-1], f_boo});
+    wire [W_ACC-1:0] f_bdoff = {{(W_ACC-W_OFFSET-1){f_bdo[W_OFFSET]}}, f_bdo};
+`ifdef FORMAL_MUL
+    wire [71:0]      f_dr72  = {{(72-W_DRATIO){f_bdr[W_DRATIO-1]}}, f_bdr};
+    wire             f_neg   = f_bn0[W_RAW-1];
+    wire [71:0]      f_z     = {{(72-W_PP-R_FRAC){pp_q[W_PP-1]}}, pp_q, pl_q};
+    // multiply steps done after this count: 0 up to cnt 2, cnt - 2, 32 from cnt 34
+    wire [5:0]       f_i     = !busy_q ? 6'd0 : (cnt_q <= 2) ? 6'd0 : (cnt_q >= 34) ? 6'd32 : cnt_q - 6'd2;
+    // L_j = sum over k < j of bit k of N0 times dR * 2^k (j <= F_NB-1), incrementally;
+    // P = N0 * dR = L_(F_NB-1) - sign * dR * 2^(F_NB-1). After i multiply steps {pp, pl} is
+    //   L_i * 2^(32-i)                          for i <= F_NB-1,
+    //   P * 2^(32-i) + sign * dR * 2^32          for F_NB-1 < i < 32 (the sign bits added so far),
+    //   P                                       for i = 32 (the sign bit subtracted).
+    reg  [72*F_NB-1:0] f_lv;
+    reg  [71:0]      f_zexp;
+    integer          f_j;
+    always @* begin
+        f_lv[71:0] = 72'd0;
+        for (f_j = 1; f_j < F_NB; f_j = f_j + 1)
+            f_lv[f_j*72 +: 72] = f_lv[(f_j-1)*72 +: 72] + (f_bn0[f_j-1] ? (f_dr72 << (f_j - 1)) : 72'd0);
+    end
+    wire [71:0]      f_pall = f_lv[(F_NB-1)*72 +: 72] - (f_neg ? (f_dr72 << (F_NB - 1)) : 72'd0);
+    always @* begin
+        f_zexp = f_pall;
+        for (f_j = 0; f_j < 32; f_j = f_j + 1)
+            if (f_i == f_j) f_zexp = (f_j < F_NB) ? (f_lv[((f_j < F_NB) ? f_j : 0)*72 +: 72] << (32 - f_j))
+                                                  : (f_pall << (32 - f_j));
+    end
+    wire             f_mul_ok = f_z == f_zexp + ((f_neg && f_i >= F_NB && f_i < 32) ? (f_dr72 << 32) : 72'd0);
+    wire [W_ACC-1:0] f_bprod = f_pall[W_ACC-1:0];            // N0 * dR
+`endif
+    wire [W_ACC-1:0] f_xs  = f_t + f_bdoff;                   // X = T + dOFF
+    wire [W_ACC-1:0] f_ys  = f_xs + f_px;
+    // carries out of the low 18, 36, 54 bits of T + dOFF
+    wire [18:0]      f_xc0 = {1'b0, f_t[17:0]} + {1'b0, f_bdoff[17:0]};
+    wire [36:0]      f_xc1 = {1'b0, f_t[35:0]} + {1'b0, f_bdoff[35:0]};
+    wire [54:0]      f_xc2 = {1'b0, f_t[53:0]} + {1'b0, f_bdoff[53:0]};
+    wire [33:0]      f_dl  = {1'b0, off_new_x[32:0]} + {1'b0, ~off_old_x[32:0]} + 34'd1;
+    wire [W_ACC-1:0] f_px  = {pp_q[W_HI-1:0], pl_q};
+    wire [W_PP-1:0]  f_drx = {dr_q[W_DRATIO-1], dr_q};
+    always @(posedge i_clk) begin
+        if (f_start && !i_rst) begin
+            f_bn0 <= f_n + {{(W_RAW-2){i_step[1]}}, i_step};
+            f_bro <= f_rt;
+            f_boo <= f_ot;
+        end
+        f_yp    <= y_q;
+        f_app_p <= !i_rst && busy_q && f_last_q;
+    end
+`endif
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            f_init <= 1'b1;
+            f_n <= 0; f_acc <= 0; f_acc1 <= 0; f_t1 <= 0; f_ca <= 0; f_cb <= 0; f_cc <= 0;
+            f_pend <= 1'b0; f_age <= 7'd127; f_rt <= 0; f_ot <= 0;
+        end else begin
+            f_n    <= f_n + {{(W_RAW-2){i_step[1]}}, i_step};
+            f_acc  <= f_acc + f_add;
+            f_acc1 <= f_acc;
+            f_t1   <= f_t;
+            f_ca   <= f_v1[W_ACC-1:R_FRAC];
+            f_cb   <= f_ca;
+            f_cc   <= f_cb;
+            f_pend <= !f_start && (i_ratio != f_rt_n || i_comp_offset != f_ot_n);
+            f_age  <= f_start ? 7'd0 : (f_age == 7'd127 ? f_age : f_age + 7'd1);
+            f_rt   <= f_rt_n;
+            f_ot   <= f_ot_n;
+        end
+        f_tp      <= i_rst ? {W_ACC{1'b0}} : f_t;
+        f_start_p <= !i_rst && f_start;
+    end
+
+    always @* begin
+        assume(i_step != -2'sd2);      // the step is -1, 0 or +1
+        if (f_init) begin
+            assert(n_q == f_n);
+            // the split accumulator {hi + inc + c, lo} is the reference accumulator
+            assert({f_acch, lo_q} == f_acc);
+            // stage 2 and 3 hold the parts of acc + T of one and two calls back
+            assert(hi_q == f_acc1[W_ACC-1:R_FRAC]);
+            assert(c2_q == f_c2s[R_FRAC]);
+            assert(t_hi_d_q == f_t1[W_ACC-1:R_FRAC]);
+            assert(ci_q == f_ca);
+            // outputs: comp = floor((acc + T) / 2^32) of three calls back, delta its difference
+            assert(comp_q == f_cb);
+            assert(delta_q == $signed({f_cb[W_HI-1], f_cb}) - $signed({f_cc[W_HI-1], f_cc}));
+            // re-base timing (Definition, DESIGN §4.3): pend, start, target pair, apply call
+            assert(pend_q == f_pend);
+            assert(r_use_q == f_rt);
+            assert(off_tgt_q == f_ot);
+            assert(busy_q == (f_age < K_REBASE));
+            if (busy_q) assert(cnt_q == f_age[W_CNT-1:0] + 1'b1);
+            assert(f_last_q == (f_age == K_REBASE - 1));
+            if (f_t != f_tp && !f_start_p) assert(f_age == 7'd0 || f_age == K_REBASE);
+            if (f_start_p) assert(f_age == 7'd0);
+            // helper invariants: the precomputed wrap increments and the decoded count
+            assert(wrap_pos_q == $signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) -
+                                 $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
+            assert(wrap_neg_q == ~$signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) +
+                                 $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
+        end
+`ifdef FORMAL_REBASE
+`ifdef FORMAL_MUL
+        // every start has N0 (N after its step) in F_NB bits: |N0| < 2^(F_NB-1)
+        if (f_start && !i_rst) assume((f_n + {{(W_RAW-2){i_step[1]}}, i_step}) ==
+                                      {{(W_RAW-F_NB){f_n_nb[F_NB-1]}}, f_n_nb[F_NB-1:0]});
+`endif
+        if (f_init) begin
+            // decoded control flags (helper invariants)
+            if (!busy_q) assert(cnt_q == {W_CNT{1'b0}});
+            assert(f_doff0_q == (busy_q && cnt_q == C_DOFF0) && f_pre0_q == (busy_q && cnt_q == C_MUL0 - 1));
+            assert(f_doff1_q == (busy_q && cnt_q == C_DOFF1));
+            assert(f_mul_q == (busy_q && cnt_q >= C_MUL0 && cnt_q < C_MUL0 + MUL_STEPS));
+            assert(f_mul_pre_q == (busy_q && cnt_q == C_MUL0 + MUL_STEPS - 2));
+            assert(f_x_q == {busy_q && cnt_q == C_X0 + 3, busy_q && cnt_q == C_X0 + 2,
+                             busy_q && cnt_q == C_X0 + 1, busy_q && cnt_q == C_X0});
+            assert(f_y_q == {busy_q && cnt_q == C_ADD0 + 3, busy_q && cnt_q == C_ADD0 + 2,
+                             busy_q && cnt_q == C_ADD0 + 1, busy_q && cnt_q == C_ADD0});
+            if (f_app_p) assert(f_t == f_yp);    // the apply call loads T_new
+            if (busy_q) begin
+                assert(dr_q == f_bdr);           // dR = R' - R_old
+                assert(off_old_q == f_boo);
+                // dOFF = OFF' - OFF_old in two halves
+                if (cnt_q >= 2) assert(doff_lo_q == f_dl[32:0] && dcy_q == f_dl[33]);
+                if (cnt_q >= 3) assert({{(W_ACC-2*W_DOFF_H){doff_hi_q[W_DOFF_H-1]}}, doff_hi_q, doff_lo_q} == f_bdoff);
+                // X = T + dOFF, one quarter per call
+                if (cnt_q >= 4) assert(x_q[17:0] == f_xs[17:0] && xc_q[0] == f_xc0[18]);
+                if (cnt_q >= 5) assert(x_q[35:0] == f_xs[35:0] && xc_q[1] == f_xc1[36]);
+                if (cnt_q >= 6) assert(x_q[53:0] == f_xs[53:0] && xc_q[2] == f_xc2[54]);
+                if (cnt_q >= 7) assert(x_q == f_xs);
+`ifdef FORMAL_MUL
+                // the serial multiplier: after i steps {pp, pl} is the sum of the first i
+                // partial products (closed form above), N0 shifted right by i, the addend of
+                // step i registered; after the 32 steps {pp, pl} = N0 * dR
+                assert(f_bn0 == {{(W_RAW-F_NB){f_bn0[F_NB-1]}}, f_bn0[F_NB-1:0]});
+                assert(f_mul_ok);
+                assert(n0_q == ($unsigned(f_bn0) >> f_i));
+                if (cnt_q >= 34) assert(f_px == f_bprod);
+                if (cnt_q >= 2 && cnt_q <= 33)
+                    assert(addend_q == (!n0_q[0] ? {W_PP{1'b0}} : (f_i == 6'd31) ? ~f_drx : f_drx) &&
+                           cin_q == (n0_q[0] && f_i == 6'd31));
+`else
+                // T_new = X + P, one quarter per call
+                if (cnt_q >= 35) assert(y_q[17:0] == f_ys[17:0] && yc_q[0] == (({1'b0, x_q[17:0]} + {1'b0, f_px[17:0]}) >> 18));
+                if (cnt_q >= 36) assert(y_q[35:0] == f_ys[35:0] && yc_q[1] == (({1'b0, x_q[35:0]} + {1'b0, f_px[35:0]}) >> 36));
+                if (cnt_q >= 37) assert(y_q[53:0] == f_ys[53:0] && yc_q[2] == (({1'b0, x_q[53:0]} + {1'b0, f_px[53:0]}) >> 54));
+                // the re-base step: the T applied in the next call (cnt = K_REBASE) is
+                // T + (OFF' - OFF_old) + {pp, pl}  (mod 2^70), {pp, pl} = N0 * dR by FORMAL_MUL
+                if (cnt_q >= 38) assert(y_q == f_t + f_bdoff + f_px);
+`endif
+            end
+        end
+`endif
+    end
+`endif
+
 endmodule
 
 `default_nettype wire

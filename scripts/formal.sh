@@ -15,7 +15,7 @@ RTL="$ROOT/rtl_ref"
 # output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
 # it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
 # (a broken copy fails in the base case within seconds).
-ALL=(quad_decoder quad_decoder_pins output_pacer)
+ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
 
 die() { echo "formal: $*" >&2; exit 1; }
 command -v yosys >/dev/null || die "yosys not installed (make deps)"
@@ -26,6 +26,9 @@ proof_spec() {
     quad_decoder)      echo "quad_decoder|input_filter.v quad_decoder.v|-tempinduct -maxsteps 8" ;;
     quad_decoder_pins) echo "fv_quad_decoder|input_filter.v quad_decoder.v formal/fv_quad_decoder.v|-seq 16" ;;
     output_pacer)      echo "output_pacer|output_pacer.v|-tempinduct -maxsteps 8" ;;
+    dds_sincos)        echo "dds_sincos|dds_sincos.v|-tempinduct -maxsteps 8" ;;
+    pulse_multiplier)  echo "pulse_multiplier|pulse_multiplier.v|-tempinduct -maxsteps 3" ;;
+    pulse_multiplier_seq) echo "pulse_multiplier|-DFORMAL_REBASE pulse_multiplier.v|-tempinduct -maxsteps 1" ;;
     output_pacer_sum)  echo "fv_output_pacer|-DFORMAL_SUM output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
     *) return 1 ;;
     esac
@@ -50,6 +53,16 @@ MUTATIONS=(
   "op_gap|output_pacer.v|output_pacer|s/emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/emit_nz ? i_pace_m - {{(W_PACE-2){1'b0}}, 2'd2}/"
   "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"
   "op_conservation|output_pacer.v|output_pacer_sum|s/t_n  = {{(W_T-1){e_pos_q}}, e_prev_q\[0\]};/t_n  = {{(W_T-1){1'b0}}, e_prev_q[0]};/"
+  "dds_quadrant|dds_sincos.v|dds_sincos|s/2'd1:    begin sin_v = t_mir;  cos_v = -t_dir; end/2'd1:    begin sin_v = t_mir;  cos_v = t_dir; end/"
+  "dds_wrap|dds_sincos.v|dds_sincos|s/wire wrap_up   = rp1_q == quarter;/wire wrap_up   = r_q == quarter;/"
+  "dds_mirror_addr|dds_sincos.v|dds_sincos|s/({W_R{ostep_pos}} \& (quarter - rp1_q))/({W_R{ostep_pos}} \& (quarter - r_q))/"
+  "dds_bypass|dds_sincos.v|dds_sincos|s/wire             wp_dir = wp_we_q \&\& wp_addr_q == a_dir_q;/wire             wp_dir = 1'b0;/"
+  "pm_carry|pulse_multiplier.v|pulse_multiplier|s/c_q   <= lo_sum\[R_FRAC\] \& (step_pos | step_neg);/c_q   <= lo_sum[R_FRAC] \& step_pos;/"
+  "pm_c2|pulse_multiplier.v|pulse_multiplier|s/wire                   c2_d  = c2_l\[16\] ? c2_h1\[16\] : c2_h0\[16\];/wire                   c2_d  = c2_h0[16];/"
+  "pm_wrap|pulse_multiplier.v|pulse_multiplier|s/wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b1);/wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b0);/"
+  "pm_apply_call|pulse_multiplier.v|pulse_multiplier|s/f_last_q     <= busy_d \&\& cnt_d == K_REBASE;/f_last_q     <= busy_d \&\& cnt_d == K_REBASE - 1;/"
+  "pm_doff_carry|pulse_multiplier.v|pulse_multiplier_seq|s/{6'd0, ~off_old_x\[2\*W_DOFF_H-1:W_DOFF_H\]}, dcy_q);/{6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, 1'b0);/"
+  "pm_tnew_carry|pulse_multiplier.v|pulse_multiplier_seq|s/ys3 = x_q\[69:54\] + p_x\[69:54\] + {15'd0, yc_q\[2\]};/ys3 = x_q[69:54] + p_x[69:54];/"
   "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
 )
 
