@@ -28,9 +28,10 @@
 // d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 15 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 // Block-level preconditions (axis_core guarantees both): P is constant while the block runs (a
-// change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1
-// (lag is W_P + 2 bits wide: a block-level caller with adjacent counts may pile up to P - 1 per
-// homing).
+// change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1,
+// lag = 0 at A (w is then the target phase) and k is in time for the first carry. A block-level
+// caller that breaks them gets the same bits here and in rtl_ref/, not necessarily those of the
+// golden model (DESIGN §4.5 "Hardware form").
 #ifndef LASERAX_HLS_REPHASE_H
 #define LASERAX_HLS_REPHASE_H
 

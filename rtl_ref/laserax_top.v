@@ -134,10 +134,6 @@ module laserax_top #(
     // (safe_q), so the block reset is one LUT from a flip-flop. No reset: the power-up call
     // (blocks in reset) does not read them.
     reg        [12:0]   r_period;
-    reg        [36:0]   r_ratio;
-    reg signed [63:0]   r_comp_offset;
-    reg                 r_comp_sync;
-    reg                 r_comp_commit;
     reg        [7:0]    r_glitch_n;
     reg        [15:0]   r_sw_debounce;
     reg        [15:0]   r_min_spacing;
@@ -165,10 +161,6 @@ module laserax_top #(
     reg signed [23:0]   r_map_data;
     always @(posedge i_clk) begin
         r_period        <= i_period;
-        r_ratio         <= i_ratio;
-        r_comp_offset   <= i_comp_offset;
-        r_comp_sync     <= i_comp_sync;
-        r_comp_commit   <= i_comp_commit;
         r_glitch_n      <= i_glitch_n;
         r_sw_debounce   <= i_sw_debounce;
         r_min_spacing   <= i_min_spacing;
@@ -196,26 +188,26 @@ module laserax_top #(
         r_map_data      <= i_map_data;
     end
 
-    // ---- compensation registers in force (DESIGN 4.7): loaded from the registers in force in
-    // every call without comp_sync, else only with comp_commit (not in the power-up call);
-    // register-file state, not reset by the safe state
-    reg  [36:0]        ratio_h_q;
-    reg  signed [63:0] offset_h_q;
+    // ---- compensation registers in force (DESIGN 4.7): the pair in force in a call is loaded
+    // from the registers presented in the call before (every call without comp_sync, else only
+    // with comp_commit), so it is formed one call early from the presented values and the
+    // multiplier reads it straight from these registers; register-file state, not reset by the
+    // safe state (power-up: the reset values, in force until the first load)
+    reg  [36:0]        ratio_eff;
+    reg  signed [63:0] offset_eff;
     reg                pup_q;       // this call is the power-up call (DESIGN 4.7)
-    wire               comp_load  = !pup_q && (!r_comp_sync || r_comp_commit);
-    wire [36:0]        ratio_eff  = comp_load ? r_ratio : ratio_h_q;
-    wire signed [63:0] offset_eff = comp_load ? r_comp_offset : offset_h_q;
+    wire               comp_load_next = !i_comp_sync || i_comp_commit;
+    wire [36:0]        ratio_next  = comp_load_next ? i_ratio : ratio_eff;     // in force next call
+    wire signed [63:0] offset_next = comp_load_next ? i_comp_offset : offset_eff;
     always @(posedge i_clk) begin
         if (i_rst) begin
-            ratio_h_q  <= RATIO_DEFAULT;
-            offset_h_q <= 64'sd0;
+            ratio_eff  <= RATIO_DEFAULT;
+            offset_eff <= 64'sd0;
         end else begin
-            ratio_h_q  <= ratio_eff;
-            offset_h_q <= offset_eff;
+            ratio_eff  <= ratio_next;
+            offset_eff <= offset_next;
         end
     end
-    // the ratio in force in the next call
-    wire [36:0]        ratio_next = (!i_comp_sync || i_comp_commit) ? i_ratio : ratio_eff;
 
     // ---- configuration check of the presented registers (for the next call) ----------------
     wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
@@ -370,29 +362,45 @@ module laserax_top #(
     assign o_ref_mark = out_mark2_q;
     // DAC range guard (DESIGN 4.7): the codes of call t are the DDS registers clamped to
     // +-(2^(dac_width-1) - 1) with the dac_width of call t; a clamp sets the sticky dac_clip_st
-    // (clear of call t acts first, the event wins; reset with the chain). dac_width and clear of
-    // call t are registered with the DDS outputs, so the clamp sits after registers only.
+    // (clear of call t acts first, the event wins; reset with the chain). The bounds of the
+    // dac_width of call t and its clear are registered with the DDS outputs, so the clamp sits
+    // after registers only.
     reg  signed [17:0] dac_hi;      // 2^(dac_width-1) - 1 of call t, formed before the register
+    reg  signed [17:0] dac_lo;      // -dac_hi, also a register (no negation before the compare)
     reg                clear_q, clip_st_q;
-    wire [17:0]        dac_hi_d = (18'd1 << (r_dac_width - 5'd1)) - 18'd1;
+    // 2^(w-1) - 1 by table (w = 12..18 in every running call, the only calls that clamp)
+    reg  [17:0]        dac_hi_d;
+    always @* begin
+        case (r_dac_width)
+            5'd12:   dac_hi_d = 18'd2047;
+            5'd13:   dac_hi_d = 18'd4095;
+            5'd14:   dac_hi_d = 18'd8191;
+            5'd15:   dac_hi_d = 18'd16383;
+            5'd16:   dac_hi_d = 18'd32767;
+            5'd17:   dac_hi_d = 18'd65535;
+            default: dac_hi_d = 18'd131071;
+        endcase
+    end
     wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
-    wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < -dac_hi;
-    wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < -dac_hi;
+    wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < dac_lo;
+    wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < dac_lo;
     wire               clip_now = sin_hi || sin_lo || cos_hi || cos_lo;
     wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_now);
     always @(posedge i_clk) begin
         if (i_rst) begin
             dac_hi    <= 18'sd32767;
+            dac_lo    <= -18'sd32767;
             clear_q   <= 1'b0;
             clip_st_q <= 1'b0;
         end else begin
             dac_hi    <= $signed(dac_hi_d);
+            dac_lo    <= -$signed(dac_hi_d);    // a constant per width as well
             clear_q   <= r_clear;
             clip_st_q <= clip_st;
         end
     end
-    assign o_sin    = sin_hi ? dac_hi : (sin_lo ? -dac_hi : dds_sin);
-    assign o_cos    = cos_hi ? dac_hi : (cos_lo ? -dac_hi : dds_cos);
+    assign o_sin    = sin_hi ? dac_hi : (sin_lo ? dac_lo : dds_sin);
+    assign o_cos    = cos_hi ? dac_hi : (cos_lo ? dac_lo : dds_cos);
     assign o_dac_clip_st = clip_st;
 
     // ---- status (block registers are in their reset state after a safe-state call) -----------
