@@ -103,7 +103,8 @@ struct axis_out {
 // below 2^36 + 2^33 < 2^(W_DELTA-1) = 2^38 (docs/DESIGN.md §4.7).
 static_assert(error_map_cfg::W_CDELTA + 1 < axis_widths::W_DELTA, "pacer input sum must fit delta_t");
 
-// Configuration check (DESIGN §4.7): combinational, every call.
+// Configuration check (DESIGN §4.7), every call, of the registers in force (the values presented
+// in the previous call: the register stage; hardware makes it on the presented values, registered).
 inline bool axis_config_ok(const axis_regs& r) {
     const bool period_ok = r.period >= axis_widths::P_MIN && r.period <= axis_widths::P_MAX &&
                            (r.period & (axis_widths::P_STEP - 1)) == 0;

@@ -990,8 +990,9 @@ Conventions:
   Option"), so a register of W bits occupies ceil(W/32) + 1 words. Other unused words: %s.
   Write 0 to reserved words.
 * A register wider than 32 bits takes consecutive 32-bit words, **low word first**; write the low
-  word, then the high word. The core reads the registers every clock, so between the two writes
-  it would see a mixed value. For `ratio` and `comp_offset`, which change while the axis moves,
+  word, then the high word. The core reads the registers every clock (a value presented in one
+  clock is in force in the chain from the next: the register stage of DESIGN 4.7), so between
+  the two writes it would see a mixed value. For `ratio` and `comp_offset`, which change while the axis moves,
   set `comp_sync` = 1 once: the multiplier then keeps the pair in force until a clock with
   `comp_commit` = 1, which loads both together (write the words of both, then pulse
   `comp_commit`; `lxt::compensation_writes` does exactly this). The map origins change through

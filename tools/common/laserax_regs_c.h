@@ -212,7 +212,7 @@
 #define LASERAX_REG_MAP_DATA_WORDS 1
 #define LASERAX_REG_MAP_DATA_SIGNED 1
 #define LASERAX_REG_MAP_DATA_RESET 0LL
-/* comp_sync: 1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: in the clock they are written. Bad value: 1 without comp_commit pulses keeps the old ratio / comp_offset in force */
+/* comp_sync: 1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: from the clock after they are written (register stage). Bad value: 1 without comp_commit pulses keeps the old ratio / comp_offset in force */
 #define LASERAX_REG_COMP_SYNC_OFFSET 0x118u
 #define LASERAX_REG_COMP_SYNC_WIDTH 1
 #define LASERAX_REG_COMP_SYNC_WORDS 1

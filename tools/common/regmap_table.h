@@ -136,7 +136,7 @@ inline constexpr reg_info kRegs[kNumRegs] = {
     {"map_data", 0x110, 24, true, 0LL, access::port, "Q15.8 output counts", true, -8388608LL, 8388607LL, 1LL, check::none, "", "emap.data", "emap.data",
      "error-map table word: correction at that point in 1/256 output count. Bad value: a wrong word gives a wrong correction, limited to the 17-bit corr range"},
     {"comp_sync", 0x118, 1, false, 0LL, access::rw, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_sync", "comp_sync",
-     "1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: in the clock they are written. Bad value: 1 without comp_commit pulses keeps the old ratio / comp_offset in force"},
+     "1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: from the clock after they are written (register stage). Bad value: 1 without comp_commit pulses keeps the old ratio / comp_offset in force"},
     {"comp_commit", 0x120, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_commit", "comp_commit",
      "with comp_sync = 1: loads ratio and comp_offset into the multiplier in this clock (both together). Bad value: a commit between the words of a wide register loads a half-written value (host side: words first, then commit)"},
 };
