@@ -165,12 +165,7 @@ public:
         // call's inputs in stage A), so the stages may hold instead. Same outputs, fewer toggles.
         if (!r.map_en && idle_) {
             write(w3_);
-            w3_ = w2_;
-            w2_ = w1_;
-            w1_.we = r.we;
-            w1_.bank = !r.bank_sel;
-            w1_.addr = r.addr;
-            w1_.data = r.data;
+            shift_write_port(r);
             ph_ = cfg::phm_t(ph_ + 1);  // wraps at S_MAP
             return out_t{};
         }
@@ -267,12 +262,7 @@ public:
         a.fl.err = r.map_en && !geom_ok;
 
         // ---- write port: first register (the write goes to the bank not selected now) ---------
-        w3_ = w2_;
-        w2_ = w1_;
-        w1_.we = r.we;
-        w1_.bank = !r.bank_sel;
-        w1_.addr = r.addr;
-        w1_.data = r.data;
+        shift_write_port(r);
 
         a_ = a;
         b_ = b;
@@ -342,6 +332,17 @@ private:
         cfg::corr_t corr = 0;
         flags_t fl;
     };
+
+    // the write port's delay registers w1 -> w2 -> w3; w1 takes this call's write (to the bank
+    // not selected now)
+    void shift_write_port(const error_map_regs& r) {
+        w3_ = w2_;
+        w2_ = w1_;
+        w1_.we = r.we;
+        w1_.bank = !r.bank_sel;
+        w1_.addr = r.addr;
+        w1_.data = r.data;
+    }
 
     void write(const wr_t& w) {
         if (!w.we) return;
