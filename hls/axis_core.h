@@ -159,15 +159,23 @@ public:
 
     LASERAX_FLATTEN axis_out step(const axis_pins& pins, const axis_regs& presented) {
         // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
-        // call; the configuration check of those values was (in hardware) made in that call
-        const axis_regs regs = regs_q_;
-        regs_q_ = presented;
+        // call (regs_q_, read in place: one copy per call); the configuration check of those
+        // values was (in hardware) made in that call
         if (!powered_) {  // power-up call: no registers in force, every block in reset
             powered_ = true;
+            regs_q_ = presented;
             axis_out o;
             o.stage = 1;
             return o;
         }
+        const axis_out o = run(pins, regs_q_);
+        regs_q_ = presented;
+        return o;
+    }
+
+private:
+    // one call of the chain on the registers in force
+    axis_out run(const axis_pins& pins, const axis_regs& regs) {
         // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
         // not part of the chain reset (register file state)
         if (!regs.comp_sync || regs.comp_commit) {

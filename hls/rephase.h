@@ -155,15 +155,7 @@ public:
         // d: formed from the phase at A in the call after A (dnew), then held
         const cfg::ph_t d_reg = d_;
         const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
-        // 2d - P for the first count after A: in the call after A straight from wA (-P or P - 2 wA
-        // forward, 2 wA or 2 wA - 2P backward; equal to 2d - P for P <= 4096), later from d
-        const bool dnew_now = dnew_;
-        const auto t_fresh = [&](cfg::p_t p) {
-            const cfg::br_t px = cfg::br_t(p), wa2 = cfg::br_t(cfg::br_t(wa_) + cfg::br_t(wa_));
-            if (!dnew_now) return cfg::br_t(cfg::br_t(d_reg) + cfg::br_t(d_reg) - px);
-            if (fwd_) return (wa_ == 0) ? cfg::br_t(-px) : cfg::br_t(px - wa2);
-            return (wa_ < (p >> 1)) ? wa2 : cfg::br_t(wa2 - px - px);
-        };
+        const cfg::br_t t_first = t_fresh(dnew_, d_reg, wa_, fwd_, pp);
         dnew_ = false;
         const pos_t a_prev = a_;
         const bool fwd_prev = fwd_;
@@ -186,7 +178,7 @@ public:
             if (s > 0) {
                 if (fresh_) {  // num = 0: no carry; num' = d
                     num_ = d_cur;
-                    t_ = t_fresh(pp);  // 2d - P
+                    t_ = t_first;  // 2d - P
                     v_ = 0;
                     fresh_ = false;
                 } else if (t_ >= 0) {  // num + d >= P: carry
@@ -266,6 +258,15 @@ public:
 
 private:
     using tr_t = cfg::tr_t;
+
+    // 2d - P for the first count after A: in the call after A (dnew) straight from wA (-P or
+    // P - 2 wA forward, 2 wA or 2 wA - 2P backward; equal to 2d - P for P <= 4096), later from d
+    static cfg::br_t t_fresh(bool dnew, cfg::ph_t d, cfg::ph_t wa, bool fwd, cfg::p_t p) {
+        const cfg::br_t px = cfg::br_t(p), wa2 = cfg::br_t(cfg::br_t(wa) + cfg::br_t(wa));
+        if (!dnew) return cfg::br_t(cfg::br_t(d) + cfg::br_t(d) - px);
+        if (fwd) return (wa == 0) ? cfg::br_t(-px) : cfg::br_t(px - wa2);
+        return (wa < (p >> 1)) ? wa2 : cfg::br_t(wa2 - px - px);
+    }
 
     // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
     // (ph - 3P/8) mod P = (w - P/2) mod P backward

@@ -142,7 +142,6 @@ module laserax_top #(
     reg        [12:0]   r_mark_len;
     reg        [4:0]    r_dac_width;
     reg        [17:0]   r_amplitude;
-    reg        [12:0]   r_tbl_period;
     reg                 r_rehome;
     reg                 r_clear;
     reg                 r_tbl_we;
@@ -169,7 +168,6 @@ module laserax_top #(
         r_mark_len      <= i_mark_len;
         r_dac_width     <= i_dac_width;
         r_amplitude     <= i_amplitude;
-        r_tbl_period    <= i_tbl_period;
         r_rehome        <= i_rehome;
         r_clear         <= i_clear;
         r_tbl_we        <= i_tbl_we;
