@@ -97,11 +97,12 @@ struct axis_out {
     error_map_cfg::cdelta_t map_delta = 0;  // corr(t) - corr(t-1), added to the pacer input
 };
 
-// The pacer input mul_q_.delta + emap_q_.delta fits delta_t: a multiplier delta is at most one
-// step (< 2^5) plus a re-base |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36 plus an offset
-// change |OFF' - OFF| / 2^32 <= 2^32, and |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays
-// below 2^36 + 2^33 < 2^(W_DELTA-1) = 2^38 (docs/DESIGN.md §4.7).
-static_assert(error_map_cfg::W_CDELTA + 1 < axis_widths::W_DELTA, "pacer input sum must fit delta_t");
+// The pacer's two addends mul_q_.delta and emap_q_.delta (summed inside the pacer) together stay
+// in delta_t: a multiplier delta is at most one step (< 2^5) plus a re-base
+// |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36 plus an offset change
+// |OFF' - OFF| / 2^32 <= 2^32, and |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays below
+// 2^36 + 2^33 < 2^(W_DELTA-1) = 2^38 (docs/DESIGN.md §4.7).
+static_assert(error_map_cfg::W_CDELTA <= output_pacer_cfg::W_ADD, "the map delta must fit the pacer's second addend");
 
 // Configuration check (DESIGN §4.7), every call, of the registers in force (the values presented
 // in the previous call: the register stage; hardware makes it on the presented values, registered).
@@ -205,11 +206,12 @@ private:
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
         const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
         // error map: indexed by the uncorrected comp of the previous call, active only while the
-        // rephase of the previous call was homed; its delta joins the multiplier delta at the
-        // pacer input (L_MAP = 29 calls of map latency, a sample every 32 calls, DESIGN §4.7)
+        // rephase of the previous call was homed; its delta is the pacer's second addend, summed
+        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 29 calls of map
+        // latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
-        const delta_t pdelta = delta_t(mul_q_.delta + emap_q_.delta);
-        const output_pacer::out_t pac = pac_.step(pdelta, regs.pace_m, regs.backlog_thr, regs.clear);
+        const output_pacer::out_t pac =
+            pac_.step(mul_q_.delta, emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
         const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
                                              dec_q_.lerr, regs.period, regs.mark_len);
         const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);

@@ -6,15 +6,19 @@
 // threshold raises an alarm (pulse plus sticky flag, cleared by `clear` once the backlog is below
 // again). The emitted count is decided from the registers before the call (registered output).
 //
-// Hardware form (no carry chain over 22 bits): the backlog is kept as X = B + e_prev (the emitted
+// Two addends: the multiplier delta and the error-map delta (small, W_ADD bits) enter separately,
+// so no adder precedes the backlog's own (the sum is formed in the carry-save layer of the lower
+// half): B' = B + delta + add - emit.
+//
+// Hardware form (no carry chain over 23 bits): the backlog is kept as X = B + e_prev (the emitted
 // count leaves X one call later, when no count can be emitted), split at L = 20 bits with a
-// registered carry, X = (hi + cq) * 2^20 + lo. The emit decision needs only sign and zero of X:
-// equality trees on hi (== 0, -1, +1) and lo (== 0) and the sign bit of hi, no chain (the RTL
+// registered carry, X = (hi + cq) * 2^20 + lo, cq in -1 .. +2. The emit decision needs only sign
+// and zero of X: equality trees on hi (== 0, -1, -2, +1) and lo (== 0) and the sign bit of hi, no chain (the RTL
 // registers the first level of the trees, 4-bit pieces, and timer == 0 with the halves). The taps
 // paced and backlog are formed off the loop, two calls late; ovs compares the backlog tap with
 // the threshold in split pieces over two more calls.
 //
-// Widths: lo 20 unsigned, hi 20 signed, cq 2 signed, timer 16, paced tap 19 + 19 bits, backlog
+// Widths: lo 20 unsigned, hi 20 signed, cq 3 signed, add 18 signed, timer 16, paced tap 19 + 19 bits, backlog
 // tap 20 + 20 bits. Latency: delta in at call t, the first count leaves at call t+1; taps paced,
 // backlog: 2 calls; ovs: 4 calls (threshold of the previous call).
 #ifndef LASERAX_HLS_OUTPUT_PACER_H
@@ -35,12 +39,16 @@ struct output_pacer_cfg {
     static constexpr int W_PHI = W_POS - LP;         // 19
     static constexpr int W_THI = W_THR - L;          // 12: upper half of thr
     static constexpr int LH = L / 2;                 // 10: halves of the lower compare
+    static constexpr int W_ADD = 18;                 // second addend (error-map delta), signed
+    static_assert(W_ADD + 1 < L, "the second addend must stay inside the lower half");
     using pace_t = uint<W_PACE>;
     using thr_t = uint<W_THR>;
     using lo_t = uint<L>;
     using hi_t = sint<W_HI>;
-    using cy_t = sint<2>;          // carry -1, 0, +1
-    using t_t = sint<L + 2>;       // lo + delta_lo - e: -1 .. 2^(L+1) - 2
+    using add_t = sint<W_ADD>;
+    using cy_t = sint<2>;          // tap carries -1, 0, +1
+    using cq_t = sint<3>;          // backlog carry -1 .. +2
+    using t_t = sint<L + 3>;       // lo + delta_lo + add - e: -2^(W_ADD-1) - 1 .. 2^(L+1) + 2^(W_ADD-1) - 2
     using plo_t = uint<LP>;
     using phi_t = sint<W_PHI>;
     using pt_t = sint<LP + 2>;     // plo + e: -1 .. 2^LP
@@ -83,7 +91,7 @@ public:
         ovs_st_ = false;
     }
 
-    out_t step(delta_t delta, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
+    out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
         // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
         const bool hi_neg = hi_ < 0;
         bool h_zero = false;  // hi + cq == 0
@@ -91,9 +99,12 @@ public:
         if (cq_ == 0) {
             h_zero = hi_ == 0;
             h_neg = hi_neg;
-        } else if (cq_ > 0) {
+        } else if (cq_ == 1) {
             h_zero = hi_ == -1;
             h_neg = hi_neg && hi_ != -1;
+        } else if (cq_ == 2) {
+            h_zero = hi_ == -2;
+            h_neg = hi_neg && hi_ != -1 && hi_ != -2;
         } else {
             h_zero = hi_ == 1;
             h_neg = hi_neg || hi_ == 0;
@@ -139,12 +150,12 @@ public:
         p_lo_ = cfg::plo_t(ps);
         p_cy_ = cfg::cy_t(ps >> cfg::LP);
 
-        // ---- X' = X + delta - e_prev (split, registered carry) ----
-        const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) - e_prev_);
+        // ---- X' = X + delta + add - e_prev (split, registered carry; add joins the lower half) ----
+        const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
         const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
         hi_ = cfg::hi_t(hi_ + d_hi + cq_);
         lo_ = cfg::lo_t(t);
-        cq_ = cfg::cy_t(t >> cfg::L);
+        cq_ = cfg::cq_t(t >> cfg::L);
 
         // ---- timer ----
         if (emit != 0) {
@@ -170,7 +181,7 @@ public:
 private:
     cfg::lo_t lo_;       // X = (hi + cq) * 2^L + lo
     cfg::hi_t hi_;
-    cfg::cy_t cq_;
+    cfg::cq_t cq_;
     step_t e_prev_;      // emitted count of the previous call (pstep register)
     cfg::pace_t timer_;
     cfg::hi_t a_hi_;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)

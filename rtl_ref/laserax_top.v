@@ -302,17 +302,14 @@ module laserax_top #(
         .o_corr(map_corr), .o_delta(map_delta), .o_active(map_active), .o_in_range(map_in_range),
         .o_clamped(map_clamped), .o_cfg_err(map_cfg_err));
 
-    // pacer input: multiplier delta + map delta of the previous call (fits 39 bits: |mul delta|
-    // <= 32, |map delta| < 2^17)
-    wire signed [38:0] pac_delta = mul_delta + {{21{map_delta[17]}}, map_delta};
-
-    // pacer: consumes the multiplier delta of the previous call
+    // pacer: consumes the multiplier delta and the map delta of the previous call as two addends
+    // (their sum is formed in the pacer's carry-save layer, so no adder precedes it)
     wire signed [1:0]  pac_pstep;
     wire signed [37:0] pac_paced;
     wire signed [39:0] pac_backlog;
     wire               pac_ovs, pac_ovs_st;
     output_pacer u_pac (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(pac_delta), .i_pace_m(r_pace_m),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_delta(mul_delta), .i_add(map_delta), .i_pace_m(r_pace_m),
         .i_thr(r_backlog_thr), .i_clear(r_clear),
         .o_pstep(pac_pstep), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
         .o_ovs_st(pac_ovs_st));

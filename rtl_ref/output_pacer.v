@@ -5,13 +5,15 @@
 // Synchronous active-high reset = output_pacer::reset() (all zero).
 //
 //   emit     = (timer == 0 && e_prev == 0 && B != 0) ? sgn(B) : 0   (registers before the edge)
-//   B'       = B + delta - emit
+//   B'       = B + delta + add - emit   (add: the error-map delta, a second addend, so that no
+//              adder precedes the pacer in the top: the sum is formed in the carry-save layer)
 //   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0);  e_prev' = emit
 //   taps: paced = P(t-2), backlog = B(t-2); ovs = |B(t-4)| > thr(t-1) (pulse); ovs_st cleared by
 //   clear, set by ovs (event wins)
-// Hardware form (no carry chain over 22 bits): X = B + e_prev = (hi + cq) * 2^20 + lo with a
-// registered carry cq; sign and zero of X from equality trees on hi and lo (no chain); three-operand
-// sums through a 3:2 carry-save layer; the taps in two register stages off the loop.
+// Hardware form (no carry chain over 23 bits): X = B + e_prev = (hi + cq) * 2^20 + lo with a
+// registered carry cq in -1 .. +2; sign and zero of X from equality trees on hi and lo (no chain);
+// the lower half's four operands (lo, delta_lo, add, -e_prev) through two carry-save layers, the
+// upper half's three (hi, delta_hi, cq) through one; the taps in two register stages off the loop.
 // Latency: delta in at call t, the first count leaves at call t+1; taps 2 calls, ovs 4 calls.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -20,6 +22,7 @@ module output_pacer (
     input  wire               i_clk,
     input  wire               i_rst,     // synchronous, active high: output_pacer::reset()
     input  wire signed [38:0] i_delta,   // comp(t) - comp(t-1) from the multiplier
+    input  wire signed [17:0] i_add,     // second addend: the error-map delta (same call)
     input  wire [15:0]        i_pace_m,  // M: at least max(M, 2) calls between two emitted counts
     input  wire [31:0]        i_thr,     // backlog alarm threshold
     input  wire               i_clear,   // register pulse: clears ovs_st (unless ovs)
@@ -43,18 +46,20 @@ module output_pacer (
     localparam integer W_THR     = 32;   // backlog alarm threshold
     localparam integer W_POS     = 38;   // paced position
     localparam integer W_DELTA   = 39;   // input delta
+    localparam integer W_ADD     = 18;   // second addend (error-map delta), inside the lower half
     localparam integer W_BACKLOG = 40;   // backlog, signed
     localparam integer L         = W_BACKLOG / 2;   // 20: backlog split point
     localparam integer W_HI      = W_BACKLOG - L;   // 20
     localparam integer LP        = W_POS / 2;       // 19: paced split point
     localparam integer W_PHI     = W_POS - LP;      // 19
     localparam integer W_THI     = W_THR - L;       // 12
-    localparam integer W_T       = L + 2;           // lo + delta_lo - e_prev
+    localparam integer W_T       = L + 3;           // lo + delta_lo + add - e_prev
+    localparam integer W_CQ      = W_T - L;         // 3: backlog carry -1 .. +2
 
     // ---- registers ---------------------------------------------------------------------------
     reg        [L-1:0]     lo_q;       // X = (hi + cq) * 2^L + lo
     reg signed [W_HI-1:0]  hi_q;
-    reg signed [1:0]       cq_q;
+    reg signed [W_CQ-1:0]  cq_q;
     reg signed [1:0]       e_prev_q;   // emitted count of the previous call (= o_pstep)
     reg        [W_PACE-1:0] timer_q;
     reg signed [W_HI-1:0]  a_hi_q;     // backlog tap, stage A: B(t-1) halves and carry
@@ -76,39 +81,50 @@ module output_pacer (
     localparam integer NL = L / 4;                  // 5 pieces of lo
     reg [NH-1:0]  hz_q, ho_q;                      // piece of hi all 0 / all 1
     reg           h1_q;                            // hi[3:0] == 1
+    reg           he_q;                            // hi[3:0] == 0xe (hi == -2 with ho_q)
     reg [NL-1:0]  lz_q;                            // piece of lo all 0
     reg           tz_q;                            // timer == 0
     wire hi_neg  = hi_q[W_HI-1];
     wire hi_z    = &hz_q;
     wire hi_m1   = &ho_q;
     wire hi_p1   = h1_q && (&hz_q[NH-1:1]);
-    wire cq_zero = cq_q == 2'sd0;
-    wire cq_pos  = cq_q == 2'sd1;
-    wire h_zero  = cq_zero ? hi_z : (cq_pos ? hi_m1 : hi_p1);                 // hi + cq == 0
-    wire h_neg   = cq_zero ? hi_neg : (cq_pos ? (hi_neg && !hi_m1) : (hi_neg || hi_z)); // hi + cq < 0
+    wire hi_m2   = he_q && (&ho_q[NH-1:1]);
+    wire cq_neg  = cq_q[W_CQ-1];                   // cq: 111 (-1), 000, 001, 010 (+2)
+    wire cq_one  = cq_q[0] && !cq_neg;
+    wire cq_two  = cq_q[1] && !cq_neg;
+    // hi + cq == 0 and hi + cq < 0
+    wire h_zero  = cq_neg ? hi_p1 : cq_two ? hi_m2 : cq_one ? hi_m1 : hi_z;
+    wire h_neg   = cq_neg ? (hi_neg || hi_z) : cq_two ? (hi_neg && !hi_m1 && !hi_m2)
+                 : cq_one ? (hi_neg && !hi_m1) : hi_neg;
     wire x_nz    = !(h_zero && (&lz_q));
     wire emit_nz = tz_q && (e_prev_q == 2'sd0) && x_nz;
     wire signed [1:0] emit = emit_nz ? (h_neg ? -2'sd1 : 2'sd1) : 2'sd0;
 
-    // ---- X' = X + delta - e_prev: 3:2 carry-save layer, then one chain per half -------------
-    // lower half: lo + delta[L-1:0] - e_prev in W_T bits (-1 .. 2^(L+1) - 2)
-    wire [W_T-1:0] t_a  = {2'b00, lo_q};
-    wire [W_T-1:0] t_b  = {2'b00, i_delta[L-1:0]};
+    // ---- X' = X + delta + add - e_prev: carry-save layers, then one chain per half ----------
+    // lower half: lo + delta[L-1:0] + add - e_prev in W_T bits
+    // (-2^(W_ADD-1) - 1 .. 2^(L+1) + 2^(W_ADD-1) - 2, so the carry to the upper half is -1 .. +2)
+    wire [W_T-1:0] t_a  = {3'b000, lo_q};
+    wire [W_T-1:0] t_b  = {3'b000, i_delta[L-1:0]};
+    wire [W_T-1:0] t_m  = {{(W_T-W_ADD){i_add[W_ADD-1]}}, i_add};           // add, sign-extended
     reg            e_pos_q;                                                  // e_prev == +1
     wire [W_T-1:0] t_n  = {{(W_T-1){e_pos_q}}, e_prev_q[0]};                // -e_prev
-    wire [W_T-1:0] t_s  = t_a ^ t_b ^ t_n;
-    wire [W_T-1:0] t_k  = {((t_a[W_T-2:0] & t_b[W_T-2:0]) | (t_a[W_T-2:0] & t_n[W_T-2:0]) |
-                            (t_b[W_T-2:0] & t_n[W_T-2:0])), 1'b0};
+    // first layer: lo + delta_lo + add; second layer: + (-e_prev)
+    wire [W_T-1:0] t_s1 = t_a ^ t_b ^ t_m;
+    wire [W_T-1:0] t_k1 = {((t_a[W_T-2:0] & t_b[W_T-2:0]) | (t_a[W_T-2:0] & t_m[W_T-2:0]) |
+                            (t_b[W_T-2:0] & t_m[W_T-2:0])), 1'b0};
+    wire [W_T-1:0] t_s  = t_s1 ^ t_k1 ^ t_n;
+    wire [W_T-1:0] t_k  = {((t_s1[W_T-2:0] & t_k1[W_T-2:0]) | (t_s1[W_T-2:0] & t_n[W_T-2:0]) |
+                            (t_k1[W_T-2:0] & t_n[W_T-2:0])), 1'b0};
 `ifndef FORMAL_SUM
     wire [W_T-1:0] t_sum = t_s + t_k;
 `else
     // conservation proof only: the plain sum (the block's own proof shows the two are equal)
-    wire [W_T-1:0] t_sum = t_a + t_b + t_n;
+    wire [W_T-1:0] t_sum = t_a + t_b + t_m + t_n;
 `endif
     // upper half: hi + (delta >> L) + cq (mod 2^W_HI)
     wire [W_HI-1:0] h_a = hi_q;
     wire [W_HI-1:0] h_b = {{(W_HI-(W_DELTA-L)){i_delta[W_DELTA-1]}}, i_delta[W_DELTA-1:L]};
-    wire [W_HI-1:0] h_n = {{(W_HI-2){cq_q[1]}}, cq_q};                         // cq, sign-extended
+    wire [W_HI-1:0] h_n = {{(W_HI-W_CQ){cq_q[W_CQ-1]}}, cq_q};                 // cq, sign-extended
     wire [W_HI-1:0] h_s = h_a ^ h_b ^ h_n;
     wire [W_HI-1:0] h_k = {((h_a[W_HI-2:0] & h_b[W_HI-2:0]) | (h_a[W_HI-2:0] & h_n[W_HI-2:0]) |
                             (h_b[W_HI-2:0] & h_n[W_HI-2:0])), 1'b0};
@@ -126,8 +142,8 @@ module output_pacer (
                               : {W_PACE{1'b0}};
 
     // ---- taps (off the loop) -----------------------------------------------------------------
-    wire signed [W_HI-1:0] a_hi_d = hi_q + {{(W_HI-2){cq_q[1]}}, cq_q};
-    wire [W_T-1:0]         al     = {2'b00, lo_q} - {{(W_T-2){e_prev_q[1]}}, e_prev_q};
+    wire signed [W_HI-1:0] a_hi_d = hi_q + {{(W_HI-W_CQ){cq_q[W_CQ-1]}}, cq_q};
+    wire [L+1:0]           al     = {2'b00, lo_q} - {{L{e_prev_q[1]}}, e_prev_q};
     wire signed [W_HI-1:0] b_hi_d = a_hi_q + {{(W_HI-2){a_cy_q[1]}}, a_cy_q};
     wire [LP+1:0]          ps     = {2'b00, p_lo_q} + {{LP{e_prev_q[1]}}, e_prev_q};
     wire signed [W_PHI-1:0] p_hi_d = p_hi_q + {{(W_PHI-2){p_cy_q[1]}}, p_cy_q};
@@ -183,12 +199,13 @@ module output_pacer (
             hz_q     <= {NH{1'b1}};
             ho_q     <= {NH{1'b0}};
             h1_q     <= 1'b0;
+            he_q     <= 1'b0;
             lz_q     <= {NL{1'b1}};
             tz_q     <= 1'b1;
             e_pos_q  <= 1'b0;
             lo_q     <= {L{1'b0}};
             hi_q     <= {W_HI{1'b0}};
-            cq_q     <= 2'sd0;
+            cq_q     <= {W_CQ{1'b0}};
             e_prev_q <= 2'sd0;
             timer_q  <= {W_PACE{1'b0}};
             a_hi_q   <= {W_HI{1'b0}};
@@ -226,6 +243,7 @@ module output_pacer (
             hz_q     <= hz_d;
             ho_q     <= ho_d;
             h1_q     <= h_sum[3:0] == 4'h1;
+            he_q     <= h_sum[3:0] == 4'he;
             lz_q     <= lz_d;
             tz_q     <= tz_d;
             e_pos_q  <= emit_nz && !h_neg;
@@ -236,7 +254,7 @@ module output_pacer (
             timer_q  <= timer_d;
             a_hi_q   <= a_hi_d;
             a_lo_q   <= al[L-1:0];
-            a_cy_q   <= al[W_T-1:L];
+            a_cy_q   <= al[L+1:L];
             b_hi_q   <= b_hi_d;
             b_lo_q   <= a_lo_q;
             p_lo_d_q <= p_lo_q;
@@ -277,7 +295,7 @@ module output_pacer (
                                                             : {1'b0, i_pace_m};
     // X = (hi + cq) * 2^L + lo and B = X - e_prev, computed arithmetically (independent of the trees)
     wire signed [FW-L-1:0] f_h = $signed({{(FW-L-W_HI){hi_q[W_HI-1]}}, hi_q}) +
-                                 $signed({{(FW-L-2){cq_q[1]}}, cq_q});
+                                 $signed({{(FW-L-W_CQ){cq_q[W_CQ-1]}}, cq_q});
     wire signed [FW-1:0] f_x = {f_h, lo_q};
     wire signed [FW-1:0] f_bnow = f_x - $signed({{(FW-2){e_prev_q[1]}}, e_prev_q});
     wire signed [FW-1:0] f_btap = $signed({{(FW-W_BACKLOG){b_hi_q[W_HI-1]}}, b_hi_q, b_lo_q});
@@ -359,7 +377,7 @@ module output_pacer (
         if (f_init) begin
             if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
             // the carry-save sums equal the plain sums (the conservation proof uses the plain ones)
-            assert(t_sum == t_a + t_b + t_n);
+            assert(t_sum == t_a + t_b + t_m + t_n);
             assert(h_sum == h_a + h_b + h_n);
             // the registered first level of the trees matches the halves (helper invariant)
             assert(hz_q == {hi_q[19:16] == 4'h0, hi_q[15:12] == 4'h0, hi_q[11:8] == 4'h0,
@@ -367,13 +385,14 @@ module output_pacer (
             assert(ho_q == {hi_q[19:16] == 4'hf, hi_q[15:12] == 4'hf, hi_q[11:8] == 4'hf,
                             hi_q[7:4] == 4'hf, hi_q[3:0] == 4'hf});
             assert(h1_q == (hi_q[3:0] == 4'h1));
+            assert(he_q == (hi_q[3:0] == 4'he));
             assert(lz_q == {lo_q[19:16] == 4'h0, lo_q[15:12] == 4'h0, lo_q[11:8] == 4'h0,
                             lo_q[7:4] == 4'h0, lo_q[3:0] == 4'h0});
             assert(tz_q == (timer_q == {W_PACE{1'b0}}));
             assert(e_pos_q == (e_prev_q == 2'sd1));
-            // counts and carries are -1, 0 or +1 (helper invariant)
-            assert(e_prev_q != -2'sd2 && cq_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 &&
-                   f_e1 != -2'sd2);
+            // counts and tap carries are -1, 0 or +1, the backlog carry -1 .. +2 (helper invariant)
+            assert(e_prev_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 && f_e1 != -2'sd2);
+            assert(cq_q == 3'b111 || cq_q == 3'b000 || cq_q == 3'b001 || cq_q == 3'b010);
 `ifndef FORMAL_SUM
             // the taps: stage A holds B(t-1), stage B B(t-2); paced P(t-2); the paced counter
             // P(t-1) (modulo the register widths: the halves wrap like the whole would)

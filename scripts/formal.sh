@@ -64,6 +64,7 @@ MUTATIONS=(
   "pm_doff_carry|pulse_multiplier.v|pulse_multiplier_seq|s/{6'd0, ~off_old_x\[2\*W_DOFF_H-1:W_DOFF_H\]}, dcy_q);/{6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, 1'b0);/"
   "pm_tnew_carry|pulse_multiplier.v|pulse_multiplier_seq|s/ys3 = x_q\[69:54\] + p_x\[69:54\] + {15'd0, yc_q\[2\]};/ys3 = x_q[69:54] + p_x[69:54];/"
   "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
+  "op_carry2_zero|output_pacer.v|output_pacer|s/cq_two ? hi_m2 : cq_one/cq_two ? hi_z : cq_one/"
 )
 
 selftest() {

@@ -177,6 +177,28 @@ BLOCKS = [
             OUT("ovs", 1),
             OUT("ovs_st", 1),
         ],
+        unused=[IN("add", 18, S)],
+        extra=dict(
+            decls="""\
+    // the second addend (i_add, the error-map delta in the top): the vector's delta is split into
+    // i_delta + i_add with i_add from a 32-bit LFSR (one step per row): random, small, the corners
+    // -2^17 and 2^17 - 1, or 0; not where |delta| >= 2^37 (i_delta could then wrap)
+    reg [31:0] add_lfsr = 32'h1;
+""",
+            apply="""\
+            add_lfsr = {add_lfsr[30:0], add_lfsr[31] ^ add_lfsr[21] ^ add_lfsr[1] ^ add_lfsr[0]};
+            if (i_delta[38:37] == 2'b00 || i_delta[38:37] == 2'b11) begin
+                case (add_lfsr[31:29])
+                    3'd0: i_add = add_lfsr[17:0];
+                    3'd1: i_add = {{13{add_lfsr[4]}}, add_lfsr[4:0]};
+                    3'd2: i_add = add_lfsr[5] ? 18'h20000 : 18'h1ffff;
+                    default: i_add = 18'd0;
+                endcase
+                i_delta = i_delta - {{21{i_add[17]}}, i_add};
+            end else begin
+                i_add = 18'd0;
+            end
+"""),
     ),
     dict(
         block="rephase",

@@ -253,7 +253,16 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
             sum_1 = sum;
             sum += delta;
             const bool clear = rng() % 5000 == 0;
-            const lx::output_pacer::out_t ho = h.step(delta, m, thr, clear);
+            // the hls block takes the delta as two addends (multiplier + error map, DESIGN 4.4):
+            // split it, the second one anywhere in its 18 bits (corners included) or zero
+            int64_t add = 0;
+            switch (rng() % 8) {
+            case 0: add = static_cast<int64_t>(rng() % (1u << 18)) - (1 << 17); break;
+            case 1: add = static_cast<int64_t>(rng() % 65) - 32; break;
+            case 2: add = rng() % 2 ? -(1 << 17) : (1 << 17) - 1; break;
+            default: break;
+            }
+            const lx::output_pacer::out_t ho = h.step(delta - add, add, m, thr, clear);
             const golden::output_pacer::out go = g.step(delta, m, thr, clear);
             const bool same = ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog &&
                               ho.ovs == go.ovs && ho.ovs_st == go.ovs_st;
@@ -281,16 +290,39 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
                        [&] { return "pacer lost counts at call " + std::to_string(t); });
         }
         // after motion stops the backlog drains at one count per M calls, exactly
-        lx::output_pacer::out_t o = h.step(0, m, thr, false);
+        lx::output_pacer::out_t o = h.step(0, 0, m, thr, false);
         const int64_t left = o.backlog.to_int64() < 0 ? -o.backlog.to_int64() : o.backlog.to_int64();
         const int64_t limit = left * (m < 2 ? 2 : m) + m + 4;  // + the two calls of tap latency
         int64_t k = 0;
         while (o.backlog != 0 && k < limit) {
-            o = h.step(0, m, thr, false);
+            o = h.step(0, 0, m, thr, false);
             ++k;
         }
         res.check(o.backlog == 0 && o.paced.to_int64() == sum, "pacer did not drain within |backlog|*M calls");
     }
+}
+
+// Directed: the lower half carries +2 into the upper half (only the second addend makes that
+// possible) and leaves X = 0 with hi = -2, lo = 0: the zero test must see B = 0 (no count). The
+// random deltas above almost never reach this state. With M = 2 from reset: call 0 B = 2^20 - 1;
+// call 1 emits +1 (e_prev = 1 after it); call 2 adds delta = -2^20 - 2^17 + 3 and add = 2^17 - 1,
+// so T = lo + delta_lo + add - e_prev = 2^21 exactly and hi' = 0 + (-2) + 0; B = 0 from then on.
+void test_output_pacer_carry2(tbu::result& res) {
+    lx::output_pacer h;
+    golden::output_pacer g;
+    g.reset();
+    const int64_t d[3] = {(int64_t(1) << 20) - 1, 0, -(int64_t(1) << 20) - (int64_t(1) << 17) + 3};
+    const int64_t a[3] = {0, 0, (int64_t(1) << 17) - 1};
+    int emitted = 0;
+    for (int t = 0; t < 12; ++t) {
+        const int64_t delta = t < 3 ? d[t] : 0, add = t < 3 ? a[t] : 0;
+        const lx::output_pacer::out_t ho = h.step(delta, add, 2, 1000, false);
+        const golden::output_pacer::out go = g.step(delta + add, 2, 1000, false);
+        res.expect(ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog,
+                   [&] { return "output_pacer carry +2: hls != golden at call " + std::to_string(t); });
+        emitted += ho.pstep.to_int();
+    }
+    res.check(emitted == 1, "output_pacer carry +2: exactly the one count owed is emitted");
 }
 
 }  // namespace
@@ -302,5 +334,6 @@ int main(int argc, char** argv) {
     test_input_filter(res, rng);
     test_quad_decoder(res, rng);
     test_output_pacer(res, rng);
+    test_output_pacer_carry2(res);
     return res.finish();
 }

@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
         const lx::output_pacer_cfg::thr_t thr = opaque(4096);
         const bool no = opaque(false);
         long long acc = 0;
-        for (long long t = 0; t < k; ++t) acc += pc.step((t % 37) == 0 ? 8 : 0, pace, thr, no).pstep.to_int64();
+        for (long long t = 0; t < k; ++t) acc += pc.step((t % 37) == 0 ? 8 : 0, 0, pace, thr, no).pstep.to_int64();
         sink = acc;
     });
     report("hls rephase", n, [&](long long k) {

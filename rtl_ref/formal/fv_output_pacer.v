@@ -1,8 +1,8 @@
 // fv_output_pacer.v — formal harness of output_pacer (scripts/formal.sh; docs/FORMAL.md).
 //
 // The pacing and alarm properties are in rtl_ref/output_pacer.v under `ifdef FORMAL. This harness
-// checks conservation: it sums the input deltas since reset and asserts, at every call,
-//     backlog + paced == sum of the deltas up to two calls earlier   (exact, 42-bit integers;
+// checks conservation: it sums the inputs (delta + add) since reset and asserts, at every call,
+//     backlog + paced == sum of the inputs up to two calls earlier   (exact, 42-bit integers;
 //                                                                      the taps are 2 calls late)
 // under the assumption that the input sum stays within +-2^35 (the widths then cannot wrap;
 // a real axis stays far inside: 2^35 counts). Reset in the first call, none later.
@@ -15,6 +15,7 @@ module fv_output_pacer (
     input wire               i_clk,
     input wire               i_rst,
     input wire signed [38:0] i_delta,
+    input wire signed [17:0] i_add,
     input wire [15:0]        i_pace_m,
     input wire [31:0]        i_thr,
     input wire               i_clear
@@ -30,7 +31,7 @@ module fv_output_pacer (
     wire dut_init;
 
     output_pacer dut (
-        .i_clk(i_clk), .i_rst(i_rst), .i_delta(i_delta), .i_pace_m(i_pace_m), .i_thr(i_thr),
+        .i_clk(i_clk), .i_rst(i_rst), .i_delta(i_delta), .i_add(i_add), .i_pace_m(i_pace_m), .i_thr(i_thr),
         .i_clear(i_clear), .o_pstep(pstep), .o_paced(paced), .o_backlog(backlog), .o_ovs(ovs),
         .o_ovs_st(ovs_st), .f_o_c0(c0), .f_o_c1(c1), .f_o_c2(c2), .f_o_p(pc), .f_o_init(dut_init));
 
@@ -39,7 +40,7 @@ module fv_output_pacer (
     reg signed [W-1:0] f_sum1, f_sum2;        // ... up to one / two calls earlier
     initial f_started = 1'b0;
 
-    wire signed [W-1:0] delta_x   = {{(W-39){i_delta[38]}}, i_delta};
+    wire signed [W-1:0] delta_x   = {{(W-39){i_delta[38]}}, i_delta} + {{(W-18){i_add[17]}}, i_add};
     wire signed [W-1:0] sum_next  = f_sum + delta_x;
     wire signed [W-1:0] backlog_x = {{(W-40){backlog[39]}}, backlog};
     wire signed [W-1:0] paced_x   = {{(W-38){paced[37]}}, paced};

@@ -405,7 +405,7 @@ vec_table pacer_stress(rng_t& r, long long calls) {
         if (r.chance(700)) m = static_cast<unsigned>(r.chance(8) ? r.range(0, 1) : r.range(2, 7));
         if (r.chance(700)) thr = static_cast<uint64_t>(r.chance(10) ? static_cast<int64_t>(r.u() & 0xffffffffULL) : r.range(0, 60));
         const bool clear = r.chance(40);
-        const lx::output_pacer::out_t o = p.step(lx::delta_t(delta), m, static_cast<uint32_t>(thr), clear);
+        const lx::output_pacer::out_t o = p.step(lx::delta_t(delta), 0, m, static_cast<uint32_t>(thr), clear);
         t.rows.push_back({delta, m, static_cast<int64_t>(thr), i64(clear), o.pstep.to_int64(), o.paced.to_int64(),
                           o.backlog.to_int64(), i64(o.ovs), i64(o.ovs_st)});
     }

@@ -43,6 +43,7 @@ module tb_output_pacer;
     reg  [15:0] i_pace_m;
     reg  [31:0] i_thr;
     reg  i_clear;
+    reg  [17:0] i_add;   // idle (not in the vectors)
     wire [1:0] o_pstep;
     wire [37:0] o_paced;
     wire [39:0] o_backlog;
@@ -56,6 +57,7 @@ module tb_output_pacer;
         .i_pace_m(i_pace_m),
         .i_thr(i_thr),
         .i_clear(i_clear),
+        .i_add(i_add),
         .o_pstep(o_pstep),
         .o_paced(o_paced),
         .o_backlog(o_backlog),
@@ -65,12 +67,29 @@ module tb_output_pacer;
 
     `include "tb_common.vh"
 
+    // the second addend (i_add, the error-map delta in the top): the vector's delta is split into
+    // i_delta + i_add with i_add from a 32-bit LFSR (one step per row): random, small, the corners
+    // -2^17 and 2^17 - 1, or 0; not where |delta| >= 2^37 (i_delta could then wrap)
+    reg [31:0] add_lfsr = 32'h1;
+
     task apply_inputs;
         begin
             i_delta = row[182:144];
             i_pace_m = row[143:128];
             i_thr = row[127:96];
             i_clear = row[92:92];
+            add_lfsr = {add_lfsr[30:0], add_lfsr[31] ^ add_lfsr[21] ^ add_lfsr[1] ^ add_lfsr[0]};
+            if (i_delta[38:37] == 2'b00 || i_delta[38:37] == 2'b11) begin
+                case (add_lfsr[31:29])
+                    3'd0: i_add = add_lfsr[17:0];
+                    3'd1: i_add = {{13{add_lfsr[4]}}, add_lfsr[4:0]};
+                    3'd2: i_add = add_lfsr[5] ? 18'h20000 : 18'h1ffff;
+                    default: i_add = 18'd0;
+                endcase
+                i_delta = i_delta - {{21{i_add[17]}}, i_add};
+            end else begin
+                i_add = 18'd0;
+            end
         end
     endtask
 
@@ -80,6 +99,7 @@ module tb_output_pacer;
             i_pace_m = 16'd0;
             i_thr = 32'd0;
             i_clear = 1'd0;
+            i_add = 18'd0;
         end
     endtask
 

@@ -780,7 +780,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const golden::pulse_multiplier::out mo = g_mul.step(prev_step, mul_ratio, mul_offset);
         const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, mul_ratio, mul_offset);
         const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
-        const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
+        const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, 0, gr.pace_m, gr.backlog_thr, gr.clear);
         const golden::rephase::out ro =
             g_rep.step(prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
         const lx::rephase::out_t hro =
