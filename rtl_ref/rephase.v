@@ -165,9 +165,10 @@ module rephase (
     wire homing = in2 && s_pos && at_last_q;
     wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
     // A + dir*P for B (formed every call from registers; used at homing, >= P calls after A):
-    // two plain adders and a select, so no negation chain precedes the 38-bit add
-    wire signed [W_POS-1:0] bs_fwd = a_q + period_x;
-    wire signed [W_POS-1:0] bs_bwd = a_q - period_x;
+    // one adder, x + dir*y as x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain,
+    // the carry-in the chain's own: no negation chain, half the LUTs of two adders and a select)
+    wire                    bwd_x  = !fwd_q;
+    wire signed [W_POS-1:0] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
     // the next at_last (tr' == P - 1) by equalities of the register tr (tr >= 0 always), and the
     // step back past A (tr' < 0) without the add: no compare follows the tr add
     wire signed [W_TR-1:0] tr_px  = $signed({1'b0, i_period});
@@ -276,15 +277,15 @@ module rephase (
             end else if (homing) begin
                 stage_d = 2'd3;
                 b_d     = bs_q;
-                c_d     = fwd_q ? bs_q + mark_len_x : bs_q - mark_len_x;
-                z_d     = fwd_q ? bs_q + p4_x : bs_q - p4_x;
+                c_d     = bs_q + (mark_len_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
+                z_d     = bs_q + (p4_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
                 len_d   = i_mark_len;
                 len1_d  = {1'b0, i_mark_len} + 1'b1;
             end
         end
         if (dnew_q) d_d = d_cur;
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
-        bs_d      = fwd_q ? bs_fwd : bs_bwd;
+        bs_d      = bs_sum;
         // at_last' = (tr' == P - 1), from the case that formed tr'
         if (cap || (in2 && tr_back)) at_last_d = p_is1;
         else if (in2)                at_last_d = last_s;
