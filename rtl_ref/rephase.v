@@ -69,6 +69,7 @@ module rephase (
     reg signed [W_BR-1:0]  k_q, k_d;
     reg signed [W_TR-1:0]  tr_q, tr_d;
     reg                    at_last_q, at_last_d, fresh_q, fresh_d;
+    reg                    fresh_ld;           // this call loads num, t from d (the first count)
     reg [W_PH-1:0]         num_q, num_d;
     reg signed [W_BR-1:0]  t_q, t_d, v_q, v_d;
     reg signed [W_LAG-1:0] lag_q, lag_d;
@@ -152,7 +153,6 @@ module rephase (
     wire signed [W_BR-1:0] wa_mp  = wa_br - px_br;
     wire signed [W_BR-1:0] tf_bwd = wa_mp2[W_X-1] ? (wa_br <<< 1) : (wa_mp <<< 1);
     wire signed [W_BR-1:0] num_br = $signed({{(W_BR-W_PH){1'b0}}, num_q});
-    wire signed [W_BR-1:0] t_fresh = dnew_q ? (fwd_q ? tf_fwd : tf_bwd) : (d_br <<< 1) - px_br;
     wire signed [W_BR-1:0] t_pk   = t_q + k_q;
     wire signed [W_BR-1:0] t_pd   = t_q + d_br;
     wire signed [W_BR-1:0] num_mp = num_br - px_br;
@@ -222,6 +222,7 @@ module rephase (
         len1_d     = len1_q;
         wa_d       = wa_q;
         dnew_d     = 1'b0;
+        fresh_ld   = 1'b0;
 
         // 1. taps
         paced_d    = paced_q + pstep_x;
@@ -246,8 +247,7 @@ module rephase (
         end else if (stage_q == 2'd2) begin
             if (s_pos) begin
                 if (fresh_q) begin                              // num = 0: no carry
-                    num_d   = d_cur;
-                    t_d     = t_fresh;
+                    fresh_ld = 1'b1;                            // num' = d, t' = 2d - P (below)
                     v_d     = {W_BR{1'b0}};
                     fresh_d = 1'b0;
                 end else if (!t_neg) begin                // carry
@@ -303,6 +303,16 @@ module rephase (
         mark_d = homing || (in3 && in_rng);
     end
 
+    // num' and t' of the first count after A, outside the stage machine: the backward candidates
+    // depend on the sign of wA - P/2 (the end of a 13-bit chain from wA and P), which therefore
+    // enters the last mux in front of the registers instead of passing the stage machine's
+    // selects (num' = d_cur and t' = 2d - P: tf_fwd / tf_bwd in the call after A, else from d)
+    wire                    fresh_bwd = fresh_ld && dnew_q && !fwd_q;
+    wire [W_PH-1:0]         num_rest  = fresh_ld ? (dnew_q ? d_fwd : d_q) : num_d;
+    wire signed [W_BR-1:0]  t_rest    = fresh_ld ? (dnew_q ? tf_fwd : (d_br <<< 1) - px_br) : t_d;
+    wire [W_PH-1:0]         num_nx    = fresh_bwd ? d_bwd : num_rest;
+    wire signed [W_BR-1:0]  t_nx      = fresh_bwd ? tf_bwd : t_rest;
+
     always @(posedge i_clk) begin
         if (i_rst) begin
             stage_q    <= 2'd1;
@@ -357,8 +367,8 @@ module rephase (
             tr_q       <= tr_d;
             at_last_q  <= at_last_d;
             fresh_q    <= fresh_d;
-            num_q      <= num_d;
-            t_q        <= t_d;
+            num_q      <= num_nx;
+            t_q        <= t_nx;
             v_q        <= v_d;
             lag_q      <= lag_d;
             lsgn_q     <= lsgn_d;
