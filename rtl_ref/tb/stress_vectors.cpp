@@ -3,7 +3,9 @@
 //
 // `laserax vectors` covers the scenario of docs/VECTORS.md. These files add what that scenario
 // never does, so that the RTL is compared with the C++ model there too:
-//   laserax_top_stress      period changes (the safe-state call of the period-change rule) with the
+//   laserax_top_stress      a directed prologue of glitch_n / min_spacing pairs at the corners of
+//                           the count-integrity check; then
+//                           period changes (the safe-state call of the period-change rule) with the
 //                           table reloaded through the write port while the chain runs, stray table
 //                           writes that the DDS reads in the same call (write-first), every period
 //                           preset up to P = 4096 (the 1024-word quarter), amplitude / dac_width
@@ -198,6 +200,18 @@ vec_table top_stress(rng_t& r, long long calls) {
         if (r.chance(700)) clear = true;
         if (r.chance(15000)) rehome = true;
         lx::axis_regs regs = g;
+        // directed prologue: the count-integrity check min_spacing > max(glitch_n, 1) at its
+        // corners (glitch_n at both ends, min_spacing around glitch_n and in both bytes), two
+        // calls per pair, on top of the scenario's registers
+        {
+            static const unsigned kGn[] = {0, 1, 2, 254, 255};
+            static const unsigned kMs[] = {0, 1, 2, 3, 253, 254, 255, 256, 257, 300, 511, 512, 65535};
+            const long long nGn = sizeof kGn / sizeof kGn[0], nMs = sizeof kMs / sizeof kMs[0];
+            if (k < 2 * nGn * nMs) {
+                regs.glitch_n = kGn[(k / 2) % nGn];
+                regs.min_spacing = kMs[(k / 2) / nGn];
+            }
+        }
         regs.rehome = rehome;
         regs.clear = clear;
         regs.tbl_we = we;
