@@ -1,14 +1,20 @@
 #!/usr/bin/env bash
 # formal.sh — formal proofs of the reference RTL (CTest formal and formal_selftest; docs/FORMAL.md).
 #
-# Usage: scripts/formal.sh [--rtl DIR] [PROOF...]   run the proofs (default: all but output_pacer_sum), exit 1 on failure
-#        scripts/formal.sh --selftest                each scripted mutation of rtl_ref/ (made in a
-#                                                    temp dir) must make its proof fail
-# Engine: Yosys' built-in SAT solver (`sat -tempinduct`: BMC base case plus k-induction;
-# `sat -seq N`: bounded check of N calls). Flow per proof:
-#   read_verilog -formal FILES; prep -top TOP; flatten; async2sync; dffunmap; sat ...
-# (yosys-smtbmc -s z3 with Debian's z3 4.8.12 was tried first and did not finish even step 0 on
-# quad_decoder — see docs/FORMAL.md.)
+# Usage: scripts/formal.sh [--engine sat|smtbmc] [--rtl DIR] [PROOF...]
+#                                run the proofs (default: all of the engine's list), exit 1 on failure
+#        scripts/formal.sh [--engine sat|smtbmc] --selftest
+#                                each scripted mutation of rtl_ref/ (made in a temp dir) whose proof
+#                                the engine runs must make that proof fail
+# Engines (the same properties, the same front end:
+#   read_verilog -formal FILES; prep -top TOP; flatten; async2sync; dffunmap):
+#   sat     (default) Yosys' built-in SAT solver: `sat -tempinduct` (BMC base case plus
+#           k-induction) or `sat -seq N` (bounded check of N calls). All proofs.
+#   smtbmc  write_smt2, then yosys-smtbmc -s z3 --unroll (SMT_SOLVER overrides z3): BMC of depth k
+#           from reset, then k-induction of length k (`-i -t k`), or BMC only; the proofs of
+#           SMT_ALL below. --unroll is needed with Debian's z3 4.8.12: without it z3 hangs while
+#           reading the transition relation that write_smt2 emits (its define-funs over the state
+#           sort), before any check-sat (docs/FORMAL.md).
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RTL="$ROOT/rtl_ref"
@@ -16,6 +22,23 @@ RTL="$ROOT/rtl_ref"
 # it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
 # (a broken copy fails in the base case within seconds).
 ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
+# smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
+# BMC of k calls only); the lengths at which the sat engine's induction closes.
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
+SMT_SOLVER="${SMT_SOLVER:-z3}"
+smt_spec() {
+    case "$1" in
+    quad_decoder)         echo "2|yes" ;;
+    quad_decoder_pins)    echo "16|no" ;;
+    output_pacer)         echo "2|yes" ;;
+    dds_sincos)           echo "1|yes" ;;
+    pulse_multiplier)     echo "1|yes" ;;
+    pulse_multiplier_seq) echo "1|yes" ;;
+    output_pacer_sum)     echo "1|yes" ;;
+    *) return 1 ;;
+    esac
+}
+ENGINE=sat
 
 die() { echo "formal: $*" >&2; exit 1; }
 command -v yosys >/dev/null || die "yosys not installed (make deps)"
@@ -34,14 +57,40 @@ proof_spec() {
     esac
 }
 
-# run_proof RTLDIR NAME LOGDIR — 0 if the proof succeeds
+# run_proof RTLDIR NAME LOGDIR — 0 if the proof succeeds (engine $ENGINE). The log LOGDIR/NAME.log
+# ends with one of the lines the callers look for: "SUCCESS!" (proven), "FAIL!" (a counterexample)
+# or "Induction step failed" (the induction does not close); "ERROR" if the proof did not run.
 run_proof() {
-    local rtl="$1" name="$2" logdir="$3" spec top files opts f list=""
+    local rtl="$1" name="$2" logdir="$3" spec top files opts f list="" k ind log="$3/$2.log"
     spec="$(proof_spec "$name")" || die "unknown proof $name"
     IFS='|' read -r top files opts <<<"$spec"
     for f in $files; do case "$f" in -*) list="$list $f" ;; *) list="$list $rtl/$f" ;; esac; done
-    yosys -q -l "$logdir/$name.log" -p "read_verilog -formal$list; prep -top $top; flatten; async2sync; dffunmap; sat $opts -prove-asserts -set-assumes" >/dev/null 2>&1 || return 1
-    grep -q 'SUCCESS!' "$logdir/$name.log"
+    if [ "$ENGINE" = sat ]; then
+        yosys -q -l "$log" -p "read_verilog -formal$list; prep -top $top; flatten; async2sync; dffunmap; sat $opts -prove-asserts -set-assumes" >/dev/null 2>&1 || return 1
+        grep -q 'SUCCESS!' "$log"
+        return
+    fi
+    IFS='|' read -r k ind <<<"$(smt_spec "$name")" || { echo "ERROR: no smtbmc spec for $name" >"$log"; return 1; }
+    if ! yosys -q -l "$log.yosys" -p "read_verilog -formal$list; prep -top $top; flatten; async2sync; dffunmap; write_smt2 -wires $logdir/$name.smt2" >/dev/null 2>&1; then
+        echo "ERROR: write_smt2 failed" >"$log"; return 1
+    fi
+    yosys-smtbmc -s "$SMT_SOLVER" --unroll --noprogress -t "$k" "$logdir/$name.smt2" >"$log" 2>&1
+    if ! grep -q 'Status: PASSED' "$log"; then
+        if grep -q 'Status: FAILED' "$log"; then echo "FAIL! (counterexample in the base case)" >>"$log"
+        else echo "ERROR: yosys-smtbmc did not finish the base case" >>"$log"; fi
+        return 1
+    fi
+    echo "base case: BMC $k calls from reset, PASSED" >>"$log"
+    if [ "$ind" = yes ]; then
+        yosys-smtbmc -s "$SMT_SOLVER" --unroll --noprogress -i -t "$k" "$logdir/$name.smt2" >>"$log" 2>&1
+        if ! grep -q 'Temporal induction successful' "$log"; then
+            if grep -q 'Status: FAILED' "$log"; then echo "Induction step failed" >>"$log"
+            else echo "ERROR: yosys-smtbmc did not finish the induction step" >>"$log"; fi
+            return 1
+        fi
+        echo "Induction step proven (length $k)" >>"$log"
+    fi
+    echo "SUCCESS!" >>"$log"
 }
 
 # mutations: NAME|FILE|PROOF|SED-EXPRESSION (each must make PROOF fail)
@@ -72,6 +121,7 @@ selftest() {
     tmp="$(mktemp -d /tmp/formal_selftest.XXXXXX)"
     for m in "${MUTATIONS[@]}"; do
         IFS='|' read -r name file proof expr <<<"$m"
+        [ "$ENGINE" = sat ] || smt_spec "$proof" >/dev/null || continue
         n=$((n + 1))
         rm -rf "$tmp/rtl"; mkdir -p "$tmp/rtl/formal"
         cp "$RTL"/*.v "$tmp/rtl/"; cp "$RTL"/formal/*.v "$tmp/rtl/formal/"
@@ -94,6 +144,15 @@ selftest() {
     echo "formal selftest: FAIL ($fails of $n)"; return 1
 }
 
+if [ "${1:-}" = "--engine" ]; then ENGINE="${2:-}"; shift 2; fi
+case "$ENGINE" in
+    sat) ;;
+    smtbmc)
+        command -v yosys-smtbmc >/dev/null || die "yosys-smtbmc not installed (make deps)"
+        command -v "$SMT_SOLVER" >/dev/null || die "SMT solver $SMT_SOLVER not installed (make deps installs z3)"
+        ALL=("${SMT_ALL[@]}") ;;
+    *) die "unknown engine '$ENGINE' (sat or smtbmc)" ;;
+esac
 if [ "${1:-}" = "--selftest" ]; then selftest; exit $?; fi
 if [ "${1:-}" = "--rtl" ]; then RTL="$(cd "$2" && pwd)"; shift 2; fi
 proofs=("${ALL[@]}")
@@ -103,9 +162,10 @@ fails=0
 for p in "${proofs[@]}"; do
     t0=$(date +%s.%N)
     if run_proof "$RTL" "$p" "$logdir"; then st=PASS; else st=FAIL; fails=$((fails + 1)); fi
-    how="$(grep -E 'Induction step proven|SAT proof finished' "$logdir/$p.log" | tail -1)"
     len="$(grep -oE 'Trying induction with length [0-9]+' "$logdir/$p.log" | tail -1 | grep -oE '[0-9]+$')"
-    printf 'formal: %-18s %s  (%s%s, %.1f s)\n' "$p" "$st" "$(proof_spec "$p" | cut -d'|' -f3)" \
+    if [ "$ENGINE" = sat ]; then how="$(proof_spec "$p" | cut -d'|' -f3)"
+    else how="yosys-smtbmc -s $SMT_SOLVER --unroll, BMC $(smt_spec "$p" | cut -d'|' -f1)$(smt_spec "$p" | grep -q yes && echo ' + k-induction')"; len=""; fi
+    printf 'formal: %-18s %s  (%s%s, %.1f s)\n' "$p" "$st" "$how" \
         "${len:+, induction length $len}" "$(echo "$(date +%s.%N) - $t0" | bc)"
     [ $st = PASS ] || { grep -E 'FAIL|failed|ERROR' "$logdir/$p.log" | head -5; }
 done

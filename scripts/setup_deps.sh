@@ -21,6 +21,7 @@ missing_packages() {
     command -v iverilog       >/dev/null 2>&1 || echo iverilog
     command -v yosys          >/dev/null 2>&1 || echo yosys
     command -v nextpnr-ice40  >/dev/null 2>&1 || echo nextpnr-ice40
+    command -v z3             >/dev/null 2>&1 || echo z3      # formal proofs, yosys-smtbmc engine
     command -v clang++        >/dev/null 2>&1 || echo clang
     # libFuzzer runtime (make fuzz, CTest fuzz_short): Debian's clang ships it in libclang-rt-N-dev
     if command -v clang++ >/dev/null 2>&1 && ! ls /usr/lib/llvm-*/lib/clang/*/lib/linux/libclang_rt.fuzzer-x86_64.a \
@@ -38,7 +39,7 @@ missing_packages() {
 
 mapfile -t missing < <(missing_packages)
 if [ "${#missing[@]}" -eq 0 ]; then
-    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 valgrind clang+libFuzzer $PY+numpy+matplotlib)"
+    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 z3 valgrind clang+libFuzzer $PY+numpy+matplotlib)"
     exit 0
 fi
 
