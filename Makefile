@@ -1,7 +1,7 @@
 # laserax — top-level entry points. Every target works on a fresh Debian machine: `deps`
 # installs what is missing (as root) or prints the apt command to run.
 #
-#   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | clean
+#   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | formal | clean
 #
 # Variables: BUILD_DIR (build), ASAN_DIR (build-asan), BUILD_TYPE (Release), JOBS (2),
 #            ARGS (arguments after `laserax run`), ASAN=0 (make test without the sanitizer pass),
@@ -18,7 +18,7 @@ PYTHON     := /usr/bin/python3
 OUT        := out
 MAKEFLAGS  += --no-print-directory
 
-.PHONY: all help deps build run test soak fuzz bench vectors plot clean
+.PHONY: all help deps build run test soak fuzz bench vectors plot formal clean
 
 all: build
 
@@ -48,6 +48,13 @@ soak: build
 # libFuzzer targets (fuzz/*.cpp, clang++) built in $(BUILD_DIR)/fuzz and run FUZZ_SECONDS each on
 # their committed corpus (fuzz/corpus/<target>); new inputs go to $(BUILD_DIR)/fuzz/corpus-new.
 FUZZ_SECONDS ?= 300
+# Every formal proof with both engines, the slow ones included (docs/FORMAL.md; about 10 min):
+# Yosys' SAT engine (the default list and output_pacer_sum is left to z3) and yosys-smtbmc + z3.
+formal: deps
+	bash scripts/formal.sh
+	bash scripts/formal.sh --engine smtbmc quad_decoder quad_decoder_pins output_pacer pulse_multiplier \
+	    dds_sincos pulse_multiplier_seq output_pacer_sum
+
 fuzz: deps
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh long $(BUILD_DIR)/fuzz
 

@@ -23,8 +23,11 @@ RTL="$ROOT/rtl_ref"
 # (a broken copy fails in the base case within seconds).
 ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
 # smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
-# BMC of k calls only); the lengths at which the sat engine's induction closes.
-SMT_ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
+# BMC of k calls only); the lengths at which the sat engine's induction closes. The default list
+# (CTest formal_smtbmc) leaves out the slow ones under z3 (dds_sincos about 100 s,
+# pulse_multiplier_seq about 70 s, output_pacer_sum about 7 min): the sat engine proves the first
+# two in make test; `make formal` runs all of them with both engines.
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier)
 SMT_SOLVER="${SMT_SOLVER:-z3}"
 smt_spec() {
     case "$1" in
