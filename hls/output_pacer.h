@@ -13,14 +13,14 @@
 // Hardware form (no carry chain over 23 bits): the backlog is kept as X = B + e_prev (the emitted
 // count leaves X one call later, when no count can be emitted), split at L = 20 bits with a
 // registered carry, X = (hi + cq) * 2^20 + lo, cq in -1 .. +2. The emit decision needs only sign
-// and zero of X: equality trees on hi (== 0, -1, -2, +1) and lo (== 0) and the sign bit of hi, no chain (the RTL
-// registers the first level of the trees, 4-bit pieces, and timer == 0 with the halves). The taps
-// paced and backlog are formed off the loop, two calls late; ovs compares the backlog tap with
-// the threshold in split pieces over two more calls.
+// and zero of X: equality trees on hi (== 0, -1, -2, +1) and lo (== 0) and the sign bit of hi, no
+// chain (the RTL registers the first level of the trees, 4-bit pieces, and timer == 0 with the
+// halves). The taps paced and backlog are formed off the loop, two calls late; ovs compares the
+// backlog tap with the threshold in split pieces over two more calls.
 //
-// Widths: lo 20 unsigned, hi 20 signed, cq 3 signed, add 18 signed, timer 16, paced tap 19 + 19 bits, backlog
-// tap 20 + 20 bits. Latency: delta in at call t, the first count leaves at call t+1; taps paced,
-// backlog: 2 calls; ovs: 4 calls (threshold of the previous call).
+// Widths: lo 20 unsigned, hi 20 signed, cq 3 signed, add 18 signed, timer 16, paced tap 19 + 19
+// bits, backlog tap 20 + 20 bits. Latency: delta in at call t, the first count leaves at call
+// t+1; taps paced, backlog: 2 calls; ovs: 4 calls (threshold of the previous call).
 #ifndef LASERAX_HLS_OUTPUT_PACER_H
 #define LASERAX_HLS_OUTPUT_PACER_H
 

@@ -313,16 +313,16 @@ void test_output_pacer_carry2(tbu::result& res) {
     g.reset();
     const int64_t d[3] = {(int64_t(1) << 20) - 1, 0, -(int64_t(1) << 20) - (int64_t(1) << 17) + 3};
     const int64_t a[3] = {0, 0, (int64_t(1) << 17) - 1};
-    int emitted = 0;
+    int emitted = 0;  // counts of either sign (a wrong +1 taken back by a -1 still counts twice)
     for (int t = 0; t < 12; ++t) {
         const int64_t delta = t < 3 ? d[t] : 0, add = t < 3 ? a[t] : 0;
         const lx::output_pacer::out_t ho = h.step(delta, add, 2, 1000, false);
         const golden::output_pacer::out go = g.step(delta + add, 2, 1000, false);
         res.expect(ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog,
                    [&] { return "output_pacer carry +2: hls != golden at call " + std::to_string(t); });
-        emitted += ho.pstep.to_int();
+        if (ho.pstep != 0) ++emitted;
     }
-    res.check(emitted == 1, "output_pacer carry +2: exactly the one count owed is emitted");
+    res.check(emitted == 1, "output_pacer carry +2: exactly one count is emitted (the one owed)");
 }
 
 }  // namespace
@@ -333,7 +333,7 @@ int main(int argc, char** argv) {
     std::mt19937_64 rng(seed);
     test_input_filter(res, rng);
     test_quad_decoder(res, rng);
+    test_output_pacer_carry2(res);  // directed first: its message is not crowded out by the random run's
     test_output_pacer(res, rng);
-    test_output_pacer_carry2(res);
     return res.finish();
 }
