@@ -210,12 +210,27 @@ module quad_decoder (
     reg                    f_ill_st_p;
     initial f_init = 1'b0;
 
+    // Edge spacing and laser error (DESIGN 4.2). f_dist is a plain reference of the spacing:
+    // the number of calls from the call of the last counted edge to the present call (1 in the
+    // call right after an edge), saturating at 2^17 - 1, and that value after reset ("no edge
+    // yet": farther than any 16-bit min_spacing). It counts the edges of the reference decode
+    // (f_edge: a legal move while counting), not the RTL's step. An edge is overspeed when its
+    // spacing is below min_spacing of the previous call (the comparison is a register, `close`,
+    // made one call early); min_spacing = 0 never flags.
+    localparam [W_SPACING:0] F_DIST_MAX = {(W_SPACING+1){1'b1}};
+    reg [W_SPACING:0]      f_dist;              // spacing an edge of the present call would have
+    reg [W_SPACING-1:0]    f_ms_p;              // min_spacing of the previous call
+    reg                    f_ovs_exp_p;         // the call was an edge closer than min_spacing
+    reg                    f_ovs_st_p, f_fe_p, f_primed_p, f_alarm_p;
+
     function [1:0] f_idx;                       // position of (a,b) on the quadrature cycle
         input fa, fb;
         f_idx = {fb, fa ^ fb};                  // 00->0, 10->1, 11->2, 01->3
     endfunction
 
     wire [1:0] f_move = f_idx(fa_f_d, fb_f_d) - f_idx(pa_q, pb_q);
+    // a counted edge of the reference decode: a legal move while counting is enabled
+    wire       f_edge = primed_q && !fe_f_d && (f_move == 2'd1 || f_move == 2'd3);
 
     always @(posedge i_clk) begin
         if (i_rst) f_init <= 1'b1;
@@ -227,6 +242,20 @@ module quad_decoder (
         f_raw_p    <= raw_q;
         f_err_p    <= err_cnt_q;
         f_ill_st_p <= illegal_st_q;
+        f_ovs_st_p <= ovs_st_q;
+        f_fe_p     <= fe_f_d;
+        f_primed_p <= primed_q;
+        f_alarm_p  <= lerr_alarm_q;
+        f_ms_p     <= i_min_spacing;
+        // the call is an edge closer than min_spacing (of the previous call)
+        f_ovs_exp_p <= f_edge && (f_dist < {1'b0, f_ms_p});
+        // reference spacing: 1 in the call after a counted edge, + 1 per call, saturating
+        if (i_rst)
+            f_dist <= F_DIST_MAX;
+        else if (f_edge)
+            f_dist <= {{W_SPACING{1'b0}}, 1'b1};
+        else if (f_dist != F_DIST_MAX)
+            f_dist <= f_dist + 1'b1;
         // tiny reference counter: +1 / -1 on legal moves while counting is enabled
         if (i_rst)
             f_ref <= {W_RAW{1'b0}};
@@ -260,8 +289,40 @@ module quad_decoder (
             // sticky illegal flag: set by the event, held until clear
             assert(illegal_st_q == (illegal_q || (f_ill_st_p && !f_clear_p)));
             if (f_glitch_p) assert(glitch_st_q);
+            // edge spacing: the overspeed pulse exactly when the call counted an edge whose
+            // spacing (calls since the previous counted edge) is below min_spacing of the
+            // previous call; the edge is counted all the same (a step of +1 or -1, by which
+            // the raw count moves, as in every call)
+            assert(ovs_q == f_ovs_exp_p);
+            if (ovs_q) assert(step_q == 2'sd1 || step_q == -2'sd1);
+            // sticky overspeed flag: set by the event, held until clear (the event wins)
+            assert(ovs_st_q == (ovs_q || (f_ovs_st_p && !f_clear_p)));
+            // laser error: while the filtered line is high no count, no illegal or overspeed
+            // event, the position holds
+            if (f_fe_p) assert(step_q == 2'sd0 && !illegal_q && !ovs_q && raw_q == f_raw_p);
+            // the laser error output is the filtered line once primed
+            assert(lerr_q == (f_primed_p && f_fe_p));
+            // laser error alarm: set in every call with a laser error, held otherwise; a clear
+            // resets it only in a call whose filtered line is low
+            assert(lerr_alarm_q == (lerr_q || (f_alarm_p && !(f_clear_p && !f_fe_p))));
         end
-        if (f_init) assert(illegal_st_q || !illegal_q);
+        if (f_init) begin
+            assert(illegal_st_q || !illegal_q);
+            assert(ovs_st_q || !ovs_q);
+            assert(lerr_alarm_q || !lerr_q);
+            // no laser error alarm before the filters are primed (so a clear in a call whose
+            // filtered line is high never finds an alarm that this call does not set again)
+            if (lerr_alarm_q) assert(primed_q);
+            // the decoder tracks the filtered levels in every call (also during a laser error
+            // and before priming): when counting resumes it starts from the present levels
+            assert(pa_q == fa_f && pb_q == fb_f);
+            // counting starts when the A filter is valid (primed = valid of the A filter)
+            assert(primed_q == fa_valid);
+            // helper invariants (induction): since (kept as sp2 = since + 2) and the
+            // registered comparison close follow the reference spacing
+            assert(sp2_q == ((f_dist > {1'b0, SINCE_MAX}) ? SP2_MAX : f_dist + 1'b1));
+            assert(close_q == (f_dist < {1'b0, f_ms_p}));
+        end
     end
 `endif
 
