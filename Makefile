@@ -53,7 +53,7 @@ FUZZ_SECONDS ?= 300
 formal: deps
 	bash scripts/formal.sh
 	bash scripts/formal.sh --engine smtbmc quad_decoder quad_decoder_pins output_pacer pulse_multiplier \
-	    dds_sincos pulse_multiplier_seq output_pacer_sum
+	    dds_sincos pulse_multiplier_seq output_pacer_sum rephase rephase_div
 
 fuzz: deps
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh long $(BUILD_DIR)/fuzz

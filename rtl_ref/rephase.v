@@ -399,6 +399,274 @@ module rephase (
     assign o_adj     = adj_q;
     assign o_homed   = stage_q == 2'd3;
 
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // Assumptions: the block-level preconditions of DESIGN 4.5, which the top guarantees: P is a
+    // free constant (f_per) with 8 <= P <= 4096, P % 8 == 0; pstep in {-1, 0, +1}; no real count
+    // in two consecutive calls (pace M >= 2); mark_len in its legal range [P/4, P]. The switch,
+    // its valid flag, rehome and unhome are free in every call.
+    // References (f_*), written from the text of DESIGN 4.5 (not from the hardware form above):
+    // the paced position, the stage machine, the travel tr = dir * (paced - A), the adjustment
+    // target adj_tgt kept as adj0 + dir * q with the division state (q, r) of d * tr by P
+    // (q = floor(d * tr / P), r = d * tr mod P, moved by one Bresenham step per count: no
+    // multiply), and phases mod P: f_po of the output position, f_pt of paced + adj_tgt.
+    reg               f_init;
+    initial f_init = 1'b0;
+    reg [W_P-1:0]     f_per;                 // P (no initial value: any, then kept)
+    reg               f_pnz;                 // the previous call had a real count
+    reg               f_swp, f_sws;
+    reg [1:0]         f_stage;
+    reg               f_dlast, f_dir;        // direction of the last count, homing direction
+    reg [W_POS-1:0]   f_paced, f_a, f_tgt, f_adj0, f_b, f_adjh;
+    reg signed [W_TR-1:0] f_tr;
+    reg [W_P-1:0]     f_q, f_r, f_d, f_pha, f_pt, f_po, f_phb, f_len;
+    reg               f_anew;                // the previous call was A
+    reg [1:0]         f_age;                 // calls since A, saturating at 3
+    reg [W_POS-1:0]   f_adjr;                // adj + lag of the RTL after the homing call
+
+    wire [W_P-1:0]   f_p8  = {3'b000, f_per[W_P-1:3]};
+    wire [W_P-1:0]   f_p4  = {2'b00, f_per[W_P-1:2]};
+    wire [W_P-1:0]   f_p38 = f_p4 + f_p8;                       // 3P/8
+    wire [W_P-1:0]   f_p78 = f_per - f_p8;                      // 7P/8
+    wire [W_POS-1:0] f_perx = {{(W_POS-W_P){1'b0}}, f_per};
+    // (x + y) mod P and (x - y) mod P for x, y in [0, P)
+    function [W_P-1:0] f_addp(input [W_P-1:0] x, input [W_P-1:0] y, input [W_P-1:0] p);
+        reg [W_P:0] s;
+        begin
+            s = {1'b0, x} + {1'b0, y};
+            f_addp = (s >= {1'b0, p}) ? s - {1'b0, p} : s[W_P-1:0];
+        end
+    endfunction
+    function [W_P-1:0] f_subp(input [W_P-1:0] x, input [W_P-1:0] y, input [W_P-1:0] p);
+        begin
+            f_subp = (x >= y) ? x - y : x + p - y;
+        end
+    endfunction
+    // a step -1 / 0 / +1 of a phase mod P
+    function [W_P-1:0] f_stp(input [W_P-1:0] x, input signed [1:0] s, input [W_P-1:0] p);
+        begin
+            f_stp = (s == 2'sd1) ? ((x + 1'b1 == p) ? {W_P{1'b0}} : x + 1'b1) :
+                    (s == -2'sd1) ? ((x == {W_P{1'b0}}) ? p - 1'b1 : x - 1'b1) : x;
+        end
+    endfunction
+    // dir * x on positions
+    function [W_POS-1:0] f_dx(input fw, input [W_POS-1:0] x);
+        begin
+            f_dx = fw ? x : -x;
+        end
+    endfunction
+
+    // ---- the reference of one call (DESIGN 4.5 steps 1, 2, 4) ----
+    wire             f_pz     = i_pstep == 2'sd0;
+    wire             f_pf     = i_pstep == 2'sd1;
+    wire [W_POS-1:0] f_pacedn = f_paced + {{(W_POS-2){i_pstep[1]}}, i_pstep};
+    wire             f_dlastn = f_pz ? f_dlast : f_pf;
+    wire             f_rise   = i_sw && !f_swp && f_sws;
+    wire             f_leave  = (i_unhome || i_rehome) && f_stage != 2'd1;
+    wire             f_capt   = !f_leave && f_stage == 2'd1 && f_rise && !i_unhome;
+    wire             f_in2    = !f_leave && f_stage == 2'd2;
+    wire             f_sp     = !f_pz && (f_pf == f_dir);       // a count in the homing direction
+    wire             f_sn     = !f_pz && (f_pf != f_dir);
+    wire signed [W_TR-1:0] f_trn = f_tr + (f_sp ? 1 : 0) - (f_sn ? 1 : 0);
+    wire             f_back   = f_in2 && f_trn < 0;
+    wire             f_home   = f_in2 && f_trn == $signed({1'b0, f_per});
+    // one step of (q, r) = divmod(d * tr, P) for tr -> tr +- 1: the reference step of
+    // rtl_ref/formal/fv_bresenham.v (the one proof rephase_div shows to divide)
+    wire [W_P-1:0]   f_qn, f_rn;
+    wire signed [1:0] f_dq;
+    fv_bresenham u_f_div (.i_per(f_per), .i_d(f_d), .i_q(f_q), .i_r(f_r),
+                          .i_up(f_in2 && !f_back && f_sp), .i_dn(f_in2 && !f_back && f_sn),
+                          .o_q(f_qn), .o_r(f_rn), .o_dq(f_dq));
+    // adj_tgt moves by dir * dq; its phase with paced: (paced + adj_tgt) mod P
+    wire signed [1:0] f_dtg   = f_dir ? f_dq : -f_dq;
+    wire [W_POS-1:0] f_tgtn   = f_tgt + {{(W_POS-2){f_dtg[1]}}, f_dtg};
+    wire [W_P-1:0]   f_ptn    = f_stp(f_stp(f_pt, i_pstep, f_per), f_dtg, f_per);
+    // d at A from the target phase there: (7P/8 - phA) mod P forward, (phA - 3P/8) mod P back
+    wire [W_P-1:0]   f_dn     = f_dlastn ? f_subp(f_p78, f_ptn, f_per) : f_subp(f_ptn, f_p38, f_per);
+    // (phA + dir * ((tr + q) mod P)) mod P: the target phase inside the window
+    wire [W_P:0]     f_tq     = f_tr[W_P:0] + {1'b0, f_q};
+    wire [W_P-1:0]   f_tqm    = (f_tq >= {1'b0, f_per}) ? f_tq - {1'b0, f_per} : f_tq[W_P-1:0];
+    wire [W_P-1:0]   f_pwin   = f_dir ? f_addp(f_pha, f_tqm, f_per) : f_subp(f_pha, f_tqm, f_per);
+    // the RTL's output step of this call (ostep_n), and dir * (paced - B), (paced - A)
+    wire [W_POS-1:0] f_lagx   = {{(W_POS-W_LAG){lag_q[W_LAG-1]}}, lag_q};
+    wire [W_POS-1:0] f_ta     = f_dx(f_dir, paced_q - f_a);
+    wire [W_POS-1:0] f_lenx   = {{(W_POS-W_P){1'b0}}, len_q};
+    wire [W_P-1:0]   f_plag   = f_stp(f_po, lag_q[1:0], f_per);  // (out_pos + lag) mod P
+
+    always @(posedge i_clk) begin
+        f_per <= f_per;
+        if (i_rst) begin
+            f_init  <= 1'b1;
+            f_pnz   <= 1'b0;
+            f_swp   <= 1'b0;
+            f_sws   <= 1'b0;
+            f_stage <= 2'd1;
+            f_dlast <= 1'b1;
+            f_dir   <= 1'b1;
+            f_paced <= {W_POS{1'b0}};
+            f_a     <= {W_POS{1'b0}};
+            f_tgt   <= {W_POS{1'b0}};
+            f_adj0  <= {W_POS{1'b0}};
+            f_b     <= {W_POS{1'b0}};
+            f_adjh  <= {W_POS{1'b0}};
+            f_adjr  <= {W_POS{1'b0}};
+            f_tr    <= {W_TR{1'b0}};
+            f_q     <= {W_P{1'b0}};
+            f_r     <= {W_P{1'b0}};
+            f_d     <= {W_P{1'b0}};
+            f_pha   <= {W_P{1'b0}};
+            f_pt    <= {W_P{1'b0}};
+            f_po    <= {W_P{1'b0}};
+            f_phb   <= {W_P{1'b0}};
+            f_len   <= {W_P{1'b0}};
+            f_anew  <= 1'b0;
+            f_age   <= 2'd3;
+        end else begin
+            f_pnz   <= !f_pz;
+            f_swp   <= i_sw;
+            f_sws   <= i_sw_valid;
+            f_dlast <= f_dlastn;
+            f_paced <= f_pacedn;
+            f_tgt   <= f_tgtn;
+            f_pt    <= f_ptn;
+            f_po    <= f_stp(f_po, ostep_n, f_per);
+            f_anew  <= f_capt;
+            f_age   <= f_capt ? 2'd0 : (f_age == 2'd3 ? f_age : f_age + 2'd1);
+            if (f_leave) begin
+                f_stage <= 2'd1;
+            end else if (f_capt) begin
+                f_stage <= 2'd2;
+                f_dir   <= f_dlastn;
+                f_a     <= f_pacedn;
+                f_adj0  <= f_tgt;                 // stage 1: the target does not move
+                f_tr    <= {W_TR{1'b0}};
+                f_q     <= {W_P{1'b0}};
+                f_r     <= {W_P{1'b0}};
+                f_pha   <= f_ptn;
+                f_d     <= f_dn;
+            end else if (f_stage == 2'd2) begin
+                f_tr <= f_trn;
+                f_q  <= f_qn;
+                f_r  <= f_rn;
+                if (f_back) begin
+                    f_stage <= 2'd1;
+                end else if (f_home) begin
+                    f_stage <= 2'd3;
+                    f_b     <= f_a + f_dx(f_dir, f_perx);
+                    f_len   <= i_mark_len;
+                    f_phb   <= f_ptn;
+                    f_adjh  <= f_tgtn;
+                    f_adjr  <= adj_d + {{(W_POS-W_LAG){lag_d[W_LAG-1]}}, lag_d};
+                end
+            end
+        end
+    end
+
+    always @* begin
+        assume(i_period == f_per);
+        assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
+        assume(i_pstep != -2'sd2);
+        assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart
+        assume(i_mark_len >= f_p4 && i_mark_len <= f_per);
+
+        if (f_init) begin
+            // the paced stream, the stage machine and its inputs follow the text
+            assert(paced_q == f_paced);
+            assert(stage_q == f_stage);
+            assert(fwd_last_q == f_dlast && sw_prev_q == f_swp && sw_seen_q == f_sws);
+            // output = paced + applied adjustment; the output moves by at most one count per
+            // call; lag = adj_tgt - adj is -1, 0 or +1, non-zero only right after a real count
+            // (so it is paid out in the next call), its sign register exact
+            assert(out_pos_q == paced_q + adj_q);
+            assert(ostep_q != -2'sd2);
+            assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
+            assert(lsgn_q == lag_q[1:0]);
+            assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
+`ifdef FORMAL_ADJ
+            // the adjustment target of the text: adj + lag
+            assert(adj_q + f_lagx == f_tgt);
+            // phases: the output position's phase (f_po) and the target's (f_pt = f_po + lag);
+            // w = (ph_out + P/8) mod P with its wrap flags
+            assert(f_po < f_per && f_pt < f_per);
+            assert(f_pt == f_plag);
+            if (!w_init_q) assert(f_po == {W_P{1'b0}} && lag_q == {W_LAG{1'b0}});  // after reset
+            if (w_init_q) begin
+                assert(w_q == f_addp(f_po, f_p8, f_per));
+                assert(t1_q == (w_q == f_per - 1'b1));
+                assert(z0_q == (w_q == {W_PH{1'b0}}));
+            end
+            // from A on: A, the direction and d = (7P/8 - phA) mod P forward,
+            // (phA - 3P/8) mod P backward, phA the target phase at A
+            if (f_stage != 2'd1) begin
+                assert(f_d < f_per && f_pha < f_per);
+                assert({1'b0, d_cur} == f_d);
+                assert(wa_q == f_addp(f_pha, f_p8, f_per));         // w at A
+                if (!dnew_q) assert({1'b0, d_q} == f_d);            // d loaded after A
+                assert(f_d == (f_dir ? f_subp(f_p78, f_pha, f_per) : f_subp(f_pha, f_p38, f_per)));
+            end
+`endif
+            if (f_stage != 2'd1) assert(a_q == f_a && fwd_q == f_dir);
+            // ---- stage 2: the adjustment is adj0 + dir * floor(d * tr / P), tr in [0, P) ----
+            if (f_stage == 2'd2) begin
+                assert(f_tr >= 0 && f_tr < $signed({1'b0, f_per}));
+                assert(f_ta == {{(W_POS-W_TR){f_tr[W_TR-1]}}, f_tr});   // tr = dir * (paced - A)
+                assert(tr_q == f_tr);
+                assert(at_last_q == (f_tr == $signed({1'b0, f_per}) - 1));
+                if (f_age >= 2'd1) assert(bs_q == f_a + f_dx(f_dir, f_perx));
+                if (f_age == 2'd0) assert(fresh_q);                  // no count yet after A
+                if (f_age != 2'd3) assert(f_tr <= 1);                // counts >= 2 calls apart
+                if (f_age == 2'd1) assert(f_tr == 0 || f_pnz);
+                if (fresh_q) assert(f_tr == 0);
+`ifdef FORMAL_ADJ
+                assert(f_r < f_per);
+                // the facts F1..F3 of (q, r) = divmod(d * tr, P), proven for the reference
+                // step by proof rephase_div (assumed here, so that this proof has no multiply)
+                assume(f_q <= f_d && $signed({1'b0, f_q}) <= f_tr);
+                if (f_tr == 0) assume(f_q == {W_P{1'b0}} && f_r == {W_P{1'b0}});
+                if (f_tr == $signed({1'b0, f_per}) - 1)
+                    assume(f_d == {W_P{1'b0}} ? (f_q == {W_P{1'b0}} && f_r == {W_P{1'b0}})
+                                              : (f_q == f_d - 1'b1 && f_r == f_per - f_d));
+                assert(f_tgt == f_adj0 + f_dx(f_dir, {{(W_POS-W_P){1'b0}}, f_q}));
+                assert(f_pt == f_pwin);
+                // hardware state: num = r; t = num + d - P, v = num - d after the first count;
+                // k = d - P from the third call after A, d loaded in the call after A
+                assert({1'b0, num_q} == f_r);
+                if (f_age >= 2'd2) assert(k_q == $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
+                if (fresh_q) assert(f_r == 0);
+                else begin
+                    assert(t_q == $signed({2'b00, num_q}) + $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
+                    assert(v_q == $signed({2'b00, num_q}) - $signed({2'b00, d_q}));
+                end
+`endif
+            end
+            // ---- stage 3 (homed) ----
+            if (f_stage == 2'd3) begin
+                // B - A = dir * P, Z - B = dir * P/4 (so Z - A = dir * (P + P/4)),
+                // C - B = dir * mark_len of the homing call
+                assert(b_q == f_b && f_b == f_a + f_dx(f_dir, f_perx));
+                assert(z_q - a_q == f_dx(f_dir, f_perx + {{(W_POS-W_P){1'b0}}, f_p4}));
+                assert(len_q == f_len && c_q == b_q + f_dx(f_dir, f_lenx));
+                assert(len1_q == {1'b0, len_q} + 1'b1);
+                // the adjustment is fixed from homing on: the output travels exactly as the
+                // paced stream (out_pos = paced + adj, adj + lag = its value at homing, lag
+                // paid out in the call after a count)
+                assert(adj_q + f_lagx == f_adjr);
+`ifdef FORMAL_ADJ
+                assert(f_tgt == f_adjh && f_adjr == f_adjh);
+                // the phase of B + adj at homing: 7P/8 forward, 3P/8 backward (so Z = B +
+                // dir * P/4 is at P/8 in both directions)
+                assert(f_phb == (f_dir ? f_p78 : f_p38));
+`endif
+                // the mark: exactly on the closed interval [B, C] of the paced position
+                assert(paced_q == b_q + f_dx(f_dir, u_q));          // u = dir * (paced - B)
+                assert(mark_q == (u_q <= f_lenx));
+            end else begin
+                assert(!mark_q);
+            end
+        end
+    end
+`endif
+
 endmodule
 
 `default_nettype wire

@@ -4,6 +4,7 @@
 # Usage: scripts/formal.sh [--engine sat|smtbmc] [--rtl DIR] [PROOF...]
 #                                run the proofs (default: all of the engine's list), exit 1 on failure
 #        scripts/formal.sh [--engine sat|smtbmc] --selftest
+#                                (SELFTEST_ONLY=REGEX: only the mutations whose name matches)
 #                                each scripted mutation of rtl_ref/ (made in a temp dir) whose proof
 #                                the engine runs must make that proof fail
 # Engines (the same properties, the same front end:
@@ -21,13 +22,13 @@ RTL="$ROOT/rtl_ref"
 # output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
 # it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
 # (a broken copy fails in the base case within seconds).
-ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq)
+ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq rephase rephase_div)
 # smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
 # BMC of k calls only); the lengths at which the sat engine's induction closes. The default list
 # (CTest formal_smtbmc) leaves out the slow ones under z3 (dds_sincos about 100 s,
 # pulse_multiplier_seq about 70 s, output_pacer_sum about 7 min): the sat engine proves the first
 # two in make test; `make formal` runs all of them with both engines.
-SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier)
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier rephase_div)
 SMT_SOLVER="${SMT_SOLVER:-z3}"
 smt_spec() {
     case "$1" in
@@ -38,6 +39,8 @@ smt_spec() {
     pulse_multiplier)     echo "1|yes" ;;
     pulse_multiplier_seq) echo "1|yes" ;;
     output_pacer_sum)     echo "1|yes" ;;
+    rephase)              echo "1|yes" ;;
+    rephase_div)          echo "1|no" ;;
     *) return 1 ;;
     esac
 }
@@ -55,6 +58,8 @@ proof_spec() {
     dds_sincos)        echo "dds_sincos|dds_sincos.v|-tempinduct -maxsteps 8" ;;
     pulse_multiplier)  echo "pulse_multiplier|pulse_multiplier.v|-tempinduct -maxsteps 3" ;;
     pulse_multiplier_seq) echo "pulse_multiplier|-DFORMAL_REBASE pulse_multiplier.v|-tempinduct -maxsteps 1" ;;
+    rephase)           echo "rephase|rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 2" ;;
+    rephase_div)       echo "fv_rephase_div|formal/fv_bresenham.v formal/fv_rephase_div.v|-seq 1" ;;
     output_pacer_sum)  echo "fv_output_pacer|-DFORMAL_SUM output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
     *) return 1 ;;
     esac
@@ -64,6 +69,21 @@ proof_spec() {
 # ends with one of the lines the callers look for: "SUCCESS!" (proven), "FAIL!" (a counterexample)
 # or "Induction step failed" (the induction does not close); "ERROR" if the proof did not run.
 run_proof() {
+    run_proof_engine "$@" || return 1
+    [ "$2" = rephase_div ] || return 0
+    # rephase_div, second half: the integer lemma (z3, QF_NIA), three check-sats, each unsat
+    local log="$3/$2.log" out
+    command -v z3 >/dev/null || { echo "ERROR: z3 not installed (make deps)" >>"$log"; return 1; }
+    out="$(timeout 120 z3 "$1/formal/fv_bresenham_int.smt2" 2>&1)"
+    echo "z3 fv_bresenham_int.smt2: $(echo $out)" >>"$log"
+    if [ "$(printf '%s\n' "$out" | grep -cx unsat)" -ne 3 ] || printf '%s\n' "$out" | grep -qvx unsat; then
+        echo "FAIL! (integer lemma: each check-sat must be unsat)" >>"$log"; return 1
+    fi
+    echo "SUCCESS! (integer lemma)" >>"$log"
+}
+
+# run_proof_engine RTLDIR NAME LOGDIR — the Verilog proof of NAME with engine $ENGINE.
+run_proof_engine() {
     local rtl="$1" name="$2" logdir="$3" spec top files opts f list="" k ind log="$3/$2.log"
     spec="$(proof_spec "$name")" || die "unknown proof $name"
     IFS='|' read -r top files opts <<<"$spec"
@@ -119,6 +139,13 @@ MUTATIONS=(
   "pm_doff_carry|pulse_multiplier.v|pulse_multiplier_seq|s/{6'd0, ~off_old_x\[2\*W_DOFF_H-1:W_DOFF_H\]}, dcy_q);/{6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, 1'b0);/"
   "pm_tnew_carry|pulse_multiplier.v|pulse_multiplier_seq|s/ys3 = x_q\[69:54\] + p_x\[69:54\] + {15'd0, yc_q\[2\]};/ys3 = x_q[69:54] + p_x[69:54];/"
   "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
+  "rep_b_bwd|rephase.v|rephase|s/wire signed \[W_POS-1:0\] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};/wire signed [W_POS-1:0] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}});/"
+  "rep_z|rephase.v|rephase|s/z_d     = bs_q + (p4_x ^/z_d     = bs_q + (mark_len_x ^/"
+  "rep_mark_len|rephase.v|rephase|s/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_lt))/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_le))/"
+  "rep_back_a|rephase.v|rephase|s/wire        tr_back  = (s_neg \&\& tr_is0)/wire        tr_back  = (s_neg \&\& tr_is0 \&\& 1'b0)/"
+  "rep_extra_lost|rephase.v|rephase|s/adj_d     = pz ? adj_q + lsgn_x : adj_q;/adj_d     = adj_q;/"
+  "rep_div_carry|formal/fv_bresenham.v|rephase_div|s/wire        cy  = rup >= {1'b0, i_per};/wire        cy  = rup > {1'b0, i_per};/"
+  "rep_div_int|formal/fv_bresenham_int.smt2|rephase_div|s/(ite (< r d) (- (+ r P) d) (- r d))))/(ite (<= r d) (- (+ r P) d) (- r d))))/"
   "op_carry2_zero|output_pacer.v|output_pacer|s/cq_two ? hi_m2 : cq_one/cq_two ? hi_z : cq_one/"
 )
 
@@ -127,10 +154,11 @@ selftest() {
     tmp="$(mktemp -d /tmp/formal_selftest.XXXXXX)"
     for m in "${MUTATIONS[@]}"; do
         IFS='|' read -r name file proof expr <<<"$m"
+        [ -z "${SELFTEST_ONLY:-}" ] || [[ "$name" =~ $SELFTEST_ONLY ]] || continue
         [ "$ENGINE" = sat ] || smt_spec "$proof" >/dev/null || continue
         n=$((n + 1))
         rm -rf "$tmp/rtl"; mkdir -p "$tmp/rtl/formal"
-        cp "$RTL"/*.v "$tmp/rtl/"; cp "$RTL"/formal/*.v "$tmp/rtl/formal/"
+        cp "$RTL"/*.v "$tmp/rtl/"; cp "$RTL"/formal/*.v "$RTL"/formal/*.smt2 "$tmp/rtl/formal/"
         sed -i "$expr" "$tmp/rtl/$file"
         if cmp -s "$RTL/$file" "$tmp/rtl/$file"; then
             echo "formal selftest: $name: the mutation did not apply"; fails=$((fails + 1)); continue
