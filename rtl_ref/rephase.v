@@ -470,11 +470,18 @@ module rephase (
     wire signed [W_TR-1:0] f_trn = f_tr + (f_sp ? 1 : 0) - (f_sn ? 1 : 0);
     wire             f_back   = f_in2 && f_trn < 0;
     wire             f_home   = f_in2 && f_trn == $signed({1'b0, f_per});
+    // d of the reference: with FORMAL_PHASE the text's d, from the target phase at A (f_dn);
+    // otherwise d as the RTL forms it in the call after A (its value is then not checked)
+`ifdef FORMAL_PHASE
+    wire [W_P-1:0]   f_dv     = f_d;
+`else
+    wire [W_P-1:0]   f_dv     = f_anew ? {1'b0, d_cur} : f_d;
+`endif
     // one step of (q, r) = divmod(d * tr, P) for tr -> tr +- 1: the reference step of
     // rtl_ref/formal/fv_bresenham.v (the one proof rephase_div shows to divide)
     wire [W_P-1:0]   f_qn, f_rn;
     wire signed [1:0] f_dq;
-    fv_bresenham u_f_div (.i_per(f_per), .i_d(f_d), .i_q(f_q), .i_r(f_r),
+    fv_bresenham u_f_div (.i_per(f_per), .i_d(f_dv), .i_q(f_q), .i_r(f_r),
                           .i_up(f_in2 && !f_back && f_sp), .i_dn(f_in2 && !f_back && f_sn),
                           .o_q(f_qn), .o_r(f_rn), .o_dq(f_dq));
     // adj_tgt moves by dir * dq; its phase with paced: (paced + adj_tgt) mod P
@@ -545,6 +552,7 @@ module rephase (
                 f_pha   <= f_ptn;
                 f_d     <= f_dn;
             end else if (f_stage == 2'd2) begin
+                f_d  <= f_dv;
                 f_tr <= f_trn;
                 f_q  <= f_qn;
                 f_r  <= f_rn;
@@ -572,7 +580,7 @@ module rephase (
         if (f_init) begin
             // the paced stream, the stage machine and its inputs follow the text
             assert(paced_q == f_paced);
-            assert(stage_q == f_stage);
+            assert(stage_q == f_stage && f_stage != 2'd0);
             assert(fwd_last_q == f_dlast && sw_prev_q == f_swp && sw_seen_q == f_sws);
             // output = paced + applied adjustment; the output moves by at most one count per
             // call; lag = adj_tgt - adj is -1, 0 or +1, non-zero only right after a real count
@@ -582,28 +590,36 @@ module rephase (
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
             assert(lsgn_q == lag_q[1:0]);
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
+            if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
 `ifdef FORMAL_ADJ
             // the adjustment target of the text: adj + lag
             assert(adj_q + f_lagx == f_tgt);
-            // phases: the output position's phase (f_po) and the target's (f_pt = f_po + lag);
-            // w = (ph_out + P/8) mod P with its wrap flags
-            assert(f_po < f_per && f_pt < f_per);
-            assert(f_pt == f_plag);
+            // the output position's phase (f_po); w = (ph_out + P/8) mod P with its wrap flags
+            assert(f_po < f_per);
             if (!w_init_q) assert(f_po == {W_P{1'b0}} && lag_q == {W_LAG{1'b0}});  // after reset
             if (w_init_q) begin
                 assert(w_q == f_addp(f_po, f_p8, f_per));
                 assert(t1_q == (w_q == f_per - 1'b1));
                 assert(z0_q == (w_q == {W_PH{1'b0}}));
             end
-            // from A on: A, the direction and d = (7P/8 - phA) mod P forward,
-            // (phA - 3P/8) mod P backward, phA the target phase at A
+            // from A on: d < P, loaded in the call after A
             if (f_stage != 2'd1) begin
-                assert(f_d < f_per && f_pha < f_per);
+                if (!f_anew) assert(f_d < f_per);
+                assert(wa_q < f_per);
+                if (!dnew_q) assert({1'b0, d_q} == f_d);
+            end
+`ifdef FORMAL_PHASE
+            // the phase of paced + adj_tgt (f_pt = f_po + lag); from A on, d = (7P/8 - phA) mod P
+            // forward, (phA - 3P/8) mod P backward, phA that phase at A
+            assert(f_pt < f_per);
+            assert(f_pt == f_plag);
+            if (f_stage != 2'd1) begin
+                assert(f_pha < f_per);
                 assert({1'b0, d_cur} == f_d);
                 assert(wa_q == f_addp(f_pha, f_p8, f_per));         // w at A
-                if (!dnew_q) assert({1'b0, d_q} == f_d);            // d loaded after A
                 assert(f_d == (f_dir ? f_subp(f_p78, f_pha, f_per) : f_subp(f_pha, f_p38, f_per)));
             end
+`endif
 `endif
             if (f_stage != 2'd1) assert(a_q == f_a && fwd_q == f_dir);
             // ---- stage 2: the adjustment is adj0 + dir * floor(d * tr / P), tr in [0, P) ----
@@ -627,7 +643,9 @@ module rephase (
                     assume(f_d == {W_P{1'b0}} ? (f_q == {W_P{1'b0}} && f_r == {W_P{1'b0}})
                                               : (f_q == f_d - 1'b1 && f_r == f_per - f_d));
                 assert(f_tgt == f_adj0 + f_dx(f_dir, {{(W_POS-W_P){1'b0}}, f_q}));
+`ifdef FORMAL_PHASE
                 assert(f_pt == f_pwin);
+`endif
                 // hardware state: num = r; t = num + d - P, v = num - d after the first count;
                 // k = d - P from the third call after A, d loaded in the call after A
                 assert({1'b0, num_q} == f_r);
@@ -653,6 +671,8 @@ module rephase (
                 assert(adj_q + f_lagx == f_adjr);
 `ifdef FORMAL_ADJ
                 assert(f_tgt == f_adjh && f_adjr == f_adjh);
+`endif
+`ifdef FORMAL_PHASE
                 // the phase of B + adj at homing: 7P/8 forward, 3P/8 backward (so Z = B +
                 // dir * P/4 is at P/8 in both directions)
                 assert(f_phb == (f_dir ? f_p78 : f_p38));

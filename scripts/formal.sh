@@ -41,6 +41,7 @@ smt_spec() {
     output_pacer_sum)     echo "1|yes" ;;
     rephase)              echo "1|yes" ;;
     rephase_div)          echo "1|no" ;;
+    rephase_adj)          echo "1|yes" ;;
     *) return 1 ;;
     esac
 }
@@ -58,7 +59,8 @@ proof_spec() {
     dds_sincos)        echo "dds_sincos|dds_sincos.v|-tempinduct -maxsteps 8" ;;
     pulse_multiplier)  echo "pulse_multiplier|pulse_multiplier.v|-tempinduct -maxsteps 3" ;;
     pulse_multiplier_seq) echo "pulse_multiplier|-DFORMAL_REBASE pulse_multiplier.v|-tempinduct -maxsteps 1" ;;
-    rephase)           echo "rephase|rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 2" ;;
+    rephase)           echo "rephase|rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 1" ;;
+    rephase_adj)       echo "rephase|-DFORMAL_ADJ rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 1" ;;
     rephase_div)       echo "fv_rephase_div|formal/fv_bresenham.v formal/fv_rephase_div.v|-seq 1" ;;
     output_pacer_sum)  echo "fv_output_pacer|-DFORMAL_SUM output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
     *) return 1 ;;
@@ -144,6 +146,7 @@ MUTATIONS=(
   "rep_mark_len|rephase.v|rephase|s/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_lt))/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_le))/"
   "rep_back_a|rephase.v|rephase|s/wire        tr_back  = (s_neg \&\& tr_is0)/wire        tr_back  = (s_neg \&\& tr_is0 \&\& 1'b0)/"
   "rep_extra_lost|rephase.v|rephase|s/adj_d     = pz ? adj_q + lsgn_x : adj_q;/adj_d     = adj_q;/"
+  "rep_adj_carry|rephase.v|rephase_adj|s/                    t_d   = t_pk;/                    t_d   = t_pd;/"
   "rep_div_carry|formal/fv_bresenham.v|rephase_div|s/wire        cy  = rup >= {1'b0, i_per};/wire        cy  = rup > {1'b0, i_per};/"
   "rep_div_int|formal/fv_bresenham_int.smt2|rephase_div|s/(ite (< r d) (- (+ r P) d) (- r d))))/(ite (<= r d) (- (+ r P) d) (- r d))))/"
   "op_carry2_zero|output_pacer.v|output_pacer|s/cq_two ? hi_m2 : cq_one/cq_two ? hi_z : cq_one/"
