@@ -494,7 +494,7 @@ module rephase (
     wire [W_P:0]     f_tq     = f_tr[W_P:0] + {1'b0, f_q};
     wire [W_P-1:0]   f_tqm    = (f_tq >= {1'b0, f_per}) ? f_tq - {1'b0, f_per} : f_tq[W_P-1:0];
     wire [W_P-1:0]   f_pwin   = f_dir ? f_addp(f_pha, f_tqm, f_per) : f_subp(f_pha, f_tqm, f_per);
-    // the RTL's output step of this call (ostep_n), and dir * (paced - B), (paced - A)
+    // the RTL's pending count and mark length extended to positions; tr from the RTL's paced
     wire [W_POS-1:0] f_lagx   = {{(W_POS-W_LAG){lag_q[W_LAG-1]}}, lag_q};
     wire [W_POS-1:0] f_ta     = f_dx(f_dir, paced_q - f_a);
     wire [W_POS-1:0] f_lenx   = {{(W_POS-W_P){1'b0}}, len_q};
