@@ -45,48 +45,51 @@ module input_filter #(
 
     // ---- registers -------------------------------------------------------------------------
     reg             s1_q, s2_q, f_q, valid_q, glitch_q, ready_q;
+    reg             take_q;     // this call loads f from s2 if s2 != f: valid ? ready : fill == 2
     reg [W_CNT-1:0] cnt_q;
     reg [1:0]       fill_q;
 
-    reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d;
+    reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d, take_d;
     reg [W_CNT-1:0] cnt_d;
     reg [1:0]       fill_d;
 
-    // need = max(N, 1) and seen = cnt + 1, both W_CNT + 1 bits (no overflow)
+    // seen = cnt + 1 in W_CNT + 1 bits (no overflow).
     // Pass decision of the next edge (DESIGN 4.1 `ready`), with this edge's N: cnt' + 1 >= max(N,1).
-    // cnt' is 0 (-> 1 >= need) or cnt + 1 (-> cnt + 2 >= need); both compares are formed from the
-    // registers and i_n in parallel with the filter logic, which only selects.
-    wire [W_CNT:0]   need    = (i_n == {W_CNT{1'b0}}) ? {{W_CNT{1'b0}}, 1'b1} : {1'b0, i_n};
+    // cnt' is 0 (-> 1 >= max(N,1)) or cnt + 1 (-> cnt + 2 >= max(N,1)); both compares are formed
+    // from the registers and i_n in parallel with the filter logic, which only selects.
     wire [W_CNT:0]   seen    = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
     wire [W_CNT-1:0] seen_lo = seen[W_CNT-1:0];
     wire [W_CNT+1:0] seen2   = {2'b00, cnt_q} + {{W_CNT{1'b0}}, 2'd2};
-    wire             rdy_0   = need <= {{W_CNT{1'b0}}, 1'b1};
-    wire             rdy_inc = seen2 >= {1'b0, need};
+    // max(N,1) <= 1 <=> N <= 1, and (seen2 >= 2) max(N,1) <= seen2 <=> N <= seen2: the compares
+    // take i_n as it is (no max() in front of the chain)
+    wire             rdy_0   = {1'b0, i_n} <= {{W_CNT{1'b0}}, 1'b1};
+    wire             rdy_inc = seen2 >= {2'b00, i_n};
 
     always @* begin
         s1_d     = i_pin;
         s2_d     = s1_q;
-        f_d      = f_q;
         valid_d  = valid_q;
         cnt_d    = cnt_q;
         fill_d   = fill_q;
         glitch_d = valid_q && (s2_q == f_q) && (cnt_q != {W_CNT{1'b0}});
         if (!valid_q) begin
             if (fill_q == 2'd2) begin
-                f_d     = s2_q;          // first sample: loaded, not filtered
-                valid_d = 1'b1;
+                valid_d = 1'b1;          // first sample: f loaded (take), not filtered
             end else begin
                 fill_d = fill_q + 2'd1;
             end
         end else if (s2_q == f_q) begin
             cnt_d = {W_CNT{1'b0}};
         end else if (ready_q) begin
-            f_d   = s2_q;
-            cnt_d = {W_CNT{1'b0}};
+            cnt_d = {W_CNT{1'b0}};       // f loaded (take)
         end else begin
             cnt_d = seen_lo;             // seen < max(N(t-1),1) <= 2^W_CNT - 1: fits
         end
         ready_d = (valid_q && s2_q != f_q && !ready_q) ? rdy_inc : rdy_0;
+        // the branches above that load f, as one register: f_d is then take ? s2 : f (one LUT
+        // from flip-flops), so the decoder that reads f_d in the same call starts early
+        take_d  = valid_d ? ready_d : (fill_d == 2'd2);
+        f_d     = take_q ? s2_q : f_q;
     end
 
     always @(posedge i_clk) begin
@@ -97,6 +100,7 @@ module input_filter #(
             valid_q  <= 1'b0;
             glitch_q <= 1'b0;
             ready_q  <= 1'b0;
+            take_q   <= 1'b0;
             cnt_q    <= {W_CNT{1'b0}};
             fill_q   <= 2'd0;
         end else begin
@@ -106,6 +110,7 @@ module input_filter #(
             valid_q  <= valid_d;
             glitch_q <= glitch_d;
             ready_q  <= ready_d;
+            take_q   <= take_d;
             cnt_q    <= cnt_d;
             fill_q   <= fill_d;
         end
@@ -118,6 +123,15 @@ module input_filter #(
     assign o_f_d      = f_d;
     assign o_valid_d  = valid_d;
     assign o_glitch_d = glitch_d;
+
+`ifdef FORMAL
+    // helper invariant (read_verilog -formal, docs/FORMAL.md): take is the register form of the
+    // load condition of the branches above, in every state reached after a reset
+    reg f_init_if;
+    initial f_init_if = 1'b0;
+    always @(posedge i_clk) if (i_rst) f_init_if <= 1'b1;
+    always @* if (f_init_if) assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
+`endif
 
 endmodule
 

@@ -195,9 +195,35 @@ module rephase (
     // 5. the output step (ostep_n above)
     wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn_q[1]}}, lsgn_q};
     wire signed [W_POS-1:0] ostep_x = {{(W_POS-2){ostep_n[1]}}, ostep_n};
-    wire signed [W_LAG-1:0] lag_n = pz ? lag_q - {{(W_LAG-2){lsgn_q[1]}}, lsgn_q} :
-                                    dq_nz ? lag_q + {{(W_LAG-2){i_pstep[1]}}, i_pstep} : lag_q;
-    wire signed [1:0] lsgn_n = lag_n[W_LAG-1] ? -2'sd1 : (lag_n != {W_LAG{1'b0}}) ? 2'sd1 : 2'sd0;
+    // lag' is one of lag - sgn(lag) (idle call), lag + 1, lag - 1 (an extra count with pstep = +1 /
+    // -1) or lag: the three sums are formed from registers and selected. Its sign (lsgn' = sgn(lag'))
+    // needs no compare after the adders: lsgn = sgn(lag) is a register, and sgn(lag') follows from
+    // it and the equalities lag == 1 / lag == -1 (lag - sgn(lag) is 0 iff |lag| <= 1, else of the
+    // sign of lag; lag + 1 is 0 iff lag == -1, else negative iff lag is; likewise lag - 1), so the
+    // late pstep only drives the last select: for each value of pstep the extra-count test (dq_nz
+    // with that pstep) is a function of registers, so lag' and lsgn' are formed per pstep value
+    // from registers (kept as nets: the mapper cannot pull pstep back into the trees) and pstep
+    // selects among the three.
+    wire signed [W_LAG-1:0] lag_ml = lag_q - {{(W_LAG-2){lsgn_q[1]}}, lsgn_q};
+    wire signed [W_LAG-1:0] lag_p1 = lag_q + 1;
+    wire signed [W_LAG-1:0] lag_m1 = lag_q - 1;
+    wire                    lag_e1 = lag_q == {{(W_LAG-1){1'b0}}, 1'b1};     // lag == 1
+    wire                    lag_em = lag_q == {W_LAG{1'b1}};                 // lag == -1
+    wire signed [1:0]       ls_ml  = (lag_e1 || lag_em) ? 2'sd0 : lsgn_q;
+    wire signed [1:0]       ls_p1  = lag_em ? 2'sd0 : lsgn_q[1] ? -2'sd1 : 2'sd1;
+    wire signed [1:0]       ls_m1  = lag_e1 ? 2'sd0 : (lsgn_q == 2'sd1) ? 2'sd1 : -2'sd1;
+    wire                    dq_p   = !leave && stage_q == 2'd2 && (fwd_q ? (!fresh_q && !t_q[W_BR-1])
+                                                                         : (tr_pos && v_q[W_BR-1]));
+    wire                    dq_m   = !leave && stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
+                                                                         : (!fresh_q && !t_q[W_BR-1]));
+    (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
+    (* keep *) wire signed [1:0]       ls_cp, ls_cm;
+    assign lag_cp = dq_p ? lag_p1 : lag_q;
+    assign lag_cm = dq_m ? lag_m1 : lag_q;
+    assign ls_cp  = dq_p ? ls_p1 : lsgn_q;
+    assign ls_cm  = dq_m ? ls_m1 : lsgn_q;
+    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : i_pstep[1] ? lag_cm : lag_cp;
+    wire signed [1:0]       lsgn_n = pz ? ls_ml : i_pstep[1] ? ls_cm : ls_cp;
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
