@@ -18,7 +18,9 @@ module laserax_axil #(
     // INIT_FILE: $readmemh image of the DDS table RAM (laserax_top); must not be empty
     parameter INIT_FILE = "dds_table_p256.hex",
     // ADDR_W: byte address width of the slave (laserax_regs: 9..32)
-    parameter integer ADDR_W = 12
+    parameter integer ADDR_W = 12,
+    // DEBUG_TAPS: laserax_top's debug taps driven (1) or tied to 0 (0, default)
+    parameter integer DEBUG_TAPS = 0
 ) (
     input  wire               i_clk,
     input  wire               i_rst,            // synchronous, active high
@@ -120,7 +122,7 @@ module laserax_axil #(
         .o_map_addr(r_map_addr), .o_map_data(r_map_data), .o_comp_sync(r_comp_sync),
         .o_comp_commit(r_comp_commit));
 
-    laserax_top #(.INIT_FILE(INIT_FILE)) u_top (
+    laserax_top #(.INIT_FILE(INIT_FILE), .DEBUG_TAPS(DEBUG_TAPS)) u_top (
         .i_clk(i_clk), .i_rst(i_rst), .i_a(i_a), .i_b(i_b), .i_sw(i_sw), .i_lerr(i_lerr),
         .i_period(r_period), .i_ratio(r_ratio), .i_comp_offset(r_comp_offset), .i_comp_sync(r_comp_sync),
         .i_comp_commit(r_comp_commit), .i_glitch_n(r_glitch_n), .i_sw_debounce(r_sw_debounce),

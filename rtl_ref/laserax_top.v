@@ -33,7 +33,13 @@ module laserax_top #(
     // INIT_FILE: $readmemh image of the DDS table RAM at configuration time (1024 words of
     // 17 bits, P = 256 / amp = 32767, written by `lutgen --hex` or `laserax vectors`).
     // Must not be empty.
-    parameter INIT_FILE = "dds_table_p256.hex"
+    parameter INIT_FILE = "dds_table_p256.hex",
+    // DEBUG_TAPS: 1 drives the debug taps (o_raw_count .. o_rep_mark: the registered outputs of
+    // each block, the axis_out taps of the C++ model, which the vector testbenches compare);
+    // 0 (default, the deployed core) ties them to 0, so the logic that only feeds them (the
+    // absolute points A, B, C, Z of rephase and the like) is removed by synthesis. The functional
+    // outputs, the status and the error-map outputs are the same for both values.
+    parameter integer DEBUG_TAPS = 0
 ) (
     input  wire               i_clk,
     input  wire               i_rst,            // synchronous, active high: power-up state
@@ -93,7 +99,7 @@ module laserax_top #(
     output wire               o_glitch_st,
     output wire               o_alarm,
     output wire               o_dac_clip_st,    // sticky: a sin/cos code was clamped (DAC range guard)
-    // taps: registered outputs of each block at this call
+    // taps: registered outputs of each block at this call (0 unless DEBUG_TAPS = 1)
     output wire signed [31:0] o_raw_count,
     output wire signed [1:0]  o_step,
     output wire signed [37:0] o_comp_pos,
@@ -126,6 +132,9 @@ module laserax_top #(
     generate
         if (INIT_FILE == "") begin : g_bad_init_file
             laserax_top_PARAMETER_INIT_FILE_must_not_be_empty u_param_error ();
+        end
+        if (DEBUG_TAPS != 0 && DEBUG_TAPS != 1) begin : g_bad_debug_taps
+            laserax_top_PARAMETER_DEBUG_TAPS_must_be_0_or_1 u_param_error ();
         end
     endgenerate
 
@@ -231,9 +240,17 @@ module laserax_top #(
     // chain in front of the check's AND tree)
     wire        spacing_ok = (|i_min_spacing[15:8]) ||
                              (i_min_spacing[7:0] > i_glitch_n && (|i_min_spacing[7:1]));
-    wire        cfg_ok    = period_ok && width_ok && amp_ok && mark_ok && spacing_ok && i_ratio != 37'd0 &&
-                            ratio_next != 37'd0 &&
-                            (|i_pace_m[15:1]) && i_tbl_period == i_period && !i_tbl_we;   // pace_m >= 2
+    // The terms that end a carry chain (the mark_len compares, the spacing compare) arrive late;
+    // they are ANDed in their own LUT (kept as a net, so the mapper cannot bury them under the
+    // wide trees of the other terms), which meets the rest of the check in the last LUT in front of
+    // safe_q: carry chain + two LUT levels.
+    (* keep *) wire cfg_ok_late;
+    assign cfg_ok_late = mark_ok && spacing_ok;
+    wire        cfg_ok_tree = period_ok && width_ok && amp_ok && i_ratio != 37'd0 && ratio_next != 37'd0 &&
+                              (|i_pace_m[15:1]) && i_tbl_period == i_period && !i_tbl_we;  // pace_m >= 2
+    (* keep *) wire cfg_ok_early;
+    assign cfg_ok_early = cfg_ok_tree;
+    wire        cfg_ok    = cfg_ok_late && cfg_ok_early;
 
     // a period change between two running calls is a reconfiguration: one call in the safe state
     // (this call runs when !safe_q; r_period is the period in force in it)
@@ -414,23 +431,24 @@ module laserax_top #(
                               map_cfg_err || clip_st;
     assign o_map_cfg_err    = map_cfg_err;
 
-    // ---- taps --------------------------------------------------------------------------------
-    assign o_raw_count = dec_raw;
-    assign o_step      = dec_step;
-    assign o_comp_pos  = mul_comp;
-    assign o_delta     = mul_delta;
-    assign o_backlog   = pac_backlog;
-    assign o_pstep     = pac_pstep;
-    assign o_paced_pos = pac_paced;
-    assign o_ostep     = rep_ostep;
-    assign o_out_pos   = rep_out_pos;
-    assign o_adj       = rep_adj;
-    assign o_a_pos     = rep_a;
-    assign o_b_pos     = rep_b;
-    assign o_c_pos     = rep_c;
-    assign o_z_pos     = rep_z;
-    assign o_d         = rep_d;
-    assign o_rep_mark  = rep_mark;
+    // ---- taps (DEBUG_TAPS = 1; else 0) -------------------------------------------------------
+    localparam TAPS = DEBUG_TAPS == 1;
+    assign o_raw_count = TAPS ? dec_raw : {32{1'b0}};
+    assign o_step      = TAPS ? dec_step : {2{1'b0}};
+    assign o_comp_pos  = TAPS ? mul_comp : {38{1'b0}};
+    assign o_delta     = TAPS ? mul_delta : {39{1'b0}};
+    assign o_backlog   = TAPS ? pac_backlog : {40{1'b0}};
+    assign o_pstep     = TAPS ? pac_pstep : {2{1'b0}};
+    assign o_paced_pos = TAPS ? pac_paced : {38{1'b0}};
+    assign o_ostep     = TAPS ? rep_ostep : {2{1'b0}};
+    assign o_out_pos   = TAPS ? rep_out_pos : {38{1'b0}};
+    assign o_adj       = TAPS ? rep_adj : {38{1'b0}};
+    assign o_a_pos     = TAPS ? rep_a : {38{1'b0}};
+    assign o_b_pos     = TAPS ? rep_b : {38{1'b0}};
+    assign o_c_pos     = TAPS ? rep_c : {38{1'b0}};
+    assign o_z_pos     = TAPS ? rep_z : {38{1'b0}};
+    assign o_d         = TAPS ? rep_d : {12{1'b0}};
+    assign o_rep_mark  = TAPS ? rep_mark : {1{1'b0}};
     assign o_corr      = map_corr;
     assign o_map_delta = map_delta;
 

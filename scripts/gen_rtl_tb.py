@@ -325,7 +325,7 @@ BLOCKS = [
     dict(
         block="laserax_top",
         module="laserax_top",
-        params=[("INIT_FILE", "TBL_FILE")],
+        params=[("INIT_FILE", "TBL_FILE"), ("DEBUG_TAPS", "1")],
         dut="laserax_top (whole chain), table RAM at its power-up contents TBL_FILE; every input "
             "is a column (the table write port is idle in the golden set; period changes with "
             "table reloads, invalid configurations and the error map run in the stress set).",
@@ -472,7 +472,7 @@ BLOCKS += [
     dict(
         block="laserax_axil",
         module="laserax_axil",
-        params=[("INIT_FILE", "TBL_FILE"), ("ADDR_W", str(AXIL_ADDR_W))],
+        params=[("INIT_FILE", "TBL_FILE"), ("ADDR_W", str(AXIL_ADDR_W)), ("DEBUG_TAPS", "1")],
         dut="laserax_axil (laserax_regs + laserax_top), table RAM at its power-up contents TBL_FILE; "
             "the pins, the AXI4-Lite signals and every laserax_top output are columns: the chain is "
             "programmed only through the bus.",

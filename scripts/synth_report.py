@@ -45,8 +45,9 @@ DEVICES = {
     "up5k": {"nextpnr": ["--up5k", "--package", "sg48"], "synth": ["-dsp"], "lcs": 5280},
 }
 TABLE_FILE = "dds_table_p256.hex"
-# Debug taps of laserax_top (axis_out taps of the C++ model). The P&R harness of the top leaves
-# them open unless --keep-taps: a deployed core has the functional outputs and the status only.
+# Debug taps of laserax_top (axis_out taps of the C++ model). The top is measured at its default
+# DEBUG_TAPS = 0 (the deployed core: the taps tied to 0, the logic behind them removed) and its
+# P&R harness leaves them open; --keep-taps measures it with DEBUG_TAPS = 1 and taps in the harness.
 TOP_TAPS = {"o_raw_count", "o_step", "o_comp_pos", "o_delta", "o_backlog", "o_pstep", "o_paced_pos",
             "o_ostep", "o_out_pos", "o_adj", "o_a_pos", "o_b_pos", "o_c_pos", "o_z_pos", "o_d",
             "o_rep_mark"}
@@ -136,7 +137,8 @@ def do_module(m, a):
         r["g_err"] = "generic synth failed"
     # iCE40, block alone
     ijson = os.path.join(out, f"{m}.ice40.json")
-    script = f"{read_verilog_cmd()}; synth_ice40 {' '.join(dev['synth'])} -top {m} -json {ijson}"
+    taps = "chparam -set DEBUG_TAPS 1 laserax_top; " if (m == "laserax_top" and a.keep_taps) else ""
+    script = f"{read_verilog_cmd()}; {taps}synth_ice40 {' '.join(dev['synth'])} -top {m} -json {ijson}"
     rc, _ = run(["yosys", "-q", "-p", script], out, os.path.join(out, f"{m}.ice40.log"))
     if rc != 0:
         r["i_err"] = "synth_ice40 failed"
@@ -157,7 +159,7 @@ def do_module(m, a):
     with open(wv, "w") as f:
         f.write(text)
     wjson = os.path.join(out, f"wrap_{m}.json")
-    script = f"{read_verilog_cmd()} {wv}; synth_ice40 {' '.join(dev['synth'])} -top wrap_{m} -json {wjson}"
+    script = f"{read_verilog_cmd()} {wv}; {taps}synth_ice40 {' '.join(dev['synth'])} -top wrap_{m} -json {wjson}"
     rc, _ = run(["yosys", "-q", "-p", script], out, os.path.join(out, f"wrap_{m}.ice40.log"))
     if rc != 0:
         r["fmax"] = "harness synth failed"
@@ -200,7 +202,7 @@ def main():
     ap.add_argument("--no-generic", action="store_true", help="skip the generic (technology-free) synthesis")
     ap.add_argument("--limits", help="CSV of limits per module (rtl_ref/synth_limits.csv); exit 1 on a violation")
     ap.add_argument("--keep-taps", action="store_true",
-                    help="connect the debug taps of laserax_top to the P&R harness too")
+                    help="laserax_top with DEBUG_TAPS = 1, its debug taps connected to the P&R harness")
     a = ap.parse_args()
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
@@ -250,8 +252,10 @@ def main():
         "harness (one FF per input bit, one LUT+FF per output bit), register to register.",
     ]
     if "laserax_top" in mods and not a.keep_taps:
-        notes.append("laserax_top P&R: functional outputs and status only; the debug taps (raw_count ..")
-        notes.append("rep_mark) are left open in the harness (--keep-taps connects them).")
+        notes.append("laserax_top: DEBUG_TAPS = 0 (default: the debug taps raw_count .. rep_mark tied to 0 and")
+        notes.append("left open in the harness; --keep-taps: DEBUG_TAPS = 1, taps in the harness).")
+    elif "laserax_top" in mods:
+        notes.append("laserax_top: DEBUG_TAPS = 1 (--keep-taps), the debug taps in the harness.")
     text = "\n".join(lines + notes)
     print()
     print(text)

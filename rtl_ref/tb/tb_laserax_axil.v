@@ -147,7 +147,7 @@ module tb_laserax_axil;
     wire [17:0] o_map_delta;
     wire o_dac_clip_st;   // not in the vectors
 
-    laserax_axil #(.INIT_FILE(TBL_FILE), .ADDR_W(12)) dut (
+    laserax_axil #(.INIT_FILE(TBL_FILE), .ADDR_W(12), .DEBUG_TAPS(1)) dut (
         .i_clk(i_clk),
         .i_rst(i_rst),
         .i_a(i_a),

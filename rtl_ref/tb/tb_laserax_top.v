@@ -173,7 +173,7 @@ module tb_laserax_top;
     wire [17:0] o_map_delta;
     wire o_dac_clip_st;   // not in the vectors
 
-    laserax_top #(.INIT_FILE(TBL_FILE)) dut (
+    laserax_top #(.INIT_FILE(TBL_FILE), .DEBUG_TAPS(1)) dut (
         .i_clk(i_clk),
         .i_rst(i_rst),
         .i_a(i_a),
