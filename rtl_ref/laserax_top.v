@@ -398,8 +398,11 @@ module laserax_top #(
     wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
     wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < dac_lo;
     wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < dac_lo;
-    wire               clip_now = sin_hi || sin_lo || cos_hi || cos_lo;
-    wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_now);
+    // the four compares (carry chains) meet in one kept LUT, which meets run_now, the held flag
+    // and clear in the LUT in front of clip_st_q: chain + two LUT levels
+    (* keep *) wire    clip_any;
+    assign clip_any = dds_sin > dac_hi || dds_sin < dac_lo || dds_cos > dac_hi || dds_cos < dac_lo;
+    wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_any);
     always @(posedge i_clk) begin
         if (i_rst) begin
             dac_hi    <= 18'sd32767;
