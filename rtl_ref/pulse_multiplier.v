@@ -201,7 +201,7 @@ module pulse_multiplier (
             // stage 1
             n_q   <= n_next;
             lo_q  <= lo_sum[R_FRAC-1:0];
-            c_q   <= lo_sum[R_FRAC] & (step_pos | step_neg);
+            c_q   <= lo_sum[R_FRAC];   // 0 without a step: lo + 0 never carries
             inc_q <= inc_d;
             // running re-base
             if (busy_q) begin
