@@ -18,8 +18,10 @@
 //      is a register, lsgn).
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
-// Every path is one carry chain of at most 38 bits from registers (the positions, taps) or of 14
-// bits followed by a few LUT levels; no 38-bit compare, no adder in series with another.
+// Every path is one carry chain of at most 38 bits from registers only (a + dir*P, adj + lsgn,
+// the points at homing), or of at most 19 bits (the low half of a position counter stepped by
+// pstep / ostep: pos_step) or 14 bits followed by a few LUT levels; no 38-bit compare, no adder
+// in series with another, and the late pstep enters no 38-bit chain.
 // Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 15 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
@@ -83,6 +85,27 @@ module rephase (
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
 
+    // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
+    // The low half adds s (a W_LO-bit chain); the high half takes hi + 1 / hi - 1 (chains of the
+    // register alone, in parallel) when the low half wraps, which equalities of the register's low
+    // half tell (all ones and s = +1; below |s| and s < 0): the late step never enters a 38-bit
+    // chain, only the low chain and the last select. Equal to x + s (mod 2^W_POS) for every s.
+    localparam integer W_LO = W_POS / 2;
+    function signed [W_POS-1:0] pos_step;
+        input signed [W_POS-1:0] x;
+        input signed [1:0]       st;
+        reg [W_LO-1:0]           lo;
+        reg [W_POS-W_LO-1:0]     hi;
+        reg                      up_w, dn_w;
+        begin
+            lo   = x[W_LO-1:0] + {{(W_LO-2){st[1]}}, st};
+            up_w = st == 2'sd1 && x[W_LO-1:0] == {W_LO{1'b1}};
+            dn_w = st[1] && (st[0] ? x[W_LO-1:0] == {W_LO{1'b0}} : x[W_LO-1:1] == {(W_LO-1){1'b0}});
+            hi   = up_w ? x[W_POS-1:W_LO] + 1'b1 : dn_w ? x[W_POS-1:W_LO] - 1'b1 : x[W_POS-1:W_LO];
+            pos_step = {hi, lo};
+        end
+    endfunction
+
     // ---- constants of P and the registers' extensions ----------------------------------------
     wire [W_PH-1:0]         p8       = i_period[W_P-1:3];                            // P/8
     wire [W_PH-1:0]         p2       = i_period[W_P-1:1];                            // P/2
@@ -90,7 +113,6 @@ module rephase (
     wire signed [W_POS-1:0] period_x = $signed({{(W_POS-W_P){1'b0}}, i_period});
     wire signed [W_POS-1:0] mark_len_x = $signed({{(W_POS-W_P){1'b0}}, i_mark_len});
     wire signed [W_POS-1:0] p4_x     = $signed({{(W_POS-W_PH-1){1'b0}}, p8, 1'b0}); // 2 * P/8
-    wire signed [W_POS-1:0] pstep_x  = {{(W_POS-2){i_pstep[1]}}, i_pstep};
     wire                    pz       = i_pstep == 2'sd0;
     wire                    pfwd     = !i_pstep[1];     // pstep > 0 when pstep != 0
     wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
@@ -101,8 +123,6 @@ module rephase (
     // step in the homing direction
     wire                    s_pos    = !pz && (pfwd == fwd_q);
     wire                    s_neg    = !pz && (pfwd != fwd_q);
-    wire signed [W_POS-1:0] s_x      = s_pos ? {{(W_POS-1){1'b0}}, 1'b1} :
-                                       s_neg ? {W_POS{1'b1}} : {W_POS{1'b0}};
     wire                    tr_pos   = !tr_q[W_TR-1] && tr_q != {W_TR{1'b0}};
 
     // 2. the extra count of this call (registers only)
@@ -194,7 +214,6 @@ module rephase (
 
     // 5. the output step (ostep_n above)
     wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn_q[1]}}, lsgn_q};
-    wire signed [W_POS-1:0] ostep_x = {{(W_POS-2){ostep_n[1]}}, ostep_n};
     // lag' is one of lag - sgn(lag) (idle call), lag + 1, lag - 1 (an extra count with pstep = +1 /
     // -1) or lag: the three sums are formed from registers and selected. Its sign (lsgn' = sgn(lag'))
     // needs no compare after the adders: lsgn = sgn(lag) is a register, and sgn(lag') follows from
@@ -251,7 +270,7 @@ module rephase (
         fresh_ld   = 1'b0;
 
         // 1. taps
-        paced_d    = paced_q + pstep_x;
+        paced_d    = pos_step(paced_q, i_pstep);
         fwd_last_d = pz ? fwd_last_q : pfwd;
         // 3. phase
         w_d        = w_n;
@@ -319,13 +338,13 @@ module rephase (
 
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
-        out_pos_d = out_pos_q + ostep_x;
+        out_pos_d = pos_step(out_pos_q, ostep_n);
         adj_d     = pz ? adj_q + lsgn_x : adj_q;
         lag_d     = lag_n;
         lsgn_d    = lsgn_n;
 
         // 6. reference mark
-        u_d    = homing ? {W_POS{1'b0}} : u_q + s_x;
+        u_d    = homing ? {W_POS{1'b0}} : pos_step(u_q, s_pos ? 2'sd1 : s_neg ? -2'sd1 : 2'sd0);
         mark_d = homing || (in3 && in_rng);
     end
 
