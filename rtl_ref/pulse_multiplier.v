@@ -55,6 +55,7 @@ module pulse_multiplier (
     // ---- registers ----------------------------------------------------------------------------
     // stage 1
     reg signed [W_RAW-1:0]    n_q;
+    reg                       nmax_q, nmin_q;  // n == 2^31 - 1, n == -2^31 (the wrap ends of N)
     reg        [W_RATIO-1:0]  r_use_q;     // target ratio (used by the steps)
     reg signed [W_OFFSET-1:0] off_tgt_q;   // target offset
     reg        [R_FRAC-1:0]   lo_q;
@@ -111,9 +112,16 @@ module pulse_multiplier (
     wire [15:0]             n_sum_h0 = n_q[31:16] + {16{i_step[1]}};          // + sign extension
     wire [15:0]             n_sum_h1 = n_q[31:16] + {16{i_step[1]}} + 16'd1;
     wire signed [W_RAW-1:0] n_next = {n_sum_l[16] ? n_sum_h1 : n_sum_h0, n_sum_l[15:0]};
-    // N wraps when it steps past an end: an equality test of n_q (no carry chain in the path)
-    wire                    n_wrap = (step_pos && n_q == {1'b0, {(W_RAW-1){1'b1}}}) ||
-                                     (step_neg && n_q == {1'b1, {(W_RAW-1){1'b0}}});
+    // N wraps when it steps past an end: the end flags are registers (nmax, nmin), so the wrap is
+    // one LUT from the step. Their next values are equalities of n_q with the constants that the
+    // step of this call takes to an end (n + step, the step -2 included), selected by the step.
+    localparam signed [W_RAW-1:0] N_MAX = {1'b0, {(W_RAW-1){1'b1}}};
+    localparam signed [W_RAW-1:0] N_MIN = {1'b1, {(W_RAW-1){1'b0}}};
+    wire                    n_wrap = (step_pos && nmax_q) || (step_neg && nmin_q);
+    wire                    e_maxm1 = n_q == N_MAX - 1, e_max = n_q == N_MAX, e_min = n_q == N_MIN;
+    wire                    e_minp1 = n_q == N_MIN + 1, e_minp2 = n_q == N_MIN + 2;
+    wire                    nmax_d = step_pos ? e_maxm1 : !step_neg ? e_max : i_step[0] ? e_min : e_minp1;
+    wire                    nmin_d = step_pos ? e_max : !step_neg ? e_min : i_step[0] ? e_minp1 : e_minp2;
     wire [R_FRAC-1:0] r_frac = r_use_q[R_FRAC-1:0];
     wire [R_FRAC-1:0] lo_add = step_pos ? r_frac : step_neg ? ~r_frac : {R_FRAC{1'b0}};
     // 32-bit fraction adder as carry-select: the low half, and the high half for both carries
@@ -180,7 +188,7 @@ module pulse_multiplier (
 
     always @(posedge i_clk) begin
         if (i_rst) begin
-            n_q <= 0; r_use_q <= 0; off_tgt_q <= 0; lo_q <= 0; c_q <= 1'b0; inc_q <= 0;
+            n_q <= 0; nmax_q <= 1'b0; nmin_q <= 1'b0; r_use_q <= 0; off_tgt_q <= 0; lo_q <= 0; c_q <= 1'b0; inc_q <= 0;
             wrap_pos_q <= 0; wrap_neg_q <= {W_INC{1'b1}};  // the values for R = 0
             hi_q <= 0; c2_q <= 1'b0; ci_q <= 0; comp_q <= 0; delta_q <= 0;
             t_lo_q <= 0; t_hi_q <= 0; t_hi_d_q <= 0;
@@ -200,6 +208,8 @@ module pulse_multiplier (
             t_hi_d_q <= t_hi_q;
             // stage 1
             n_q   <= n_next;
+            nmax_q <= nmax_d;
+            nmin_q <= nmin_d;
             lo_q  <= lo_sum[R_FRAC-1:0];
             c_q   <= lo_sum[R_FRAC];   // 0 without a step: lo + 0 never carries
             inc_q <= inc_d;
@@ -393,6 +403,7 @@ module pulse_multiplier (
         assume(i_step != -2'sd2);      // the step is -1, 0 or +1
         if (f_init) begin
             assert(n_q == f_n);
+            assert(nmax_q == (n_q == N_MAX) && nmin_q == (n_q == N_MIN));
             // the split accumulator {hi + inc + c, lo} is the reference accumulator
             assert({f_acch, lo_q} == f_acc);
             // stage 2 and 3 hold the parts of acc + T of one and two calls back

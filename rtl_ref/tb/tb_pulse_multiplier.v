@@ -75,6 +75,8 @@ module tb_pulse_multiplier;
                 dut.f_x_q = 4'd0; dut.f_y_q = 4'd0; dut.f_last_q = 1'b0;
                 dut.c_q = 1'b0; dut.inc_q = 0;
                 dut.n_q       = row[111:80];
+                dut.nmax_q    = row[111:80] == 32'sh7fffffff;
+                dut.nmin_q    = row[111:80] == 32'sh80000000;
                 dut.r_use_q   = row[216:180];
                 dut.wrap_pos_q = $signed({34'd0, i_ratio[36:32]}) - $signed({2'd0, i_ratio});
                 dut.wrap_neg_q = ~$signed({34'd0, i_ratio[36:32]}) + $signed({2'd0, i_ratio});
