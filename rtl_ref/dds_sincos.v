@@ -44,6 +44,11 @@ module dds_sincos #(
     input  wire               i_rst,        // synchronous, active high: dds_sincos::reset()
     input  wire signed [1:0]  i_ostep,      // output count: -1, 0, +1
     input  wire [12:0]        i_period,     // P (8..4096, multiple of 8)
+    // P/4 - 1 in 11 bits (i_period[12:2] - 1, wrapping), formed by the caller from the same
+    // period value (the top: in its register stage), so no decrement of P sits in front of the
+    // phase counter's select and the RAM read address. It must equal that of i_period in every
+    // call (the testbench forms it from the period column).
+    input  wire [10:0]        i_qtr_m1,
     input  wire [17:0]        i_amplitude,  // amp = T[P/4]
     input  wire               i_tbl_we,     // table write enable
     input  wire [9:0]         i_tbl_addr,   // table write address
@@ -110,14 +115,14 @@ module dds_sincos #(
     wire s_dec     = ostep_neg && !at_0;
     wire s_wdn     = ostep_neg && at_0;
     wire s_same    = !ostep_pos && !ostep_neg;
-    wire [W_R-1:0] q_m1 = quarter - one;
+    wire [W_R-1:0] q_m1 = i_qtr_m1;                    // P/4 - 1
     wire [1:0]     q_d   = s_wup ? q_q + 2'd1 : (s_wdn ? q_q - 2'd1 : q_q);
     wire [W_R-1:0] r_d   = ({W_R{s_same}} & r_q) | ({W_R{s_inc}} & rp1_q) | ({W_R{s_dec}} & rm1_q)
                          | ({W_R{s_wdn}} & q_m1);                                // s_wup: 0
     wire [W_R-1:0] rp1_d = ({W_R{s_same}} & rp1_q) | ({W_R{s_inc}} & (rp1_q + one)) | ({W_R{s_dec}} & r_q)
                          | ({W_R{s_wdn}} & quarter) | ({W_R{s_wup}} & one);
     wire [W_R-1:0] rm1_d = ({W_R{s_same}} & rm1_q) | ({W_R{s_inc}} & r_q) | ({W_R{s_dec}} & (rm1_q - one))
-                         | ({W_R{s_wdn}} & (quarter - {{(W_R-2){1'b0}}, 2'd2})) | {W_R{s_wup}};
+                         | ({W_R{s_wdn}} & (q_m1 - one)) | {W_R{s_wup}};
     // P/4 - r' (don't-care when r' = 0: the amplitude is used)
     wire [W_R-1:0] m_d   = ({W_R{s_same}} & (quarter - r_q)) | ({W_R{ostep_pos}} & (quarter - rp1_q))
                          | ({W_R{s_dec}} & (quarter - rm1_q)) | ({W_R{s_wdn}} & one);
@@ -257,6 +262,7 @@ module dds_sincos #(
     always @* begin
         // legal inputs: a constant legal period, ostep in {-1, 0, +1}
         assume(i_period == f_per);
+        assume(i_qtr_m1 == f_per[12:2] - 11'd1);
         assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
         assume(i_ostep != -2'sd2);
         // the RAM: a read of the witness address returns its content (before this edge's write)

@@ -143,6 +143,11 @@ module laserax_top #(
     // (safe_q), so the block reset is one LUT from a flip-flop. No reset: the power-up call
     // (blocks in reset) does not read them.
     reg        [12:0]   r_period;
+    // constants of the period that rephase and dds_sincos compare with, formed here from the
+    // presented period (a decrement in front of a register) instead of behind r_period in every
+    // call: P - 1, P - 2 (14-bit signed) and P/4 - 1 (11 bits), always those of r_period
+    reg signed [13:0]   r_period_m1, r_period_m2;
+    reg        [10:0]   r_qtr_m1;
     reg        [7:0]    r_glitch_n;
     reg        [15:0]   r_sw_debounce;
     reg        [15:0]   r_min_spacing;
@@ -169,6 +174,9 @@ module laserax_top #(
     reg signed [23:0]   r_map_data;
     always @(posedge i_clk) begin
         r_period        <= i_period;
+        r_period_m1     <= $signed({1'b0, i_period}) - 14'sd1;
+        r_period_m2     <= $signed({1'b0, i_period}) - 14'sd2;
+        r_qtr_m1        <= i_period[12:2] - 11'd1;
         r_glitch_n      <= i_glitch_n;
         r_sw_debounce   <= i_sw_debounce;
         r_min_spacing   <= i_min_spacing;
@@ -336,7 +344,8 @@ module laserax_top #(
     // rephase: pacer step, debounced switch and laser error of the previous call
     rephase u_rep (
         .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_sw(swf_f), .i_sw_valid(swf_valid),
-        .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_period(r_period), .i_mark_len(r_mark_len),
+        .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_period(r_period), .i_period_m1(r_period_m1),
+        .i_period_m2(r_period_m2), .i_mark_len(r_mark_len),
         .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
         .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),
         .o_homed(rep_homed));
@@ -344,7 +353,7 @@ module laserax_top #(
     // DDS: rephase output step of the previous call; the table port is always active
     wire signed [17:0] dds_sin, dds_cos;
     dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period), .i_qtr_m1(r_qtr_m1),
         .i_amplitude(r_amplitude), .i_tbl_we(r_tbl_we), .i_tbl_addr(r_tbl_addr),
         .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
 
@@ -381,6 +390,7 @@ module laserax_top #(
     // after registers only.
     reg  signed [17:0] dac_hi;      // 2^(dac_width-1) - 1 of call t, formed before the register
     reg  signed [17:0] dac_lo;      // -dac_hi, also a register (no negation before the compare)
+    reg         [17:0] dac_hi_ob, dac_lo_ob;   // the bounds in offset binary (sign bit inverted)
     reg                clear_q, clip_st_q;
     // 2^(w-1) - 1 by table (w = 12..18 in every running call, the only calls that clamp)
     reg  [17:0]        dac_hi_d;
@@ -396,22 +406,32 @@ module laserax_top #(
         endcase
     end
     wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
-    wire               sin_hi   = run_now && dds_sin > dac_hi,  sin_lo = run_now && dds_sin < dac_lo;
-    wire               cos_hi   = run_now && dds_cos > dac_hi,  cos_lo = run_now && dds_cos < dac_lo;
-    // the four compares (carry chains) meet in one kept LUT, which meets run_now, the held flag
-    // and clear in the LUT in front of clip_st_q: chain + two LUT levels
-    (* keep *) wire    clip_any;
-    assign clip_any = dds_sin > dac_hi || dds_sin < dac_lo || dds_cos > dac_hi || dds_cos < dac_lo;
-    wire               clip_st  = run_now && ((clip_st_q && !clear_q) || clip_any);
+    // The compares need no run_now: in a call that is not running the DDS registers are 0 (the
+    // DDS was reset at the edge before), which every bound passes. The four compares (carry
+    // chains) meet in one kept LUT; the held flag (and not clear) is a kept LUT of registers, so
+    // clip_st and the alarm are one LUT each after that: chain + two or three LUT levels.
+    // Signed compares as unsigned ones on offset binary (sign bit inverted; the bounds are kept
+    // in that form as well), so each is a carry chain whose carry out is the result.
+    wire        [17:0] sin_ob   = {~dds_sin[17], dds_sin[16:0]}, cos_ob = {~dds_cos[17], dds_cos[16:0]};
+    wire               sin_hi   = sin_ob > dac_hi_ob,  sin_lo = sin_ob < dac_lo_ob;
+    wire               cos_hi   = cos_ob > dac_hi_ob,  cos_lo = cos_ob < dac_lo_ob;
+    (* keep *) wire    clip_any, clip_hold;
+    assign clip_any  = sin_hi || sin_lo || cos_hi || cos_lo;
+    assign clip_hold = clip_st_q && !clear_q;
+    wire               clip_st  = run_now && (clip_hold || clip_any);
     always @(posedge i_clk) begin
         if (i_rst) begin
             dac_hi    <= 18'sd32767;
             dac_lo    <= -18'sd32767;
+            dac_hi_ob <= 18'sd32767 ^ 18'h20000;
+            dac_lo_ob <= -18'sd32767 ^ 18'h20000;
             clear_q   <= 1'b0;
             clip_st_q <= 1'b0;
         end else begin
             dac_hi    <= $signed(dac_hi_d);
             dac_lo    <= -$signed(dac_hi_d);    // a constant per width as well
+            dac_hi_ob <= dac_hi_d ^ 18'h20000;
+            dac_lo_ob <= (-$signed(dac_hi_d)) ^ 18'h20000;
             clear_q   <= r_clear;
             clip_st_q <= clip_st;
         end
@@ -430,8 +450,11 @@ module laserax_top #(
     assign o_ovs_edge_st    = dec_ovs_st;
     assign o_ovs_backlog_st = pac_ovs_st;
     assign o_glitch_st      = dec_glitch_st;
-    assign o_alarm          = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st ||
-                              map_cfg_err || clip_st;
+    // the flags that are registers, ORed apart from the late clip_st
+    (* keep *) wire alarm_reg;
+    assign alarm_reg        = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st ||
+                              map_cfg_err;
+    assign o_alarm          = alarm_reg || clip_st;
     assign o_map_cfg_err    = map_cfg_err;
 
     // ---- taps (DEBUG_TAPS = 1; else 0) -------------------------------------------------------

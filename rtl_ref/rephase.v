@@ -36,6 +36,12 @@ module rephase (
     input  wire               i_rehome,    // register pulse: back to stage 1
     input  wire               i_unhome,    // laser error level: back to stage 1, no homing
     input  wire [12:0]        i_period,    // P (8..4096, multiple of 8)
+    // P - 1 and P - 2 as 14-bit signed values ({1'b0, P} - 1, - 2), formed by the caller from the
+    // same period value (the top: in its register stage, beside the period register), so no
+    // decrement of P sits in front of the travel and phase-wrap equalities. They must equal
+    // those of i_period in every call (the testbench forms them from the period column).
+    input  wire signed [13:0] i_period_m1,
+    input  wire signed [13:0] i_period_m2,
     input  wire [12:0]        i_mark_len,  // C - B in counts (P/4..P)
     output wire signed [1:0]  o_ostep,     // output count: -1, 0, +1
     output wire signed [37:0] o_out_pos,   // paced + adj
@@ -143,8 +149,8 @@ module rephase (
     wire signed [W_X-1:0] w0x  = $signed({{(W_X-W_PH){1'b0}}, w0});
     wire signed [W_X-1:0] x_p1 = w0x + 1;
     wire signed [W_X-1:0] x_m1 = w0x - 1;
-    wire signed [W_X-1:0] p_m1 = px - 1;
-    wire signed [W_X-1:0] p_m2 = px - 2;
+    wire signed [W_X-1:0] p_m1 = i_period_m1;     // px - 1
+    wire signed [W_X-1:0] p_m2 = i_period_m2;     // px - 2
     wire [W_PH-1:0] w_n  = eup ? (t1 ? {W_PH{1'b0}} : x_p1[W_PH-1:0]) :
                            edn ? (z0 ? p_m1[W_PH-1:0] : x_m1[W_PH-1:0]) : w0;
     wire            t1_n = eup ? (t1 ? (px == 1) : (w0x == p_m2)) :
@@ -182,7 +188,11 @@ module rephase (
     wire [W_PH-1:0]        num_pd = num_q + d_q;
 
     // homing: the count that makes tr == P (at_last: tr == P - 1 after the previous call)
-    wire homing = in2 && s_pos && at_last_q;
+    // (the part from registers and the level inputs kept as a net, so the late pstep meets it in
+    // the last LUT: the mark counter's and the mark's selects follow pstep by one or two levels)
+    (* keep *) wire hm_rdy;
+    assign hm_rdy = in2 && at_last_q;
+    wire homing = hm_rdy && s_pos;
     wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
     // A + dir*P for B (formed every call from registers; used at homing, >= P calls after A):
     // one adder, x + dir*y as x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain,
@@ -192,8 +202,8 @@ module rephase (
     // the next at_last (tr' == P - 1) by equalities of the register tr (tr >= 0 always), and the
     // step back past A (tr' < 0) without the add: no compare follows the tr add
     wire signed [W_TR-1:0] tr_px  = $signed({1'b0, i_period});
-    wire signed [W_TR-1:0] tr_pm1 = tr_px - 1;
-    wire signed [W_TR-1:0] tr_pm2 = tr_px - 2;
+    wire signed [W_TR-1:0] tr_pm1 = i_period_m1;  // P - 1
+    wire signed [W_TR-1:0] tr_pm2 = i_period_m2;  // P - 2
     wire        tr_is0   = tr_q == {W_TR{1'b0}};
     wire        tr_ismax = tr_q == {1'b0, {(W_TR-1){1'b1}}};
     wire        tr_back  = (s_neg && tr_is0) || (s_pos && tr_ismax);   // tr + s < 0
@@ -617,6 +627,7 @@ module rephase (
 
     always @* begin
         assume(i_period == f_per);
+        assume(i_period_m1 == $signed({1'b0, f_per}) - 14'sd1 && i_period_m2 == $signed({1'b0, f_per}) - 14'sd2);
         assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
         assume(i_pstep != -2'sd2);
         assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart

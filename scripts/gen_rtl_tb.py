@@ -236,6 +236,12 @@ BLOCKS = [
             OUT("adj", 38, S),
             OUT("homed", 1),
         ],
+        # P - 1 and P - 2 of the period column (the top forms them in its register stage)
+        unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2)],
+        extra=dict(apply="""\
+            i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
+            i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
+"""),
     ),
     dict(
         block="dds_sincos",
@@ -254,6 +260,11 @@ BLOCKS = [
             OUT("sin", 18, S),
             OUT("cos", 18, S),
         ],
+        # P/4 - 1 of the period column (the top forms it in its register stage)
+        unused=[IN("qtr_m1", 11, idle=2047)],
+        extra=dict(apply="""\
+            i_qtr_m1 = i_period[12:2] - 11'd1;
+"""),
         **TBL,
     ),
     dict(

@@ -47,6 +47,7 @@ module tb_dds_sincos;
     reg  i_tbl_we;
     reg  [9:0] i_tbl_addr;
     reg  [16:0] i_tbl_data;
+    reg  [10:0] i_qtr_m1;   // idle (not in the vectors)
     wire [17:0] o_sin;
     wire [17:0] o_cos;
 
@@ -59,6 +60,7 @@ module tb_dds_sincos;
         .i_tbl_we(i_tbl_we),
         .i_tbl_addr(i_tbl_addr),
         .i_tbl_data(i_tbl_data),
+        .i_qtr_m1(i_qtr_m1),
         .o_sin(o_sin),
         .o_cos(o_cos)
     );
@@ -73,6 +75,7 @@ module tb_dds_sincos;
             i_tbl_we = row[72:72];
             i_tbl_addr = row[69:60];
             i_tbl_data = row[56:40];
+            i_qtr_m1 = i_period[12:2] - 11'd1;
         end
     endtask
 
@@ -84,6 +87,7 @@ module tb_dds_sincos;
             i_tbl_we = 1'd0;
             i_tbl_addr = 10'd0;
             i_tbl_data = 17'd0;
+            i_qtr_m1 = 11'd2047;
         end
     endtask
 

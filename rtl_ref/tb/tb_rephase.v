@@ -54,6 +54,8 @@ module tb_rephase;
     reg  i_unhome;
     reg  [12:0] i_period;
     reg  [12:0] i_mark_len;
+    reg  [13:0] i_period_m1;   // idle (not in the vectors)
+    reg  [13:0] i_period_m2;   // idle (not in the vectors)
     wire [1:0] o_ostep;
     wire [37:0] o_out_pos;
     wire o_mark;
@@ -76,6 +78,8 @@ module tb_rephase;
         .i_unhome(i_unhome),
         .i_period(i_period),
         .i_mark_len(i_mark_len),
+        .i_period_m1(i_period_m1),
+        .i_period_m2(i_period_m2),
         .o_ostep(o_ostep),
         .o_out_pos(o_out_pos),
         .o_mark(o_mark),
@@ -100,6 +104,8 @@ module tb_rephase;
             i_unhome = row[300:300];
             i_period = row[296:284];
             i_mark_len = row[280:268];
+            i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
+            i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
         end
     endtask
 
@@ -112,6 +118,8 @@ module tb_rephase;
             i_unhome = 1'd0;
             i_period = 13'd0;
             i_mark_len = 13'd0;
+            i_period_m1 = 14'd16383;
+            i_period_m2 = 14'd16382;
         end
     endtask
 
