@@ -162,19 +162,24 @@ public:
         // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
         // call (regs_q_, read in place: one copy per call); the configuration check of those
         // values was (in hardware) made in that call
-        if (!powered_) {  // power-up call: no registers in force, every block in reset
-            powered_ = true;
-            regs_q_ = presented;
-            axis_out o;
-            o.stage = 1;
-            return o;
-        }
-        const axis_out o = run(pins, regs_q_);
+        // one result, built in place by run() (or power_up_out()) and returned without a copy
+        axis_out o = powered_ ? run(pins, regs_q_) : safe_out(false);
+        powered_ = true;  // power-up call: no registers in force, every block in reset
         regs_q_ = presented;
         return o;
     }
 
 private:
+    // outputs of a call in which the chain does not run: every field 0 / false, stage 1; cfg_err and
+    // alarm set in the safe state (invalid configuration), not in the power-up call
+    static axis_out safe_out(bool cfg_err) {
+        axis_out o;  // every field 0 / false (default member initialisers)
+        o.cfg_err = cfg_err;
+        o.alarm = cfg_err;
+        o.stage = 1;
+        return o;
+    }
+
     // one call of the chain on the registers in force
     axis_out run(const axis_pins& pins, const axis_regs& regs) {
         // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
@@ -183,7 +188,6 @@ private:
             ratio_h_ = regs.ratio;
             offset_h_ = regs.comp_offset;
         }
-        axis_out o;  // every field 0 / false (default member initialisers)
         // A period change while running is a reconfiguration: the phase counters of the old
         // period are meaningless for the next one, so the chain restarts (one call in the safe
         // state). Coming out of reset or of an invalid configuration the blocks are already reset.
@@ -196,10 +200,7 @@ private:
             // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
             // read the table, so its true dual-port RAM has at most two accesses per call
             if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
-            o.cfg_err = true;
-            o.alarm = true;
-            o.stage = 1;
-            return o;
+            return safe_out(true);
         }
         const input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf = swf_.step(pins.sw, regs.sw_debounce);
         const quad_decoder::out_t dec =
@@ -220,43 +221,13 @@ private:
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         const dac_t dac_hi = dac_t((dds_sincos_cfg::amp_t(1) << (regs.dac_width - 1)) - 1);
         bool clip = false;
-        o.sin = clamp_dac(dds.sin, dac_hi, clip);
-        o.cos = clamp_dac(dds.cos, dac_hi, clip);
+        const dac_t sin = clamp_dac(dds.sin, dac_hi, clip);
+        const dac_t cos = clamp_dac(dds.cos, dac_hi, clip);
         if (regs.clear) dac_clip_st_ = false;
         if (clip) dac_clip_st_ = true;
-        o.dac_clip_st = dac_clip_st_;
-        quad_levels(rep_q3_.out_pos, o.qa, o.qb);
-        o.qz = rep_q3_.mark;
-        o.ref_mark = rep_q3_.mark;
-        o.cfg_err = false;
-        o.stage = rep.stage;
-        o.homed = rep.homed;
-        o.lerr_alarm = dec.lerr_alarm;
-        o.illegal_st = dec.illegal_st;
-        o.err_cnt = dec.err_cnt;
-        o.ovs_edge_st = dec.ovs_st;
-        o.ovs_backlog_st = pac.ovs_st;
-        o.glitch_st = dec.glitch_st;
-        o.map_cfg_err = emap.cfg_err;
-        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_;
-        o.raw_count = dec.raw_count;
-        o.step = dec.step;
-        o.comp_pos = mul.comp;
-        o.delta = mul.delta;
-        o.backlog = pac.backlog;
-        o.pstep = pac.pstep;
-        o.paced_pos = pac.paced;
-        o.ostep = rep.ostep;
-        o.out_pos = rep.out_pos;
-        o.adj = rep.adj;
-        o.a_pos = rep.a;
-        o.b_pos = rep.b;
-        o.c_pos = rep.c;
-        o.z_pos = rep.z;
-        o.d = rep.d;
-        o.rep_mark = rep.mark;
-        o.corr = emap.corr;
-        o.map_delta = emap.delta;
+        bool qa = false, qb = false;
+        quad_levels(rep_q3_.out_pos, qa, qb);
+        const bool mark3 = rep_q3_.mark;
 
         // pipeline registers between blocks
         swf_q_ = swf;
@@ -268,7 +239,26 @@ private:
         rep_q2_.out_pos = rep_q_.out_pos;
         rep_q2_.mark = rep_q_.mark;
         rep_q_ = rep;
-        return o;
+
+        // every field in declaration order (aggregate initialisation: no zero fill first)
+        return axis_out{
+            sin, cos,                                  // sin, cos
+            mark3, qa, qb, mark3,                      // ref_mark, qa, qb, qz
+            false,                                     // cfg_err
+            rep.stage, rep.homed,                      // stage, homed
+            dec.lerr_alarm, dec.illegal_st,            // lerr_alarm, illegal_st
+            dec.err_cnt,                               // err_cnt
+            dec.ovs_st, pac.ovs_st, dec.glitch_st,     // ovs_edge_st, ovs_backlog_st, glitch_st
+            dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_,  // alarm
+            dac_clip_st_,                              // dac_clip_st
+            dec.raw_count, dec.step,                   // raw_count, step
+            mul.comp, mul.delta,                       // comp_pos, delta
+            pac.backlog, pac.pstep, pac.paced,         // backlog, pstep, paced_pos
+            rep.ostep, rep.out_pos, rep.adj,           // ostep, out_pos, adj
+            rep.a, rep.b, rep.c, rep.z,                // a_pos, b_pos, c_pos, z_pos
+            rep.d, rep.mark,                           // d, rep_mark
+            emap.cfg_err, emap.corr, emap.delta,       // map_cfg_err, corr, map_delta
+        };
     }
 
 private:
