@@ -44,10 +44,16 @@ void axis_chain::reset() {
 }
 
 axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
-    axis_out o{};
     // DESIGN 4.7 register stage: this call runs on the registers presented in the previous call
-    const axis_regs regs = in_force_;
+    // (in_force_, read in place); the registers presented now are in force from the next call
+    const axis_out o = run(pins);
     in_force_ = presented;
+    return o;
+}
+
+axis_out axis_chain::run(const axis_pins& pins) {
+    axis_out o{};
+    const axis_regs& regs = in_force_;  // reset() keeps it (the register stage is not chain state)
     if (!powered_) {  // power-up call: no registers in force, every block in reset, outputs 0
         powered_ = true;
         reset();

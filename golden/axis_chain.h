@@ -93,6 +93,7 @@ public:
     axis_out step(const axis_pins& pins, const axis_regs& regs);
 
 private:
+    axis_out run(const axis_pins& pins);  // one call on the registers in force (in_force_)
     input_filter swf_;
     quad_decoder dec_;
     pulse_multiplier mul_;
