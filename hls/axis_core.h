@@ -202,21 +202,10 @@ private:
             if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
             return safe_out(true);
         }
-        const input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf = swf_.step(pins.sw, regs.sw_debounce);
-        const quad_decoder::out_t dec =
-            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
-        // error map: indexed by the uncorrected comp of the previous call, active only while the
-        // rephase of the previous call was homed; its delta is the pacer's second addend, summed
-        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 29 calls of map
-        // latency, a sample every 32 calls, DESIGN §4.7)
-        const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
-        const output_pacer::out_t pac =
-            pac_.step(mul_q_.delta, emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
-        const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
-                                             dec_q_.lerr, regs.period, regs.mark_len);
+        // Every block reads only inter-block registers of the previous call, so the order of the
+        // steps within a call is free: they run downstream first, and each inter-block register is
+        // loaded right after its last reader (no block output is held across the other steps).
         const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
-
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         const dac_t dac_hi = dac_t((dds_sincos_cfg::amp_t(1) << (regs.dac_width - 1)) - 1);
@@ -225,39 +214,51 @@ private:
         const dac_t cos = clamp_dac(dds.cos, dac_hi, clip);
         if (regs.clear) dac_clip_st_ = false;
         if (clip) dac_clip_st_ = true;
+        // digital outputs from the rephase outputs of call t-3
         bool qa = false, qb = false;
         quad_levels(rep_q3_.out_pos, qa, qb);
         const bool mark3 = rep_q3_.mark;
-
-        // pipeline registers between blocks
-        swf_q_ = swf;
-        dec_q_ = dec;
-        mul_q_ = mul;
-        pac_q_ = pac;
-        emap_q_ = emap;
+        // error map: indexed by the uncorrected comp of the previous call, active only while the
+        // rephase of the previous call was homed; its delta is the pacer's second addend, summed
+        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 29 calls of map
+        // latency, a sample every 32 calls, DESIGN §4.7)
+        const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
+        const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
+                                             dec_q_.lerr, regs.period, regs.mark_len);
         rep_q3_ = rep_q2_;
         rep_q2_.out_pos = rep_q_.out_pos;
         rep_q2_.mark = rep_q_.mark;
         rep_q_ = rep;
+        const output_pacer::out_t pac =
+            pac_.step(mul_q_.delta, emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        pac_q_ = pac;
+        emap_q_ = emap;
+        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
+        mul_q_ = mul;
+        const quad_decoder::out_t dec =
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
+        dec_q_ = dec;
+        swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
 
         // every field in declaration order (aggregate initialisation: no zero fill first)
         return axis_out{
             sin, cos,                                  // sin, cos
             mark3, qa, qb, mark3,                      // ref_mark, qa, qb, qz
             false,                                     // cfg_err
-            rep.stage, rep.homed,                      // stage, homed
-            dec.lerr_alarm, dec.illegal_st,            // lerr_alarm, illegal_st
-            dec.err_cnt,                               // err_cnt
-            dec.ovs_st, pac.ovs_st, dec.glitch_st,     // ovs_edge_st, ovs_backlog_st, glitch_st
-            dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_,  // alarm
+            rep_q_.stage, rep_q_.homed,                // stage, homed
+            dec_q_.lerr_alarm, dec_q_.illegal_st,      // lerr_alarm, illegal_st
+            dec_q_.err_cnt,                            // err_cnt
+            dec_q_.ovs_st, pac_q_.ovs_st, dec_q_.glitch_st,  // ovs_edge_st, ovs_backlog_st, glitch_st
+            dec_q_.lerr_alarm || dec_q_.illegal_st || dec_q_.ovs_st || pac_q_.ovs_st || emap_q_.cfg_err ||
+                dac_clip_st_,                          // alarm
             dac_clip_st_,                              // dac_clip_st
-            dec.raw_count, dec.step,                   // raw_count, step
-            mul.comp, mul.delta,                       // comp_pos, delta
-            pac.backlog, pac.pstep, pac.paced,         // backlog, pstep, paced_pos
-            rep.ostep, rep.out_pos, rep.adj,           // ostep, out_pos, adj
-            rep.a, rep.b, rep.c, rep.z,                // a_pos, b_pos, c_pos, z_pos
-            rep.d, rep.mark,                           // d, rep_mark
-            emap.cfg_err, emap.corr, emap.delta,       // map_cfg_err, corr, map_delta
+            dec_q_.raw_count, dec_q_.step,             // raw_count, step
+            mul_q_.comp, mul_q_.delta,                 // comp_pos, delta
+            pac_q_.backlog, pac_q_.pstep, pac_q_.paced,  // backlog, pstep, paced_pos
+            rep_q_.ostep, rep_q_.out_pos, rep_q_.adj,  // ostep, out_pos, adj
+            rep_q_.a, rep_q_.b, rep_q_.c, rep_q_.z,    // a_pos, b_pos, c_pos, z_pos
+            rep_q_.d, rep_q_.mark,                     // d, rep_mark
+            emap_q_.cfg_err, emap_q_.corr, emap_q_.delta,  // map_cfg_err, corr, map_delta
         };
     }
 
