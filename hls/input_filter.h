@@ -67,9 +67,8 @@ public:
             cnt_ = cnt_ + 1;  // cnt + 1 < max(N(t-1), 1) <= 2^W_CNT - 1: fits
         }
         // pass decision of the next call, with this call's N (N = 0 and N = 1 both mean "accept
-        // after one differing sample")
-        const uint<W_CNT + 1> need = (n == 0) ? uint<W_CNT + 1>(1) : uint<W_CNT + 1>(n);
-        ready_ = uint<W_CNT + 1>(cnt_) + 1 >= need;
+        // after one differing sample"): cnt + 1 >= max(N, 1), which is cnt + 1 >= N as cnt + 1 >= 1
+        ready_ = uint<W_CNT + 1>(cnt_) + 1 >= n;
         s2_ = s1_;
         s1_ = pin;
         out_t o;
