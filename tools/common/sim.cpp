@@ -203,6 +203,7 @@ void dual_axis::set(const axis_settings& s) {
     // before the call in which they are in force (register stage, DESIGN 4.7)
     if (s.period != s_.period || s.amplitude != s_.amplitude) table_pending_ = true;
     s_ = s;
+    f_stale_ = true;
     hr_ = to_hls(s);
     gr_ = to_golden(s);
 }
@@ -230,12 +231,16 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     }
     if (s_.emap.we) {  // write_map(): one call only
         s_.emap.we = false;
+        f_stale_ = true;
         hr_.emap.we = false;
         gr_.emap.we = false;
     }
     std::string m = compare(h_, g_);
     if (m.empty()) m = integrity();
-    f_ = s_;
+    if (f_stale_) {  // s_ changed since it was last copied (set(), write_map(), the we clear above)
+        f_ = s_;
+        f_stale_ = false;
+    }
     have_f_ = true;
     return m;
 }
@@ -244,6 +249,7 @@ void dual_axis::write_map(int addr, int32_t data) {
     s_.emap.we = true;
     s_.emap.addr = addr;
     s_.emap.data = data;
+    f_stale_ = true;
     hr_ = to_hls(s_);
     gr_ = to_golden(s_);
 }

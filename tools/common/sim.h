@@ -162,6 +162,7 @@ private:
     // register stage (DESIGN 4.7): the settings presented in a call are in force in the next one
     axis_settings f_{};          // settings in force in the current call (presented in the previous)
     bool have_f_ = false;        // false in the power-up call (no settings in force)
+    bool f_stale_ = true;        // s_ changed since f_ = s_ (the copy is made only then)
     bool table_pending_ = false;  // DDS table to reload after the call in which P / amp were presented
     // ratio / comp_offset in force (DESIGN 4.7: loaded every call without comp_sync, else on comp_commit)
     uint64_t eff_ratio_ = golden::default_ratio();
