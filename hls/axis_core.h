@@ -162,7 +162,7 @@ public:
         // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
         // call (regs_q_, read in place: one copy per call); the configuration check of those
         // values was (in hardware) made in that call
-        // one result, built in place by run() (or power_up_out()) and returned without a copy
+        // one result, built in place by run() (or safe_out()) and returned without a copy
         axis_out o = powered_ ? run(pins, regs_q_) : safe_out(false);
         powered_ = true;  // power-up call: no registers in force, every block in reset
         regs_q_ = presented;

@@ -164,8 +164,13 @@ public:
         // gated by the act flag that travels with them, and the flags are recomputed from the
         // call's inputs in stage A), so the stages may hold instead. Same outputs, fewer toggles.
         if (!r.map_en && idle_) {
-            write(w3_);
-            shift_write_port(r);
+            // the write port holds too while no write is in flight or presented: its delay
+            // registers then all have we = 0, and their bank, address and data are read only
+            // with we = 1 (a clock enable; same writes, same outputs)
+            if (r.we || w1_.we || w2_.we || w3_.we) {
+                write(w3_);
+                shift_write_port(r);
+            }
             ph_ = cfg::phm_t(ph_ + 1);  // wraps at S_MAP
             return out_t{};
         }
