@@ -150,7 +150,7 @@ public:
         dec_q_ = quad_decoder::out_t{};
         mul_q_ = pulse_multiplier::out_t{};
         pac_q_ = output_pacer::out_t{};
-        rep_q_ = rephase::out_t{};
+        rep_q_ = rep_reg{};
         rep_q2_ = rep_tap{};
         rep_q3_ = rep_tap{};
         emap_q_ = error_map::out_t{};
@@ -228,7 +228,10 @@ private:
         rep_q3_ = rep_q2_;
         rep_q2_.out_pos = rep_q_.out_pos;
         rep_q2_.mark = rep_q_.mark;
-        rep_q_ = rep;
+        rep_q_.ostep = rep.ostep;
+        rep_q_.out_pos = rep.out_pos;
+        rep_q_.mark = rep.mark;
+        rep_q_.homed = rep.homed;
         const output_pacer::out_t pac =
             pac_.step(mul_q_.delta, emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
         pac_q_ = pac;
@@ -245,7 +248,7 @@ private:
             sin, cos,                                  // sin, cos
             mark3, qa, qb, mark3,                      // ref_mark, qa, qb, qz
             false,                                     // cfg_err
-            rep_q_.stage, rep_q_.homed,                // stage, homed
+            rep.stage, rep.homed,                      // stage, homed
             dec_q_.lerr_alarm, dec_q_.illegal_st,      // lerr_alarm, illegal_st
             dec_q_.err_cnt,                            // err_cnt
             dec_q_.ovs_st, pac_q_.ovs_st, dec_q_.glitch_st,  // ovs_edge_st, ovs_backlog_st, glitch_st
@@ -255,9 +258,9 @@ private:
             dec_q_.raw_count, dec_q_.step,             // raw_count, step
             mul_q_.comp, mul_q_.delta,                 // comp_pos, delta
             pac_q_.backlog, pac_q_.pstep, pac_q_.paced,  // backlog, pstep, paced_pos
-            rep_q_.ostep, rep_q_.out_pos, rep_q_.adj,  // ostep, out_pos, adj
-            rep_q_.a, rep_q_.b, rep_q_.c, rep_q_.z,    // a_pos, b_pos, c_pos, z_pos
-            rep_q_.d, rep_q_.mark,                     // d, rep_mark
+            rep.ostep, rep.out_pos, rep.adj,           // ostep, out_pos, adj
+            rep.a, rep.b, rep.c, rep.z,                // a_pos, b_pos, c_pos, z_pos
+            rep.d, rep.mark,                           // d, rep_mark
             emap_q_.cfg_err, emap_q_.corr, emap_q_.delta,  // map_cfg_err, corr, map_delta
         };
     }
@@ -274,7 +277,13 @@ private:
     quad_decoder::out_t dec_q_;
     pulse_multiplier::out_t mul_q_;
     output_pacer::out_t pac_q_;
-    rephase::out_t rep_q_;  // rephase outputs of call t-1
+    struct rep_reg {  // the rephase outputs of call t-1 that blocks read (dds, error map, taps)
+        step_t ostep = 0;
+        pos_t out_pos = 0;
+        bool mark = false;
+        bool homed = false;
+    };
+    rep_reg rep_q_;
     struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
         pos_t out_pos = 0;
         bool mark = false;
