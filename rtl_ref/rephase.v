@@ -134,7 +134,8 @@ module rephase (
     // 2. the extra count of this call (registers only)
     wire dq_up = in2 && s_pos && !fresh_q && !t_q[W_BR-1];
     wire dq_dn = in2 && s_neg && tr_pos && v_q[W_BR-1];
-    wire dq_nz = dq_up || dq_dn;     // an extra count rides on this real count
+    wire dq_nz = dq_up || dq_dn;     // an extra count rides on this real count (the definition;
+                                     // step 5 uses its forms per pstep value, dq_p / dq_m)
     // dadj = dir * dq = pstep * |dq| (dq has the sign of s = dir * pstep)
 
     // 3. w = (ph_out + P/8) mod P moves by ostep (-1..1): candidates from registers, the wrap
@@ -645,6 +646,9 @@ module rephase (
             assert(ostep_q != -2'sd2);
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
             assert(lsgn_q == lag_q[1:0]);
+            // the per-pstep forms of the extra-count test are the test itself
+            if (i_pstep == 2'sd1)  assert(dq_p == dq_nz);
+            if (i_pstep == -2'sd1) assert(dq_m == dq_nz);
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
             if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
 `ifdef FORMAL_ADJ
