@@ -225,8 +225,12 @@ module laserax_top #(
     end
 
     // ---- configuration check of the presented registers (for the next call) ----------------
-    wire        period_ok = i_period >= P_MIN && i_period <= P_MAX && i_period[2:0] == 3'd0;
-    wire        width_ok  = i_dac_width >= W_DAC_MIN && i_dac_width <= W_DAC_MAX;
+    // the range checks against constants as bit logic (no carry chain in front of the AND tree):
+    // P % 8 == 0 and 8 <= P <= 4096 <=> bits [2:0] zero, some bit of [12:3] set, and bit 12 only
+    // alone; dac_width 12..18 (01100 .. 10010). Equal to the compares with P_MIN, P_MAX,
+    // W_DAC_MIN, W_DAC_MAX for every input value (checked exhaustively when written).
+    wire        period_ok = i_period[2:0] == 3'd0 && (|i_period[12:3]) && !(i_period[12] && (|i_period[11:3]));
+    wire        width_ok  = i_dac_width[4:2] == 3'b011 || i_dac_width[4:1] == 4'b1000 || i_dac_width == 5'b10010;
     // amplitude <= 2^(w-1) - 1  <=>  amplitude < 2^(w-1)  <=>  bits [17:w-1] all 0 (w = 12..18):
     // a mask per legal width, so no shift, decrement or compare chain
     reg  [17:0] amp_hi;                                // bits that must be 0 at this width
