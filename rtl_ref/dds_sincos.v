@@ -54,7 +54,17 @@ module dds_sincos #(
     input  wire [9:0]         i_tbl_addr,   // table write address
     input  wire [16:0]        i_tbl_data,   // table write data
     output wire signed [17:0] o_sin,        // sine code
-    output wire signed [17:0] o_cos         // cosine code
+    output wire signed [17:0] o_cos,        // cosine code
+    // DAC range guard support (not part of the C++ model; the top's guard, DESIGN 4.7): the
+    // magnitude bound for the codes formed in this call (they leave through o_sin / o_cos after
+    // the edge) and, registered with them, whether |o_sin| / |o_cos| exceeds it. |code| is the
+    // table word (or the amplitude) the quadrant selects, so the compare runs on the read-stage
+    // registers beside the negation instead of after the output register. Exact while the
+    // words are below 2^17 (always: 17-bit table words, amplitude <= 2^17 - 1 in every running
+    // call of the top). An all-ones bound never flags (the block testbench's idle value).
+    input  wire [17:0]        i_clip_hi,
+    output wire               o_sin_over,
+    output wire               o_cos_over
 `ifdef FORMAL
     ,
     input  wire [16:0]        f_i_rd_dir,   // formal only: the table RAM abstracted (see the
@@ -101,6 +111,7 @@ module dds_sincos #(
     reg [W_DAC-1:0]  s1_mir_q;
     reg              s1_valid_q;
     reg [W_DAC-1:0]  sin_q, cos_q;       // output stage
+    reg              sin_over_q, cos_over_q;
 
     wire [W_R-1:0] quarter = i_period[W_R+1:2];         // P/4
     wire [W_R-1:0] one     = {{(W_R-1){1'b0}}, 1'b1};
@@ -162,6 +173,8 @@ module dds_sincos #(
     wire [W_DAC-1:0] t_dir = {1'b0, s1_dir_q};
     wire [W_DAC-1:0] t_mir = s1_mir_q;
     reg  [W_DAC-1:0] sin_v, cos_v;
+    wire             gt_dir = t_dir > i_clip_hi;     // the magnitudes against the bound
+    wire             gt_mir = t_mir > i_clip_hi;
     always @* begin
         case (s1_q_q)
             2'd0:    begin sin_v = t_dir;  cos_v = t_mir;  end
@@ -183,6 +196,8 @@ module dds_sincos #(
             s1_valid_q <= 1'b0;
             sin_q      <= {W_DAC{1'b0}};
             cos_q      <= {W_DAC{1'b0}};
+            sin_over_q <= 1'b0;
+            cos_over_q <= 1'b0;
         end else begin
             q_q        <= q_d;
             r_q        <= r_d;
@@ -194,11 +209,16 @@ module dds_sincos #(
             s1_valid_q <= 1'b1;
             sin_q      <= s1_valid_q ? sin_v : {W_DAC{1'b0}};
             cos_q      <= s1_valid_q ? cos_v : {W_DAC{1'b0}};
+            // sin takes the direct word in quadrants 0 and 2, the mirror word in 1 and 3
+            sin_over_q <= s1_valid_q && (s1_q_q[0] ? gt_mir : gt_dir);
+            cos_over_q <= s1_valid_q && (s1_q_q[0] ? gt_dir : gt_mir);
         end
     end
 
     assign o_sin = sin_q;
     assign o_cos = cos_q;
+    assign o_sin_over = sin_over_q;
+    assign o_cos_over = cos_over_q;
 
 `ifdef FORMAL
     // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------

@@ -355,11 +355,27 @@ module laserax_top #(
         .o_homed(rep_homed));
 
     // DDS: rephase output step of the previous call; the table port is always active
+    // DAC bound 2^(w-1) - 1 by table (w = 12..18 in every running call, the only calls that
+    // clamp), for the register dac_hi of the guard below and the DDS's magnitude flags
+    reg  [17:0]        dac_hi_d;
+    always @* begin
+        case (r_dac_width)
+            5'd12:   dac_hi_d = 18'd2047;
+            5'd13:   dac_hi_d = 18'd4095;
+            5'd14:   dac_hi_d = 18'd8191;
+            5'd15:   dac_hi_d = 18'd16383;
+            5'd16:   dac_hi_d = 18'd32767;
+            5'd17:   dac_hi_d = 18'd65535;
+            default: dac_hi_d = 18'd131071;
+        endcase
+    end
     wire signed [17:0] dds_sin, dds_cos;
+    wire               dds_sin_over, dds_cos_over;   // |code| > dac_hi, registered with the codes
     dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
         .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period), .i_qtr_m1(r_qtr_m1),
         .i_amplitude(r_amplitude), .i_tbl_we(r_tbl_we), .i_tbl_addr(r_tbl_addr),
-        .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos));
+        .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos),
+        .i_clip_hi(dac_hi_d), .o_sin_over(dds_sin_over), .o_cos_over(dds_cos_over));
 
     // ---- digital A/B/Z: rephase outputs of call t-3 ------------------------------------------
     reg [1:0] rep_pos2_q, rep_pos3_q, out_pos2_q;   // out_pos mod 4: rep_q2, rep_q3, output stage
@@ -394,48 +410,30 @@ module laserax_top #(
     // after registers only.
     reg  signed [17:0] dac_hi;      // 2^(dac_width-1) - 1 of call t, formed before the register
     reg  signed [17:0] dac_lo;      // -dac_hi, also a register (no negation before the compare)
-    reg         [17:0] dac_hi_ob, dac_lo_ob;   // the bounds in offset binary (sign bit inverted)
     reg                clear_q, clip_st_q;
-    // 2^(w-1) - 1 by table (w = 12..18 in every running call, the only calls that clamp)
-    reg  [17:0]        dac_hi_d;
-    always @* begin
-        case (r_dac_width)
-            5'd12:   dac_hi_d = 18'd2047;
-            5'd13:   dac_hi_d = 18'd4095;
-            5'd14:   dac_hi_d = 18'd8191;
-            5'd15:   dac_hi_d = 18'd16383;
-            5'd16:   dac_hi_d = 18'd32767;
-            5'd17:   dac_hi_d = 18'd65535;
-            default: dac_hi_d = 18'd131071;
-        endcase
-    end
+    // (dac_hi_d, the bound of the next call, is formed in front of dds_sincos, which reads it)
     wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
-    // The compares need no run_now: in a call that is not running the DDS registers are 0 (the
-    // DDS was reset at the edge before), which every bound passes. The four compares (carry
-    // chains) meet in one kept LUT; the held flag (and not clear) is a kept LUT of registers, so
-    // clip_st and the alarm are one LUT each after that: chain + two or three LUT levels.
-    // Signed compares as unsigned ones on offset binary (sign bit inverted; the bounds are kept
-    // in that form as well), so each is a carry chain whose carry out is the result.
-    wire        [17:0] sin_ob   = {~dds_sin[17], dds_sin[16:0]}, cos_ob = {~dds_cos[17], dds_cos[16:0]};
-    wire               sin_hi   = sin_ob > dac_hi_ob,  sin_lo = sin_ob < dac_lo_ob;
-    wire               cos_hi   = cos_ob > dac_hi_ob,  cos_lo = cos_ob < dac_lo_ob;
-    (* keep *) wire    clip_any, clip_hold;
-    assign clip_any  = sin_hi || sin_lo || cos_hi || cos_lo;
+    // The bounds are symmetric (+-dac_hi), so a code is clamped iff |code| > dac_hi, towards its
+    // own sign. dds_sincos forms |code| > bound in the call before, from its read-stage words and
+    // the bound dac_hi_d that dac_hi holds in this call, and registers it with the code
+    // (o_sin_over / o_cos_over): the clamp and the sticky flag follow registers by one or two LUT
+    // levels, no compare chain after the DDS registers. In a call that is not running the DDS
+    // registers are 0 (the DDS was reset at the edge before): no flag, no clamp.
+    wire               sin_hi   = dds_sin_over && !dds_sin[17], sin_lo = dds_sin_over && dds_sin[17];
+    wire               cos_hi   = dds_cos_over && !dds_cos[17], cos_lo = dds_cos_over && dds_cos[17];
+    (* keep *) wire    clip_hold;
+    wire               clip_any  = dds_sin_over || dds_cos_over;
     assign clip_hold = clip_st_q && !clear_q;
     wire               clip_st  = run_now && (clip_hold || clip_any);
     always @(posedge i_clk) begin
         if (i_rst) begin
             dac_hi    <= 18'sd32767;
             dac_lo    <= -18'sd32767;
-            dac_hi_ob <= 18'sd32767 ^ 18'h20000;
-            dac_lo_ob <= -18'sd32767 ^ 18'h20000;
             clear_q   <= 1'b0;
             clip_st_q <= 1'b0;
         end else begin
             dac_hi    <= $signed(dac_hi_d);
             dac_lo    <= -$signed(dac_hi_d);    // a constant per width as well
-            dac_hi_ob <= dac_hi_d ^ 18'h20000;
-            dac_lo_ob <= (-$signed(dac_hi_d)) ^ 18'h20000;
             clear_q   <= r_clear;
             clip_st_q <= clip_st;
         end

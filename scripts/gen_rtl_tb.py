@@ -260,8 +260,10 @@ BLOCKS = [
             OUT("sin", 18, S),
             OUT("cos", 18, S),
         ],
-        # P/4 - 1 of the period column (the top forms it in its register stage)
-        unused=[IN("qtr_m1", 11, idle=2047)],
+        # P/4 - 1 of the period column (the top forms it in its register stage); the DAC guard
+        # support: an all-ones bound never flags (the flags are checked through the top's vectors)
+        unused=[IN("qtr_m1", 11, idle=2047), IN("clip_hi", 18, idle=262143),
+                OUT("sin_over", 1), OUT("cos_over", 1)],
         extra=dict(apply="""\
             i_qtr_m1 = i_period[12:2] - 11'd1;
 """),

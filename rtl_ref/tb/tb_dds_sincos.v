@@ -48,8 +48,11 @@ module tb_dds_sincos;
     reg  [9:0] i_tbl_addr;
     reg  [16:0] i_tbl_data;
     reg  [10:0] i_qtr_m1;   // idle (not in the vectors)
+    reg  [17:0] i_clip_hi;   // idle (not in the vectors)
     wire [17:0] o_sin;
     wire [17:0] o_cos;
+    wire o_sin_over;   // not in the vectors
+    wire o_cos_over;   // not in the vectors
 
     dds_sincos #(.INIT_FILE(TBL_FILE)) dut (
         .i_clk(i_clk),
@@ -61,8 +64,11 @@ module tb_dds_sincos;
         .i_tbl_addr(i_tbl_addr),
         .i_tbl_data(i_tbl_data),
         .i_qtr_m1(i_qtr_m1),
+        .i_clip_hi(i_clip_hi),
         .o_sin(o_sin),
-        .o_cos(o_cos)
+        .o_cos(o_cos),
+        .o_sin_over(o_sin_over),
+        .o_cos_over(o_cos_over)
     );
 
     `include "tb_common.vh"
@@ -88,6 +94,7 @@ module tb_dds_sincos;
             i_tbl_addr = 10'd0;
             i_tbl_data = 17'd0;
             i_qtr_m1 = 11'd2047;
+            i_clip_hi = 18'd262143;
         end
     endtask
 
