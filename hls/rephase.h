@@ -10,7 +10,8 @@
 //     of a forward count is the sign of t, the borrow of a backward count the sign of v, so the
 //     extra count of this call is known from registers before the count arrives; every next
 //     value of (num, t, v) is one 14-bit add of registers (k = d - P is a register, computed the
-//     call after A; the first count after A never carries and needs no k: `fresh`);
+//     call after A; the first count after A never carries and needs no k: `fresh`; its
+//     (num, t) = (d, 2d - P) are loaded in the call after it, from the register d: `first`);
 //   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else
 //     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
 //   * the phase is kept as w = (ph_out + P/8) mod P of the output position (w moves by ostep,
@@ -86,6 +87,7 @@ public:
         tr_ = 0;
         at_last_ = false;
         fresh_ = false;
+        first_ = false;
         num_ = 0;
         t_ = 0;
         v_ = 0;
@@ -115,8 +117,11 @@ public:
 
         // 2. the extra count of this call, from registers: carry of a forward count (t >= 0),
         //    borrow of a backward count inside the window (v < 0)
+        //    ((num, t) are not valid before the first count after A and in the call after it:
+        //    a forward count there is a first count, no carry)
+        const bool fr = fresh_ || first_;
         step_t dq = 0;
-        if (in2 && s > 0 && !fresh_ && t_ >= 0) dq = 1;
+        if (in2 && s > 0 && !fr && t_ >= 0) dq = 1;
         if (in2 && s < 0 && tr_ > 0 && v_ < 0) dq = -1;
         const step_t dadj = fwd_ ? dq : step_t(-dq);
 
@@ -155,8 +160,9 @@ public:
         // d: formed from the phase at A in the call after A (dnew), then held
         const cfg::ph_t d_reg = d_;
         const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
-        const cfg::br_t t_first = t_fresh(dnew_, d_reg, wa_, fwd_, pp);
+        const bool first = first_;
         dnew_ = false;
+        first_ = false;
         const pos_t a_prev = a_;
         const bool fwd_prev = fwd_;
         const bool rise = sw && !sw_prev_ && sw_seen_;
@@ -176,11 +182,10 @@ public:
             }
         } else if (stage_ == 2) {
             if (s > 0) {
-                if (fresh_) {  // num = 0: no carry; num' = d
-                    num_ = d_cur;
-                    t_ = t_first;  // 2d - P
+                if (fr) {  // num = 0: no carry; num' = d, t' = 2d - P in the next call
                     v_ = 0;
                     fresh_ = false;
+                    first_ = true;
                 } else if (t_ >= 0) {  // num + d >= P: carry
                     const cfg::br_t t_old = t_;
                     t_ = cfg::br_t(t_ + k_);
@@ -217,6 +222,12 @@ public:
                 z_ = fwd_ ? pos_t(bb + pos_t(2 * p8)) : pos_t(bb - pos_t(2 * p8));
                 len_ = mark_len;
             }
+        }
+        // the call after the first count after A: num = d, t = 2d - P from the register d (loaded
+        // in the call after A; no count reads them in between, counts are >= 2 calls apart)
+        if (first) {
+            num_ = d_reg;
+            t_ = cfg::br_t(cfg::br_t(d_reg) + cfg::br_t(d_reg) - cfg::br_t(pp));
         }
         d_ = d_cur;
         // k = d - P from the register d (before this call's load): valid from the third call
@@ -259,15 +270,6 @@ public:
 private:
     using tr_t = cfg::tr_t;
 
-    // 2d - P for the first count after A: in the call after A (dnew) straight from wA (-P or
-    // P - 2 wA forward, 2 wA or 2 wA - 2P backward; equal to 2d - P for P <= 4096), later from d
-    static cfg::br_t t_fresh(bool dnew, cfg::ph_t d, cfg::ph_t wa, bool fwd, cfg::p_t p) {
-        const cfg::br_t px = cfg::br_t(p), wa2 = cfg::br_t(cfg::br_t(wa) + cfg::br_t(wa));
-        if (!dnew) return cfg::br_t(cfg::br_t(d) + cfg::br_t(d) - px);
-        if (fwd) return (wa == 0) ? cfg::br_t(-px) : cfg::br_t(px - wa2);
-        return (wa < (p >> 1)) ? wa2 : cfg::br_t(wa2 - px - px);
-    }
-
     // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
     // (ph - 3P/8) mod P = (w - P/2) mod P backward
     static cfg::ph_t d_of(cfg::ph_t w, bool fwd, cfg::p_t p) {
@@ -285,7 +287,7 @@ private:
     bool dnew_;
     cfg::br_t k_;
     cfg::tr_t tr_;
-    bool at_last_, fresh_;
+    bool at_last_, fresh_, first_;
     cfg::ph_t num_;
     cfg::br_t t_, v_;
     cfg::lag_t lag_;

@@ -77,7 +77,8 @@ module rephase (
     reg signed [W_BR-1:0]  k_q, k_d;
     reg signed [W_TR-1:0]  tr_q, tr_d;
     reg                    at_last_q, at_last_d, fresh_q, fresh_d;
-    reg                    fresh_ld;           // this call loads num, t from d (the first count)
+    reg                    first_q, first_d;   // the first count after A was in the previous
+                                               // call: this call loads num = d, t = 2d - P
     reg [W_PH-1:0]         num_q, num_d;
     reg signed [W_BR-1:0]  t_q, t_d, v_q, v_d;
     reg signed [W_LAG-1:0] lag_q, lag_d;
@@ -132,7 +133,8 @@ module rephase (
     wire                    tr_pos   = !tr_q[W_TR-1] && tr_q != {W_TR{1'b0}};
 
     // 2. the extra count of this call (registers only)
-    wire dq_up = in2 && s_pos && !fresh_q && !t_q[W_BR-1];
+    wire fr    = fresh_q || first_q;   // (num, t) not yet valid: a forward count is a first count
+    wire dq_up = in2 && s_pos && !fr && !t_q[W_BR-1];
     wire dq_dn = in2 && s_neg && tr_pos && v_q[W_BR-1];
     wire dq_nz = dq_up || dq_dn;     // an extra count rides on this real count (the definition;
                                      // step 5 uses its forms per pstep value, dq_p / dq_m)
@@ -173,12 +175,8 @@ module rephase (
     // Bresenham candidates (one 14-bit add of registers each)
     wire signed [W_BR-1:0] px_br  = $signed({1'b0, i_period});
     wire signed [W_BR-1:0] d_br   = $signed({{(W_BR-W_PH){1'b0}}, d_q});
-    // 2d - P for the first count after A (num' = d): in the call after A straight from wA
-    // (-P or P - 2 wA forward, 2 wA or 2 wA - 2P backward), later from the register d
-    wire signed [W_BR-1:0] wa_br  = $signed({{(W_BR-W_PH){1'b0}}, wa_q});
-    wire signed [W_BR-1:0] tf_fwd = (wa_q == {W_PH{1'b0}}) ? -px_br : px_br - (wa_br <<< 1);
-    wire signed [W_BR-1:0] wa_mp  = wa_br - px_br;
-    wire signed [W_BR-1:0] tf_bwd = wa_mp2[W_X-1] ? (wa_br <<< 1) : (wa_mp <<< 1);
+    // 2d - P, loaded into t in the call after the first count after A (num' = d there)
+    wire signed [W_BR-1:0] t_ld   = (d_br <<< 1) - px_br;
     wire signed [W_BR-1:0] num_br = $signed({{(W_BR-W_PH){1'b0}}, num_q});
     wire signed [W_BR-1:0] t_pk   = t_q + k_q;
     wire signed [W_BR-1:0] t_pd   = t_q + d_br;
@@ -242,10 +240,10 @@ module rephase (
     wire signed [1:0]       ls_ml  = (lag_e1 || lag_em) ? 2'sd0 : lsgn_q;
     wire signed [1:0]       ls_p1  = lag_em ? 2'sd0 : lsgn_q[1] ? -2'sd1 : 2'sd1;
     wire signed [1:0]       ls_m1  = lag_e1 ? 2'sd0 : (lsgn_q == 2'sd1) ? 2'sd1 : -2'sd1;
-    wire                    dq_p   = !leave && stage_q == 2'd2 && (fwd_q ? (!fresh_q && !t_q[W_BR-1])
+    wire                    dq_p   = !leave && stage_q == 2'd2 && (fwd_q ? (!fr && !t_q[W_BR-1])
                                                                          : (tr_pos && v_q[W_BR-1]));
     wire                    dq_m   = !leave && stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
-                                                                         : (!fresh_q && !t_q[W_BR-1]));
+                                                                         : (!fr && !t_q[W_BR-1]));
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
     (* keep *) wire signed [1:0]       ls_cp, ls_cm;
     assign lag_cp = dq_p ? lag_p1 : lag_q;
@@ -278,7 +276,7 @@ module rephase (
         len1_d     = len1_q;
         wa_d       = wa_q;
         dnew_d     = 1'b0;
-        fresh_ld   = 1'b0;
+        first_d    = 1'b0;
 
         // 1. taps
         paced_d    = pos_step(paced_q, i_pstep);
@@ -302,10 +300,10 @@ module rephase (
             end
         end else if (stage_q == 2'd2) begin
             if (s_pos) begin
-                if (fresh_q) begin                              // num = 0: no carry
-                    fresh_ld = 1'b1;                            // num' = d, t' = 2d - P (below)
-                    v_d     = {W_BR{1'b0}};
-                    fresh_d = 1'b0;
+                if (fr) begin                                   // num = 0: no carry
+                    v_d     = {W_BR{1'b0}};                     // num' = d, t' = 2d - P in the
+                    fresh_d = 1'b0;                             // next call (below)
+                    first_d = 1'b1;
                 end else if (!t_neg) begin                // carry
                     num_d = t_lo;
                     t_d   = t_pk;
@@ -359,15 +357,12 @@ module rephase (
         mark_d = homing || (in3 && in_rng);
     end
 
-    // num' and t' of the first count after A, outside the stage machine: the backward candidates
-    // depend on the sign of wA - P/2 (the end of a 13-bit chain from wA and P), which therefore
-    // enters the last mux in front of the registers instead of passing the stage machine's
-    // selects (num' = d_cur and t' = 2d - P: tf_fwd / tf_bwd in the call after A, else from d)
-    wire                    fresh_bwd = fresh_ld && dnew_q && !fwd_q;
-    wire [W_PH-1:0]         num_rest  = fresh_ld ? (dnew_q ? d_fwd : d_q) : num_d;
-    wire signed [W_BR-1:0]  t_rest    = fresh_ld ? (dnew_q ? tf_fwd : (d_br <<< 1) - px_br) : t_d;
-    wire [W_PH-1:0]         num_nx    = fresh_bwd ? d_bwd : num_rest;
-    wire signed [W_BR-1:0]  t_nx      = fresh_bwd ? tf_bwd : t_rest;
+    // num' = d and t' = 2d - P of the first count after A, loaded in the call after that count
+    // (first) from the register d (loaded in the call after A, so at the latest in the call of
+    // the first count); real counts are >= 2 calls apart, so no count reads (num, t) in between,
+    // and no path runs from wA into these registers
+    wire [W_PH-1:0]         num_nx    = first_q ? d_q : num_d;
+    wire signed [W_BR-1:0]  t_nx      = first_q ? t_ld : t_d;
 
     always @(posedge i_clk) begin
         if (i_rst) begin
@@ -388,6 +383,7 @@ module rephase (
             tr_q       <= {W_TR{1'b0}};
             at_last_q  <= 1'b0;
             fresh_q    <= 1'b0;
+            first_q    <= 1'b0;
             num_q      <= {W_PH{1'b0}};
             t_q        <= {W_BR{1'b0}};
             v_q        <= {W_BR{1'b0}};
@@ -423,6 +419,7 @@ module rephase (
             tr_q       <= tr_d;
             at_last_q  <= at_last_d;
             fresh_q    <= fresh_d;
+            first_q    <= first_d;
             num_q      <= num_nx;
             t_q        <= t_nx;
             v_q        <= v_d;
@@ -651,6 +648,7 @@ module rephase (
             if (i_pstep == -2'sd1) assert(dq_m == dq_nz);
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
             if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
+            if (first_q) assert(f_stage == 2'd2 && !fresh_q);        // right after the first count
 `ifdef FORMAL_ADJ
             // the adjustment target of the text: adj + lag
             assert(adj_q + f_lagx == f_tgt);
@@ -692,7 +690,8 @@ module rephase (
                 if (f_age == 2'd0) assert(fresh_q);                  // no count yet after A
                 if (f_age != 2'd3) assert(f_tr <= 1);                // counts >= 2 calls apart
                 if (f_age == 2'd1) assert(f_tr == 0 || f_pnz);
-                if (fresh_q) assert(f_tr == 0);
+                if (fresh_q) assert(f_tr == 0 && !first_q);
+                if (first_q) assert(f_tr == 1 && f_pnz && f_age != 2'd0); // the call after the first count
 `ifdef FORMAL_ADJ
                 assert(f_r < f_per);
                 // the facts F1..F3 of (q, r) = divmod(d * tr, P), proven for the reference
@@ -708,10 +707,12 @@ module rephase (
 `endif
                 // hardware state: num = r; t = num + d - P, v = num - d after the first count;
                 // k = d - P from the third call after A, d loaded in the call after A
-                assert({1'b0, num_q} == f_r);
+                // (num, t) of the first count are loaded in the call after it (first), from d
+                if (first_q) assert({1'b0, d_q} == f_r && v_q == {W_BR{1'b0}});
+                else assert({1'b0, num_q} == f_r);
                 if (f_age >= 2'd2) assert(k_q == $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
                 if (fresh_q) assert(f_r == 0);
-                else begin
+                else if (!first_q) begin
                     assert(t_q == $signed({2'b00, num_q}) + $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
                     assert(v_q == $signed({2'b00, num_q}) - $signed({2'b00, d_q}));
                 end
