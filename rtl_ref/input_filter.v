@@ -46,32 +46,31 @@ module input_filter #(
     // ---- registers -------------------------------------------------------------------------
     reg             s1_q, s2_q, f_q, valid_q, glitch_q, ready_q;
     reg             take_q;     // this call loads f from s2 if s2 != f: valid ? ready : fill == 2
-    reg [W_CNT-1:0] cnt_q;
+    // the stability counter cnt of hls/input_filter.h is kept as cnt + 2 (c2, W_CNT + 1 bits:
+    // cnt < max(N,1) <= 2^W_CNT - 1, so cnt + 2 <= 2^W_CNT), the value the pass compare needs
+    reg [W_CNT:0]   c2_q;
     reg [1:0]       fill_q;
 
     reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d, take_d;
-    reg [W_CNT-1:0] cnt_d;
+    reg [W_CNT:0]   c2_d;
     reg [1:0]       fill_d;
 
-    // seen = cnt + 1 in W_CNT + 1 bits (no overflow).
     // Pass decision of the next edge (DESIGN 4.1 `ready`), with this edge's N: cnt' + 1 >= max(N,1).
     // cnt' is 0 (-> 1 >= max(N,1)) or cnt + 1 (-> cnt + 2 >= max(N,1)); both compares are formed
     // from the registers and i_n in parallel with the filter logic, which only selects.
-    wire [W_CNT:0]   seen    = {1'b0, cnt_q} + {{W_CNT{1'b0}}, 1'b1};
-    wire [W_CNT-1:0] seen_lo = seen[W_CNT-1:0];
-    wire [W_CNT+1:0] seen2   = {2'b00, cnt_q} + {{W_CNT{1'b0}}, 2'd2};
-    // max(N,1) <= 1 <=> N <= 1, and (seen2 >= 2) max(N,1) <= seen2 <=> N <= seen2: the compares
-    // take i_n as it is (no max() in front of the chain)
+    // max(N,1) <= 1 <=> N <= 1, and (cnt + 2 >= 2) max(N,1) <= cnt + 2 <=> N <= cnt + 2: the
+    // compares take i_n and the register c2 = cnt + 2 as they are (one chain, no add before it)
+    localparam [W_CNT:0] C2_ZERO = 2;    // c2 of cnt = 0
     wire             rdy_0   = {1'b0, i_n} <= {{W_CNT{1'b0}}, 1'b1};
-    wire             rdy_inc = seen2 >= {2'b00, i_n};
+    wire             rdy_inc = c2_q >= {1'b0, i_n};
 
     always @* begin
         s1_d     = i_pin;
         s2_d     = s1_q;
         valid_d  = valid_q;
-        cnt_d    = cnt_q;
+        c2_d     = c2_q;
         fill_d   = fill_q;
-        glitch_d = valid_q && (s2_q == f_q) && (cnt_q != {W_CNT{1'b0}});
+        glitch_d = valid_q && (s2_q == f_q) && (c2_q != C2_ZERO);
         if (!valid_q) begin
             if (fill_q == 2'd2) begin
                 valid_d = 1'b1;          // first sample: f loaded (take), not filtered
@@ -79,11 +78,11 @@ module input_filter #(
                 fill_d = fill_q + 2'd1;
             end
         end else if (s2_q == f_q) begin
-            cnt_d = {W_CNT{1'b0}};
+            c2_d = C2_ZERO;
         end else if (ready_q) begin
-            cnt_d = {W_CNT{1'b0}};       // f loaded (take)
+            c2_d = C2_ZERO;              // f loaded (take)
         end else begin
-            cnt_d = seen_lo;             // seen < max(N(t-1),1) <= 2^W_CNT - 1: fits
+            c2_d = c2_q + 1'b1;          // cnt + 1 < max(N(t-1),1) <= 2^W_CNT - 1: fits
         end
         ready_d = (valid_q && s2_q != f_q && !ready_q) ? rdy_inc : rdy_0;
         // the branches above that load f, as one register: f_d is then take ? s2 : f (one LUT
@@ -101,7 +100,7 @@ module input_filter #(
             glitch_q <= 1'b0;
             ready_q  <= 1'b0;
             take_q   <= 1'b0;
-            cnt_q    <= {W_CNT{1'b0}};
+            c2_q     <= C2_ZERO;
             fill_q   <= 2'd0;
         end else begin
             s1_q     <= s1_d;
@@ -111,7 +110,7 @@ module input_filter #(
             glitch_q <= glitch_d;
             ready_q  <= ready_d;
             take_q   <= take_d;
-            cnt_q    <= cnt_d;
+            c2_q     <= c2_d;
             fill_q   <= fill_d;
         end
     end
@@ -130,7 +129,10 @@ module input_filter #(
     reg f_init_if;
     initial f_init_if = 1'b0;
     always @(posedge i_clk) if (i_rst) f_init_if <= 1'b1;
-    always @* if (f_init_if) assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
+    always @* if (f_init_if) begin
+        assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
+        assert(c2_q >= C2_ZERO);     // c2 = cnt + 2
+    end
 `endif
 
 endmodule
