@@ -83,7 +83,7 @@ module output_pacer (
     reg           h1_q;                            // hi[3:0] == 1
     reg           he_q;                            // hi[3:0] == 0xe (hi == -2 with ho_q)
     reg [NL-1:0]  lz_q;                            // piece of lo all 0
-    reg           tz_q;                            // timer == 0
+    reg           tz_q;                            // timer == 0 and e_prev == 0 (see tz_d)
     wire hi_neg  = hi_q[W_HI-1];
     wire hi_z    = &hz_q;
     wire hi_m1   = &ho_q;
@@ -97,7 +97,7 @@ module output_pacer (
     wire h_neg   = cq_neg ? (hi_neg || hi_z) : cq_two ? (hi_neg && !hi_m1 && !hi_m2)
                  : cq_one ? (hi_neg && !hi_m1) : hi_neg;
     wire x_nz    = !(h_zero && (&lz_q));
-    wire emit_nz = tz_q && (e_prev_q == 2'sd0) && x_nz;
+    wire emit_nz = tz_q && x_nz;
     wire signed [1:0] emit = emit_nz ? (h_neg ? -2'sd1 : 2'sd1) : 2'sd0;
 
     // ---- X' = X + delta + add - e_prev: carry-save layers, then one chain per half ----------
@@ -135,8 +135,10 @@ module output_pacer (
 `endif
 
     // ---- timer -------------------------------------------------------------------------------
-    wire              tz_d    = emit_nz ? (i_pace_m == {{(W_PACE-1){1'b0}}, 1'b1})
-                                        : (timer_q[W_PACE-1:1] == {(W_PACE-1){1'b0}});
+    // tz' = (timer' == 0 && e_prev' == 0): after an emitted count e_prev' != 0, so 0 (whatever M
+    // loads the timer); otherwise e_prev' = 0 and timer' = max(timer - 1, 0) is 0 iff timer <= 1.
+    // So the emit decision needs no test of e_prev (it only mattered for the illegal M = 1).
+    wire              tz_d    = !emit_nz && (timer_q[W_PACE-1:1] == {(W_PACE-1){1'b0}});
     wire [W_PACE-1:0] timer_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}
                               : (timer_q != {W_PACE{1'b0}}) ? timer_q - {{(W_PACE-1){1'b0}}, 1'b1}
                               : {W_PACE{1'b0}};
@@ -388,7 +390,7 @@ module output_pacer (
             assert(he_q == (hi_q[3:0] == 4'he));
             assert(lz_q == {lo_q[19:16] == 4'h0, lo_q[15:12] == 4'h0, lo_q[11:8] == 4'h0,
                             lo_q[7:4] == 4'h0, lo_q[3:0] == 4'h0});
-            assert(tz_q == (timer_q == {W_PACE{1'b0}}));
+            assert(tz_q == (timer_q == {W_PACE{1'b0}} && e_prev_q == 2'sd0));
             assert(e_pos_q == (e_prev_q == 2'sd1));
             // counts and tap carries are -1, 0 or +1, the backlog carry -1 .. +2 (helper invariant)
             assert(e_prev_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 && f_e1 != -2'sd2);
