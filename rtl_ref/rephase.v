@@ -76,6 +76,7 @@ module rephase (
     reg                    dnew_q, dnew_d;     // A was in the previous call: d not yet loaded
     reg signed [W_BR-1:0]  k_q, k_d;
     reg signed [W_TR-1:0]  tr_q, tr_d;
+    reg                    tr_pos_q, tr_pos_d; // tr > 0, registered beside tr
     reg                    at_last_q, at_last_d, fresh_q, fresh_d;
     reg                    first_q, first_d;   // the first count after A was in the previous
                                                // call: this call loads num = d, t = 2d - P
@@ -130,7 +131,7 @@ module rephase (
     // step in the homing direction
     wire                    s_pos    = !pz && (pfwd == fwd_q);
     wire                    s_neg    = !pz && (pfwd != fwd_q);
-    wire                    tr_pos   = !tr_q[W_TR-1] && tr_q != {W_TR{1'b0}};
+    wire                    tr_pos   = tr_pos_q;     // tr > 0 (a register, see tr_pos_d)
 
     // 2. the extra count of this call (registers only)
     wire fr    = fresh_q || first_q;   // (num, t) not yet valid: a forward count is a first count
@@ -204,6 +205,7 @@ module rephase (
     wire signed [W_TR-1:0] tr_pm1 = i_period_m1;  // P - 1
     wire signed [W_TR-1:0] tr_pm2 = i_period_m2;  // P - 2
     wire        tr_is0   = tr_q == {W_TR{1'b0}};
+    wire        tr_is1   = tr_q == {{(W_TR-1){1'b0}}, 1'b1};
     wire        tr_ismax = tr_q == {1'b0, {(W_TR-1){1'b1}}};
     wire        tr_back  = (s_neg && tr_is0) || (s_pos && tr_ismax);   // tr + s < 0
     wire        p_is1    = i_period == 13'd1;                          // 0 == P - 1
@@ -337,6 +339,12 @@ module rephase (
                 len1_d  = {1'b0, i_mark_len} + 1'b1;
             end
         end
+        // tr' > 0 without a compare after the tr add (tr >= 0 always: the step back past A
+        // leaves with tr' = 0): 0 at A and on that step; +1 gives tr' >= 1; -1 gives tr' > 0 iff
+        // tr >= 2; otherwise tr is held
+        if (cap)      tr_pos_d = 1'b0;
+        else if (in2) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
+        else          tr_pos_d = tr_pos_q;
         if (dnew_q) d_d = d_cur;
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
         bs_d      = bs_sum;
@@ -381,6 +389,7 @@ module rephase (
             dnew_q     <= 1'b0;
             k_q        <= {W_BR{1'b0}};
             tr_q       <= {W_TR{1'b0}};
+            tr_pos_q   <= 1'b0;
             at_last_q  <= 1'b0;
             fresh_q    <= 1'b0;
             first_q    <= 1'b0;
@@ -417,6 +426,7 @@ module rephase (
             dnew_q     <= dnew_d;
             k_q        <= k_d;
             tr_q       <= tr_d;
+            tr_pos_q   <= tr_pos_d;
             at_last_q  <= at_last_d;
             fresh_q    <= fresh_d;
             first_q    <= first_d;
@@ -649,6 +659,7 @@ module rephase (
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
             if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
             if (first_q) assert(f_stage == 2'd2 && !fresh_q);        // right after the first count
+            assert(!tr_q[W_TR-1] && tr_pos_q == (tr_q != {W_TR{1'b0}}));   // tr >= 0, tr_pos
 `ifdef FORMAL_ADJ
             // the adjustment target of the text: adj + lag
             assert(adj_q + f_lagx == f_tgt);
