@@ -100,6 +100,7 @@ module dds_sincos #(
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]        q_q;
     reg [W_R-1:0]    r_q, rp1_q, rm1_q;  // phase offset r and its neighbours r + 1, r - 1
+    reg              wrap_q;             // r + 1 == P/4 of the previous call (the up count wraps)
     reg [W_TBL-1:0]  t_dir_q, t_mir_q;   // RAM read data (read-first), next-phase addresses
     reg [W_ADDR-1:0] a_dir_q, a_mir_q;   // their addresses
     reg              r0_q;               // r' == 0 at that read: the mirror word is the amplitude
@@ -119,7 +120,7 @@ module dds_sincos #(
     // ---- phase counter and the next-phase read addresses -----------------------------------------
     wire ostep_pos = !i_ostep[1] && i_ostep[0];        // ostep > 0
     wire ostep_neg = i_ostep[1];                       // ostep < 0
-    wire wrap_up   = rp1_q == quarter;                 // r == P/4 - 1
+    wire wrap_up   = wrap_q;                           // r == P/4 - 1 (P of the previous call)
     wire at_0      = r_q == {W_R{1'b0}};
     wire s_inc     = ostep_pos && !wrap_up;
     wire s_wup     = ostep_pos && wrap_up;
@@ -134,6 +135,10 @@ module dds_sincos #(
                          | ({W_R{s_wdn}} & quarter) | ({W_R{s_wup}} & one);
     wire [W_R-1:0] rm1_d = ({W_R{s_same}} & rm1_q) | ({W_R{s_inc}} & r_q) | ({W_R{s_dec}} & (rm1_q - one))
                          | ({W_R{s_wdn}} & (q_m1 - one)) | {W_R{s_wup}};
+    // r' + 1 == P/4, registered for the next call's up count: equalities of registers with P/4 and
+    // P/4 - 1 beside the candidates (r + 1 + 1 == P/4 is r + 1 == P/4 - 1), selected by the step
+    wire           wrap_d = (s_same && wrap_q) || (s_inc && rp1_q == q_m1) || (s_dec && r_q == quarter)
+                          || s_wdn || (s_wup && quarter == one);
     // P/4 - r' (don't-care when r' = 0: the amplitude is used)
     wire [W_R-1:0] m_d   = ({W_R{s_same}} & (quarter - r_q)) | ({W_R{ostep_pos}} & (quarter - rp1_q))
                          | ({W_R{s_dec}} & (quarter - rm1_q)) | ({W_R{s_wdn}} & one);
@@ -190,6 +195,7 @@ module dds_sincos #(
             r_q        <= {W_R{1'b0}};
             rp1_q      <= one;
             rm1_q      <= {W_R{1'b1}};
+            wrap_q     <= 1'b0;                  // P/4 of the reset call read as 0: r + 1 != 0
             s1_q_q     <= 2'd0;
             s1_dir_q   <= {W_TBL{1'b0}};
             s1_mir_q   <= {W_DAC{1'b0}};
@@ -203,6 +209,7 @@ module dds_sincos #(
             r_q        <= r_d;
             rp1_q      <= rp1_d;
             rm1_q      <= rm1_d;
+            wrap_q     <= wrap_d;
             s1_q_q     <= q_q;
             s1_dir_q   <= w_dir;
             s1_mir_q   <= r0_q ? i_amplitude : {1'b0, w_mir};
@@ -301,6 +308,7 @@ module dds_sincos #(
             assert(f_qr == f_ph);
             assert(rp1_q == r_q + one);
             assert(rm1_q == r_q - one);
+            assert(wrap_q == (rp1_q == quarter));       // the registered wrap test (P constant)
             // helper invariants: the addresses read at the last edge are those of (q_q, r_q)
             assert(a_dir_q == r_q[W_ADDR-1:0]);
             assert(r0_q == (r_q == {W_R{1'b0}}));
