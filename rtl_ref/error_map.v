@@ -94,6 +94,7 @@ module error_map (
     // Power-up contents 0, as the C++ tables (block RAM initial contents on the iCE40). At the
     // held end of a table (i = n - 1, u = 0) the word of the other RAM is read but multiplied by
     // 0 (or cancelled, ERROR_MAP.md §4); it may lie beyond the loaded words, so it must not be X.
+`ifndef FORMAL
     integer ii;
     initial begin
         for (ii = 0; ii < TBL_DEPTH / 2; ii = ii + 1) begin
@@ -103,6 +104,7 @@ module error_map (
             tbl1o[ii] = {W_CORR{1'b0}};
         end
     end
+`endif
 
     // ---- stage A: geometry of the selected bank, registered subtract -------------------------
     wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
@@ -231,6 +233,21 @@ module error_map (
 
     // ---- stage R: one registered read of each RAM of the selected bank, the delayed write ------
     reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+`ifdef FORMAL
+    // formal: the table contents are free (the properties below hold for any table); every read
+    // returns an arbitrary word
+    (* anyseq *) wire signed [W_CORR-1:0] f_rd0e, f_rd0o, f_rd1e, f_rd1o;
+    always @(posedge i_clk) begin
+        if (!c_bank) begin
+            rd0e <= f_rd0e;
+            rd0o <= f_rd0o;
+        end
+        if (c_bank) begin
+            rd1e <= f_rd1e;
+            rd1o <= f_rd1o;
+        end
+    end
+`else
     always @(posedge i_clk) begin
         if (!c_bank) begin
             rd0e <= tbl0e[c_ea];
@@ -255,6 +272,7 @@ module error_map (
     always @(posedge i_clk) begin
         if (w3_we && w3_bank && w3_addr[0]) tbl1o[w3_addr[W_ADDR-1:1]] <= w3_data;
     end
+`endif
 
     reg              r_lsb, r_bank, r_act, r_inr, r_err;
     reg [W_FRAC-1:0] r_u;
@@ -374,6 +392,57 @@ module error_map (
     assign o_in_range = inr_oq;
     assign o_clamped  = active_oq && !inr_oq;
     assign o_cfg_err  = err_oq;
+
+`ifdef FORMAL
+    // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
+    // For any table contents, any positions and any register values:
+    // 1. conservation: the deltas since reset add up to corr in every call (the pacer receives
+    //    exactly the correction; the delta form loses or adds nothing);
+    // 2. corr changes at most once per S_MAP = 32 calls, in a fixed call of the phase (delta is
+    //    non-zero only with ph == PH_G + 2);
+    // 3. a map switched off takes its correction back in full: after 64 calls in a row with
+    //    map_en == 0 or homed == 0, corr == 0, delta == 0 and active == 0 (with 1., the deltas
+    //    have returned exactly what they added).
+    reg                f_init;
+    initial f_init = 1'b0;
+    reg signed [23:0]  f_sum;                          // the deltas of the calls before this one
+    reg [6:0]          f_off;                          // calls in a row with the map off, saturating
+    wire               f_offn = !i_map_en || !i_homed;
+    wire [4:0]         f_sl = ph - (PH_LOAD + 5'd1);   // calls since M was loaded
+    wire [4:0]         f_sg = ph - (PH_G + 5'd1);      // calls since stage G was loaded
+    wire [4:0]         f_sc = ph - (PH_G + 5'd2);      // calls since corr took stage G's value
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            f_init <= 1'b1;
+            f_sum  <= 24'sd0;
+            f_off  <= 7'd0;
+        end else begin
+            f_sum  <= f_sum + {{(24-W_CDELTA){delta_q[W_CDELTA-1]}}, delta_q};
+            f_off  <= !f_offn ? 7'd0 : (f_off == 7'd127 ? f_off : f_off + 7'd1);
+        end
+    end
+    always @* begin
+        if (f_init) begin
+            // 1.
+            assert(f_sum + {{(24-W_CDELTA){delta_q[W_CDELTA-1]}}, delta_q} == {{(24-W_C){corr_q[W_C-1]}}, corr_q});
+            // 2. (and its helper: the stage-G value reaches corr one call after it is formed)
+            if (ph != PH_G + 5'd1) assert(g_corr == corr_q);
+            if (ph != PH_G + 5'd2) assert(delta_q == {W_CDELTA{1'b0}});
+            // 3.
+            if (f_off >= 7'd64) assert(corr_q == {W_C{1'b0}} && delta_q == {W_CDELTA{1'b0}} && !active_oq);
+            // helper invariants: the activity pipeline behind the switched-off inputs
+            if (f_off >= 7'd1) assert(!a_act);
+            if (f_off >= 7'd2) assert(!b_act);
+            if (f_off >= 7'd3) assert(!c_act);
+            if (f_off >= 7'd4) assert(!r_act);
+            if (f_off >= 7'd5) assert(!d_act);
+            if (f_off >= 7'd6 + {2'b00, f_sl}) assert(!m_act);
+            if (f_off >= 7'd28 + {2'b00, f_sg}) assert(!g_act && g_corr == {W_C{1'b0}});
+            if (f_off >= 7'd29 + {2'b00, f_sc}) assert(corr_q == {W_C{1'b0}});
+            if (f_off >= 7'd61) assert(delta_q == {W_CDELTA{1'b0}} && !active_oq);
+        end
+    end
+`endif
 
 endmodule
 

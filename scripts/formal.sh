@@ -22,13 +22,13 @@ RTL="$ROOT/rtl_ref"
 # output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
 # it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
 # (a broken copy fails in the base case within seconds).
-ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq rephase rephase_div)
+ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq rephase rephase_div error_map)
 # smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
 # BMC of k calls only); the lengths at which the sat engine's induction closes. The default list
 # (CTest formal_smtbmc) leaves out the slow ones under z3 (dds_sincos about 100 s,
 # pulse_multiplier_seq about 70 s, output_pacer_sum about 7 min): the sat engine proves the first
 # two in make test; `make formal` runs all of them with both engines.
-SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier rephase_div)
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier rephase_div error_map)
 SMT_SOLVER="${SMT_SOLVER:-z3}"
 smt_spec() {
     case "$1" in
@@ -42,6 +42,7 @@ smt_spec() {
     rephase)              echo "1|yes" ;;
     rephase_div)          echo "1|no" ;;
     rephase_adj)          echo "1|yes" ;;
+    error_map)            echo "1|yes" ;;
     *) return 1 ;;
     esac
 }
@@ -63,6 +64,7 @@ proof_spec() {
     rephase_adj)       echo "rephase|-DFORMAL_ADJ rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 1" ;;
     rephase_div)       echo "fv_rephase_div|formal/fv_bresenham.v formal/fv_rephase_div.v|-seq 1" ;;
     output_pacer_sum)  echo "fv_output_pacer|-DFORMAL_SUM output_pacer.v formal/fv_output_pacer.v|-tempinduct -maxsteps 8" ;;
+    error_map)         echo "error_map|error_map.v|-tempinduct -maxsteps 2" ;;
     *) return 1 ;;
     esac
 }
@@ -149,6 +151,9 @@ MUTATIONS=(
   "rep_adj_carry|rephase.v|rephase_adj|s/                    t_d   = t_pk;/                    t_d   = t_pd;/"
   "rep_div_carry|formal/fv_bresenham.v|rephase_div|s/wire        cy  = rup >= {1'b0, i_per};/wire        cy  = rup > {1'b0, i_per};/"
   "rep_div_int|formal/fv_bresenham_int.smt2|rephase_div|s/(ite (< r d) (- (+ r P) d) (- r d))))/(ite (<= r d) (- (+ r P) d) (- r d))))/"
+  "em_off_gate|error_map.v|error_map|s/g_corr <= m_act ? g_x\[F+W_C-1:F\] : {W_C{1'b0}};/g_corr <= g_x[F+W_C-1:F];/"
+  "em_map_en|error_map.v|error_map|s/a_act <= i_map_en \&\& i_homed \&\& geom_ok;/a_act <= i_homed \&\& geom_ok;/"
+  "em_delta_sign|error_map.v|error_map|s/delta_q   <= {g_corr\[W_C-1\], g_corr} - {corr_q\[W_C-1\], corr_q};/delta_q   <= {g_corr[W_C-1], g_corr} - {1'b0, corr_q};/"
   "op_carry2_zero|output_pacer.v|output_pacer|s/cq_two ? hi_m2 : cq_one/cq_two ? hi_z : cq_one/"
 )
 
