@@ -129,9 +129,14 @@ module input_filter #(
     reg f_init_if;
     initial f_init_if = 1'b0;
     always @(posedge i_clk) if (i_rst) f_init_if <= 1'b1;
+    // c2 = cnt + 2 stays in [2, 2^W_CNT]: it counts only while !ready, and !ready says that the
+    // last count left it below N <= 2^W_CNT - 1; before the first sample it holds its reset value
+    localparam [W_CNT:0] C2_MAX = {1'b1, {W_CNT{1'b0}}};   // 2^W_CNT
     always @* if (f_init_if) begin
         assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
-        assert(c2_q >= C2_ZERO);     // c2 = cnt + 2
+        assert(c2_q >= C2_ZERO && c2_q <= C2_MAX);
+        if (!valid_q) assert(c2_q == C2_ZERO);
+        if (!ready_q) assert(c2_q < C2_MAX);
     end
 `endif
 
