@@ -52,9 +52,9 @@ FUZZ_SECONDS ?= 300
 # Yosys' SAT engine (the default list and output_pacer_sum is left to z3) and yosys-smtbmc + z3.
 formal: deps
 	bash scripts/formal.sh
-	bash scripts/formal.sh rephase_adj
+	bash scripts/formal.sh output_pacer_sum
 	bash scripts/formal.sh --engine smtbmc quad_decoder quad_decoder_pins output_pacer pulse_multiplier \
-	    dds_sincos pulse_multiplier_seq output_pacer_sum rephase rephase_div
+	    pulse_multiplier_mul dds_sincos pulse_multiplier_seq output_pacer_sum rephase rephase_adj rephase_div error_map
 
 fuzz: deps
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh long $(BUILD_DIR)/fuzz

@@ -15,8 +15,9 @@
 // stage 4 comp and delta = comp_int - comp. comp/delta of call t are those of the step of call
 // t - L_MUL (L_MUL = 3).
 //
-// Widths (pulse_multiplier_cfg): N 32, R 37 unsigned, dR 38 signed, acc/T/P 70, lo 32, hi 38,
-// serial partial product 39, dOFF 65 (two 33-bit halves), T additions in 18-bit quarters.
+// Widths (pulse_multiplier_cfg): N 32, R 37 unsigned, dR 38 signed (two halves), acc/T/P 70,
+// lo 32, hi 38, serial partial product 39, dOFF 65 (sign-extended to 70), dOFF and the T
+// additions in 18-bit quarters.
 #ifndef LASERAX_HLS_PULSE_MULTIPLIER_H
 #define LASERAX_HLS_PULSE_MULTIPLIER_H
 
@@ -35,20 +36,21 @@ struct pulse_multiplier_cfg {
     static constexpr int W_HI = W_ACC - R_FRAC;               // 38, integer part of acc and T
     static constexpr int W_DRATIO = W_RATIO + 1;              // 38, R' - R, signed
     static constexpr int W_PP = W_DRATIO + 1;                 // 39, serial partial product
-    static constexpr int W_DOFF = W_OFFSET + 1;               // 65, OFF' - OFF, signed
-    static constexpr int W_DOFF_H = (W_DOFF + 1) / 2;         // 33, halves of the dOFF subtraction
+    static constexpr int W_DRL = 20;                          // low half of the dR subtraction
     static constexpr int N_TQ = 4;                            // T additions in four quarters
     static constexpr int W_TQ = (W_ACC + N_TQ - 1) / N_TQ;    // 18 bits (the last 16)
     static constexpr int W_INC = W_HI + 1;                    // 39, increment of hi per call
     static constexpr int K_REBASE = 40;                       // calls from a start to the replaced T
     static constexpr int L_MUL = 3;                           // extra calls of output latency
     static constexpr int MUL_STEPS = W_RAW;                   // 32 serial multiply calls
-    static constexpr int C_DOFF0 = 1, C_DOFF1 = 2;            // sequencer call numbers (cnt)
-    static constexpr int C_MUL0 = 2;                          // first multiply call (the RTL
-                                                              // registers its addend in call 1)
-    static constexpr int C_X0 = C_DOFF1 + 1;                  // 3..6: X = T + dOFF, by quarters
-    static constexpr int C_ADD0 = C_MUL0 + MUL_STEPS;         // 34..37: T_new = X + P, by quarters
-    static constexpr int C_ADD3 = C_ADD0 + N_TQ - 1;          // 37
+    // sequencer call numbers (cnt = calls since the start)
+    static constexpr int C_DR0 = 1, C_DR1 = 2;                // dR halves (N0 taken in C_DR0)
+    static constexpr int C_DOFF0 = 1;                         // 1..4: dOFF = OFF' - OFF_old, by quarters
+    static constexpr int C_MUL0 = C_DR1 + 2;                  // 4: first multiply call (the RTL
+                                                              // registers its addend in call 3)
+    static constexpr int C_X0 = C_DOFF0 + 1;                  // 2..5: X = T + dOFF, by quarters
+    static constexpr int C_ADD0 = C_MUL0 + MUL_STEPS;         // 36..39: T_new = X + P, by quarters
+    static constexpr int C_ADD3 = C_ADD0 + N_TQ - 1;          // 39
     static constexpr int W_CNT = clog2p1(K_REBASE);           // 6
     static constexpr long long N_MAX = (1LL << (W_RAW - 1)) - 1;  // ends of the raw count
     static constexpr long long N_MIN = -(1LL << (W_RAW - 1));
@@ -58,7 +60,8 @@ struct pulse_multiplier_cfg {
     using inc_t = sint<W_INC>;
     using dratio_t = sint<W_DRATIO>;
     using pp_t = sint<W_PP>;
-    using doffh_t = uint<W_DOFF_H>;
+    using drl_t = uint<W_DRL>;
+    using drh_t = uint<W_DRATIO - W_DRL>;
     using tq_t = uint<W_TQ>;
     using cnt_t = uint<W_CNT>;
     using nwide_t = sint<W_RAW + 1>;   // N + step before the wrap
@@ -104,9 +107,10 @@ public:
         dr_ = 0;
         pp_ = 0;
         pl_ = 0;
+        r_old_ = 0;
+        drc_ = 0;
         off_old_ = 0;
-        doff_lo_ = 0;
-        doff_hi_ = 0;
+        doff_ = 0;
         dcy_ = 0;
         x_ = 0;
         y_ = 0;
@@ -171,7 +175,7 @@ public:
         if (wrap) {
             // N' = N + step -/+ 2^32: the integer part moves by -/+ R more (R << 32 in Q.32); the
             // two increments were formed when the ratio was loaded, so this is a mux
-            inc_next = (step > 0) ? inc_wp_ : inc_wn_;
+            inc_next = (step > 0) ? inc_wp_ : cfg::inc_t(~inc_wp_);  // ~(R_int - R) = ~R_int + R
         }
 
         // ---- re-base sequencer: a running one (T applied in its last call), then a start -----
@@ -181,8 +185,9 @@ public:
         if (busy_) sequencer_step(t_lo_next, t_hi_next);
         const bool start = !busy_ && pend_;
         if (start) {
-            n0_ = n_next;  // N after this call's step, which still counted at the old ratio
-            dr_ = cfg::dratio_t(cfg::dratio_t(ratio) - cfg::dratio_t(r_use_));
+            // N0 (N after this call's step, which still counts at the old ratio) and dR are
+            // taken from registers in the next calls (sequencer_step)
+            r_old_ = r_use_;
             off_old_ = off_tgt_;
             pp_ = 0;
             pl_ = 0;
@@ -213,20 +218,22 @@ public:
     }
 
 private:
-    // R_int - R and ~R_int + R: the increments of the integer part at a wrap of N (step +1 / -1)
+    // R_int - R: the increment of the integer part at a wrap of N with step +1 (its inversion
+    // ~R_int + R is the one of step -1)
     void load_wrap_increments() {
         const cfg::inc_t r_int = cfg::inc_t(r_use_ >> cfg::R_FRAC);
         const cfg::inc_t r_all = cfg::inc_t(r_use_);
         inc_wp_ = cfg::inc_t(r_int - r_all);
-        inc_wn_ = cfg::inc_t(cfg::inc_t(-r_int - 1) + r_all);
     }
 
-    // Quarter q of a + b (18 bits, carry in from quarter q - 1, carry out registered) into dst.
-    uint<cfg::W_ACC> add_quarter(uint<cfg::W_ACC> dst, uint<cfg::W_ACC> a, uint<cfg::W_ACC> b, int q) {
+    // Quarter q of a + b + cin (18 bits; cin is c0 for q = 0, else the carry out of quarter q - 1,
+    // registered in cy) into dst.
+    uint<cfg::W_ACC> add_quarter(uint<cfg::W_ACC> dst, uint<cfg::W_ACC> a, uint<cfg::W_ACC> b, int q,
+                                 cfg::carry_t& cy, cfg::carry_t c0 = 0) {
         const int sh = q * cfg::W_TQ;
         const uint<cfg::W_TQ + 1> sum =
-            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? cfg::carry_t(0) : acy_);
-        acy_ = cfg::carry_t(sum >> cfg::W_TQ);
+            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? c0 : cy);
+        cy = cfg::carry_t(sum >> cfg::W_TQ);
         const uint<cfg::W_ACC> mask = uint<cfg::W_ACC>(cfg::tq_t(~cfg::tq_t(0))) << sh;
         return (dst & ~mask) | ((uint<cfg::W_ACC>(cfg::tq_t(sum)) << sh) & mask);
     }
@@ -239,20 +246,27 @@ private:
     // One call of a running re-base (cnt_ = calls since the start call, 1..K_REBASE).
     void sequencer_step(cfg::lo_t& t_lo_next, cfg::hi_t& t_hi_next) {
         const int cnt = cnt_.to_int();
-        using doffw_t = uint<cfg::W_DOFF_H + 1>;
-        // dOFF = OFF_new - OFF_old (65 bits) in two 33-bit halves: low half (+1 of the negation),
-        // then high half with the registered carry.
-        const acc_t off_new_x = acc_t(off_tgt_);  // the target loaded at the start (no start while busy)
-        const acc_t off_old_x = acc_t(off_old_);
-        if (cnt == cfg::C_DOFF0) {
-            const doffw_t s = doffw_t(cfg::doffh_t(off_new_x)) + cfg::doffh_t(~cfg::doffh_t(off_old_x)) + 1;
-            doff_lo_ = cfg::doffh_t(s);
-            dcy_ = cfg::carry_t(s >> cfg::W_DOFF_H);
-        } else if (cnt == cfg::C_DOFF1) {
-            const cfg::doffh_t a = cfg::doffh_t(off_new_x >> cfg::W_DOFF_H);
-            const cfg::doffh_t b = cfg::doffh_t(~cfg::doffh_t(off_old_x >> cfg::W_DOFF_H));
-            doff_hi_ = cfg::doffh_t(doffw_t(a) + b + dcy_);
+        // (compositions in an unsigned W_ACC: two's complement bit patterns, no signed shifts)
+        using uacc_t = uint<cfg::W_ACC>;
+        // the call after the start: N0 = N(start) is the register N now; dR = R' - R_old (38
+        // bits) in two halves from registers, the low half's carry registered
+        if (cnt == cfg::C_DR0) {
+            n0_ = n_;
+            const uint<cfg::W_DRL + 1> s =
+                uint<cfg::W_DRL + 1>(cfg::drl_t(r_use_)) + cfg::drl_t(~cfg::drl_t(r_old_)) + 1;
+            dr_ = cfg::dratio_t((uint<cfg::W_DRATIO>(dr_) & ~uint<cfg::W_DRATIO>(cfg::drl_t(~cfg::drl_t(0)))) |
+                                uint<cfg::W_DRATIO>(cfg::drl_t(s)));
+            drc_ = cfg::carry_t(s >> cfg::W_DRL);
+        } else if (cnt == cfg::C_DR1) {
+            const cfg::drh_t h = cfg::drh_t(cfg::drh_t(uint<cfg::W_DRATIO>(r_use_) >> cfg::W_DRL) +
+                                            cfg::drh_t(~cfg::drh_t(uint<cfg::W_DRATIO>(r_old_) >> cfg::W_DRL)) + drc_);
+            dr_ = cfg::dratio_t((uint<cfg::W_DRATIO>(h) << cfg::W_DRL) |
+                                uint<cfg::W_DRATIO>(cfg::drl_t(uint<cfg::W_DRATIO>(dr_))));
         }
+        // dOFF = OFF' - OFF_old (sign-extended to W_ACC: OFF' + ~OFF_old + 1) by quarters, each a
+        // call ahead of the X quarter that reads it
+        if (cnt >= cfg::C_DOFF0 && cnt < cfg::C_DOFF0 + cfg::N_TQ)
+            doff_ = add_quarter(doff_, uacc_t(acc_t(off_tgt_)), ~uacc_t(acc_t(off_old_)), cnt - cfg::C_DOFF0, dcy_, 1);
         // serial signed multiply P = N0 * dR: bit i of N0 per call, the sign bit subtracts
         if (cnt >= cfg::C_MUL0 && cnt < cfg::C_MUL0 + cfg::MUL_STEPS) {
             const int i = cnt - cfg::C_MUL0;
@@ -264,15 +278,12 @@ private:
             pl_ = cfg::lo_t((pl_ >> 1) | (cfg::lo_t(sum & 1) << (cfg::R_FRAC - 1)));
             pp_ = cfg::pp_t(sum >> 1);  // arithmetic shift
         }
-        // (compositions in an unsigned W_ACC: two's complement bit patterns, no signed shifts)
-        using uacc_t = uint<cfg::W_ACC>;
         const uacc_t t_x = (uacc_t(t_hi_) << cfg::R_FRAC) | uacc_t(t_lo_);
         const uacc_t p_x = (uacc_t(pp_) << cfg::R_FRAC) | uacc_t(pl_);
-        const uacc_t d_x = (uacc_t(sint<cfg::W_DOFF_H>(doff_hi_)) << cfg::W_DOFF_H) | uacc_t(doff_lo_);
         // X = T + dOFF (calls C_X0..), then T_new = X + P (calls C_ADD0..), one 18-bit quarter
         // per call with a registered carry
-        if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ) x_ = add_quarter(x_, t_x, d_x, cnt - cfg::C_X0);
-        if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3) y_ = add_quarter(y_, x_, p_x, cnt - cfg::C_ADD0);
+        if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ) x_ = add_quarter(x_, t_x, doff_, cnt - cfg::C_X0, acy_);
+        if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3) y_ = add_quarter(y_, x_, p_x, cnt - cfg::C_ADD0, acy_);
         if (cnt == cfg::K_REBASE) {
             const uacc_t tn = y_;
             t_lo_next = cfg::lo_t(tn);
@@ -291,7 +302,7 @@ private:
     cfg::lo_t lo_;
     cfg::carry_t c_;
     cfg::inc_t inc_;
-    cfg::inc_t inc_wp_, inc_wn_;  // increments at a wrap of N, formed when the ratio is loaded
+    cfg::inc_t inc_wp_;  // increment at a wrap of N with step +1, formed when the ratio is loaded
     // stages 2..4
     cfg::hi_t hi_;
     cfg::carry_t c2_;
@@ -305,10 +316,12 @@ private:
     cfg::cnt_t cnt_;
     raw_t n0_;
     cfg::dratio_t dr_;
+    ratio_t r_old_;        // the target ratio before the start
+    cfg::carry_t drc_;     // carry of the low dR half
     cfg::pp_t pp_;
     cfg::lo_t pl_;
     offset_t off_old_;
-    cfg::doffh_t doff_lo_, doff_hi_;
+    uint<cfg::W_ACC> doff_;  // OFF' - OFF_old, sign-extended (built a quarter per call)
     cfg::carry_t dcy_;
     uint<cfg::W_ACC> x_, y_;  // T + dOFF, then T_new (built a quarter per call)
     cfg::carry_t acy_;

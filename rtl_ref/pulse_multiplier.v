@@ -11,11 +11,12 @@
 //   stage 3  ci = hi + T_hi_d + c2   (= floor(V / 2^32) of the step three calls back)
 //   stage 4  comp = ci, delta = ci - comp
 // A ratio / offset change is seen by a registered 101-bit compare (pend); the next idle call
-// starts a re-base: the target pair is loaded (steps from then on count at the new ratio),
-// N0 = N' and dR = R' - R are snapshot, a serial shift-and-add multiplier forms P = N0 * dR over
-// 32 calls (39-bit adder, addend registered a call ahead), dOFF = OFF' - OFF in two 33-bit
-// halves, X = T + dOFF and T_new = X + P in 18-bit quarters, and T = T_new K_REBASE = 40 calls
-// after the start.
+// starts a re-base: the target pair is loaded (steps from then on count at the new ratio) and the
+// old one kept; from registers, in the calls after: N0 = N (call 1), dR = R' - R in two halves
+// (calls 1, 2), dOFF = OFF' - OFF and X = T + dOFF in 18-bit quarters (calls 1..4, 2..5), a
+// serial shift-and-add multiplier P = N0 * dR (calls 4..35: 39-bit adder, addend registered a
+// call ahead), T_new = X + P in quarters (calls 36..39), and T = T_new K_REBASE = 40 calls after
+// the start.
 // No multiplier and no adder wider than 39 bits anywhere. Latency: comp/delta of call t are
 // those of the step of call t - 3.
 // (The preset port of the C++ model is a testbench aid and is not part of this RTL.)
@@ -42,14 +43,14 @@ module pulse_multiplier (
     localparam integer W_HI     = W_ACC - R_FRAC;        // 38 (= W_POS)
     localparam integer W_DRATIO = W_RATIO + 1;           // 38
     localparam integer W_PP     = W_DRATIO + 1;          // 39
-    localparam integer W_DOFF_H = 33;                    // halves of the 65-bit dOFF
     localparam integer W_TQ     = 18;                    // quarters of the T additions
     localparam integer W_INC    = W_HI + 1;              // 39
     localparam integer K_REBASE = 40;
-    localparam integer C_DOFF0  = 1, C_DOFF1 = 2;
-    localparam integer C_MUL0   = 2, MUL_STEPS = W_RAW;  // call 1 registers the first addend
-    localparam integer C_ADD0   = C_MUL0 + MUL_STEPS;    // 34..37: T_new = X + P
-    localparam integer C_X0     = C_DOFF1 + 1;           // 3..6: X = T + dOFF
+    localparam integer C_DR0    = 1, C_DR1 = 2;          // the two dR halves (N0 taken in C_DR0)
+    localparam integer C_DOFF0  = 1;                     // 1..4: dOFF = OFF' - OFF_old, by quarters
+    localparam integer C_MUL0   = 4, MUL_STEPS = W_RAW;  // call 3 registers the first addend
+    localparam integer C_ADD0   = C_MUL0 + MUL_STEPS;    // 36..39: T_new = X + P
+    localparam integer C_X0     = C_DOFF0 + 1;           // 2..5: X = T + dOFF, a quarter behind
     localparam integer W_CNT    = 6;
 
     // ---- registers ----------------------------------------------------------------------------
@@ -61,7 +62,7 @@ module pulse_multiplier (
     reg        [R_FRAC-1:0]   lo_q;
     reg                       c_q;
     reg signed [W_INC-1:0]    inc_q;
-    reg signed [W_INC-1:0]    wrap_pos_q, wrap_neg_q;  // R_int - R and ~R_int + R of the target ratio
+    reg signed [W_INC-1:0]    wrap_pos_q;  // R_int - R of the target ratio (~R_int + R is its inversion)
     // stages 2..4
     reg signed [W_HI-1:0]     hi_q;
     reg                       c2_q;
@@ -74,18 +75,16 @@ module pulse_multiplier (
     // re-base sequencer
     reg                       busy_q, pend_q;
     reg        [W_CNT-1:0]    cnt_q;
-    reg                       f_doff0_q, f_doff1_q, f_pre0_q, f_mul_q, f_mul_pre_q;  // cnt decoded
-    reg        [W_PP-1:0]     addend_q;    // addend of the next multiply step
-    reg                       cin_q;
+    reg                       f_dr0_q, f_dr1_q, f_pre0_q, f_mul_q, f_mul_pre_q;  // cnt decoded
     reg        [3:0]          f_x_q, f_y_q;   // quarter of X = T + dOFF / of T_new = X + P
     reg                       f_last_q;
-    reg        [W_RAW-1:0]    n0_q;        // shifts right, one bit per multiply call
     reg signed [W_DRATIO-1:0] dr_q;
-    reg signed [W_PP-1:0]     pp_q;
-    reg        [R_FRAC-1:0]   pl_q;
+    reg        [W_RATIO-1:0]  r_old_q;     // the target ratio before the start
+    reg                       drc_q;       // carry of the low dR half
     reg signed [W_OFFSET-1:0] off_old_q;
-    reg        [W_DOFF_H-1:0] doff_lo_q, doff_hi_q;
-    reg                       dcy_q;
+    reg        [W_ACC-1:0]    doff_q;      // OFF' - OFF_old, sign-extended
+    reg        [2:0]          dc_q;        // carry out of each dOFF quarter
+    reg        [3:0]          f_d_q;       // quarter of dOFF
     reg        [W_ACC-1:0]    x_q, y_q;
     reg        [2:0]          xc_q, yc_q;  // carry out of each quarter, its own flip-flop
 
@@ -133,7 +132,7 @@ module pulse_multiplier (
     // values precomputed when the ratio was loaded (R_int - R, ~R_int + R): a mux, no adder
     wire signed [W_INC-1:0] r_int_x = $signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]});
     wire signed [W_INC-1:0] inc_d = step_pos ? (n_wrap ? wrap_pos_q : r_int_x) :
-                                    step_neg ? (n_wrap ? wrap_neg_q : ~r_int_x) : {W_INC{1'b0}};
+                                    step_neg ? (n_wrap ? ~wrap_pos_q : ~r_int_x) : {W_INC{1'b0}};
     wire signed [W_INC-1:0] in_int_x = $signed({{(W_INC-R_INT){1'b0}}, i_ratio[W_RATIO-1:R_FRAC]});
     wire signed [W_INC-1:0] in_all_x = $signed({{(W_INC-W_RATIO){1'b0}}, i_ratio});
 
@@ -157,26 +156,32 @@ module pulse_multiplier (
     wire pend_d = !start && ((i_ratio != r_use_q) || (i_comp_offset != off_tgt_q));
     wire             busy_d = start || (busy_q && !last);
     wire [W_CNT-1:0] cnt_d  = start ? {{(W_CNT-1){1'b0}}, 1'b1} : (busy_q && !last) ? cnt_q + 1'b1 : {W_CNT{1'b0}};
-    wire mul_on = f_mul_q;
-    // The addend of multiply step i (bit i of N0 times dR; the sign bit subtracts: + ~dR + 1) is
-    // registered one call ahead (addend_q, cin_q), so the 39-bit adder has flip-flop operands.
-    wire signed [W_PP-1:0] dr_x = {dr_q[W_DRATIO-1], dr_q};
-    wire [38:0] dr_sum = add39_cs({2'b00, i_ratio}, ~{2'b00, r_use_q}, 1'b1);  // R_in - R_tgt
-    wire signed [W_DRATIO-1:0] dr_d = dr_sum[W_DRATIO-1:0];
-    wire        [W_PP-1:0] addend_next = !n0_q[1] ? {W_PP{1'b0}} : f_mul_pre_q ? ~dr_x : dr_x;
-    wire signed [W_PP-1:0] pp_sum = pp_q + addend_q + {{(W_PP-1){1'b0}}, cin_q};
-    // dOFF = OFF_tgt - OFF_old (65 bits as 66) in two halves
-    wire [69:0] off_new_x = {{6{off_tgt_q[W_OFFSET-1]}}, off_tgt_q};
-    wire [69:0] off_old_x = {{6{off_old_q[W_OFFSET-1]}}, off_old_q};
-    wire [38:0] doff0_x = add39_cs({6'd0, off_new_x[W_DOFF_H-1:0]}, {6'd0, ~off_old_x[W_DOFF_H-1:0]}, 1'b1);
-    wire [38:0] doff1_x = add39_cs({6'd0, off_new_x[2*W_DOFF_H-1:W_DOFF_H]}, {6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, dcy_q);
-    wire [W_DOFF_H:0]   doff0_sum = doff0_x[W_DOFF_H:0];
-    wire [W_DOFF_H-1:0] doff1_sum = doff1_x[W_DOFF_H-1:0];
-    // X = T + dOFF (calls 3..6), then T_new = X + P (calls 34..37): one 18-bit quarter per call,
+    // dR = R_tgt - R_old (38 bits) from registers, in two halves (calls C_DOFF0, C_DOFF1), each
+    // one plain chain with a registered carry
+    localparam integer W_DRL = 20;
+    wire [W_DRL:0]            dr_lo = {1'b0, r_use_q[W_DRL-1:0]} + {1'b0, ~r_old_q[W_DRL-1:0]} + 1'b1;
+    wire [W_DRATIO-W_DRL-1:0] dr_hi = {1'b0, r_use_q[W_RATIO-1:W_DRL]} + ~{1'b0, r_old_q[W_RATIO-1:W_DRL]} +
+                                      {{(W_DRATIO-W_DRL-1){1'b0}}, drc_q};
+    // P = N0 * dR: the serial multiplier (module pulse_multiplier_smul below), driven by the
+    // decoded flags: P cleared by a start, N0 loaded in call C_DR0, the addend of step 0 in call
+    // C_MUL0 - 1, the steps in calls C_MUL0 .. C_MUL0 + 31 (the last one subtracts)
+    wire [W_ACC-1:0] p_x;
+    pulse_multiplier_smul #(.WA(W_RAW), .WB(W_DRATIO)) u_smul (
+        .i_clk(i_clk), .i_rst(i_rst), .i_clr(start), .i_load(busy_q && f_dr0_q), .i_a(n_q),
+        .i_pre(busy_q && f_pre0_q), .i_step(busy_q && f_mul_q), .i_sign_nx(f_mul_pre_q), .i_b(dr_q),
+        .o_p(p_x));
+    // dOFF = OFF_tgt - OFF_old (sign-extended to 70 bits: OFF_tgt + ~OFF_old + 1) by 18-bit
+    // quarters (calls 1..4), each quarter a call ahead of the X quarter that reads it
+    wire [W_ACC-1:0] off_new_x = {{(W_ACC-W_OFFSET){off_tgt_q[W_OFFSET-1]}}, off_tgt_q};
+    wire [W_ACC-1:0] off_nld_x = ~{{(W_ACC-W_OFFSET){off_old_q[W_OFFSET-1]}}, off_old_q};
+    wire [W_TQ:0]    ds0 = {1'b0, off_new_x[17:0]}  + {1'b0, off_nld_x[17:0]} + {{W_TQ{1'b0}}, 1'b1};
+    wire [W_TQ:0]    ds1 = {1'b0, off_new_x[35:18]} + {1'b0, off_nld_x[35:18]} + {{W_TQ{1'b0}}, dc_q[0]};
+    wire [W_TQ:0]    ds2 = {1'b0, off_new_x[53:36]} + {1'b0, off_nld_x[53:36]} + {{W_TQ{1'b0}}, dc_q[1]};
+    wire [15:0]      ds3 = off_new_x[69:54] + off_nld_x[69:54] + {15'd0, dc_q[2]};
+    // X = T + dOFF (calls 2..5), then T_new = X + P (calls 36..39): one 18-bit quarter per call,
     // each quarter its own adder (operands straight from flip-flops), carry registered
     wire [W_ACC-1:0] t_x = {t_hi_q, t_lo_q};
-    wire [W_ACC-1:0] p_x = {pp_q[W_HI-1:0], pl_q};
-    wire [W_ACC-1:0] d_x = {{(W_ACC-2*W_DOFF_H){doff_hi_q[W_DOFF_H-1]}}, doff_hi_q, doff_lo_q};
+    wire [W_ACC-1:0] d_x = doff_q;
     wire [W_TQ:0]    xs0 = {1'b0, t_x[17:0]}  + {1'b0, d_x[17:0]};
     wire [W_TQ:0]    xs1 = {1'b0, t_x[35:18]} + {1'b0, d_x[35:18]} + {{W_TQ{1'b0}}, xc_q[0]};
     wire [W_TQ:0]    xs2 = {1'b0, t_x[53:36]} + {1'b0, d_x[53:36]} + {{W_TQ{1'b0}}, xc_q[1]};
@@ -189,14 +194,13 @@ module pulse_multiplier (
     always @(posedge i_clk) begin
         if (i_rst) begin
             n_q <= 0; nmax_q <= 1'b0; nmin_q <= 1'b0; r_use_q <= 0; off_tgt_q <= 0; lo_q <= 0; c_q <= 1'b0; inc_q <= 0;
-            wrap_pos_q <= 0; wrap_neg_q <= {W_INC{1'b1}};  // the values for R = 0
+            wrap_pos_q <= 0;  // the value for R = 0
             hi_q <= 0; c2_q <= 1'b0; ci_q <= 0; comp_q <= 0; delta_q <= 0;
             t_lo_q <= 0; t_hi_q <= 0; t_hi_d_q <= 0;
             busy_q <= 1'b0; pend_q <= 1'b0; cnt_q <= 0;
-            f_doff0_q <= 1'b0; f_doff1_q <= 1'b0; f_mul_q <= 1'b0; f_mul_pre_q <= 1'b0; f_pre0_q <= 1'b0;
-            addend_q <= 0; cin_q <= 1'b0;
-            f_x_q <= 4'd0; f_y_q <= 4'd0; f_last_q <= 1'b0; n0_q <= 0; dr_q <= 0; pp_q <= 0; pl_q <= 0;
-            off_old_q <= 0; doff_lo_q <= 0; doff_hi_q <= 0; dcy_q <= 1'b0;
+            f_dr0_q <= 1'b0; f_dr1_q <= 1'b0; f_mul_q <= 1'b0; f_mul_pre_q <= 1'b0; f_pre0_q <= 1'b0;
+            f_x_q <= 4'd0; f_y_q <= 4'd0; f_last_q <= 1'b0; dr_q <= 0; r_old_q <= 0; drc_q <= 1'b0;
+            off_old_q <= 0; doff_q <= 0; dc_q <= 3'd0; f_d_q <= 4'd0;
             x_q <= 0; y_q <= 0; xc_q <= 3'd0; yc_q <= 3'd0;
         end else begin
             // stage 4, 3, 2
@@ -215,22 +219,15 @@ module pulse_multiplier (
             inc_q <= inc_d;
             // running re-base
             if (busy_q) begin
-                if (f_doff0_q) begin
-                    doff_lo_q <= doff0_sum[W_DOFF_H-1:0];
-                    dcy_q     <= doff0_sum[W_DOFF_H];
+                if (f_d_q[0]) begin doff_q[17:0]  <= ds0[W_TQ-1:0]; dc_q[0] <= ds0[W_TQ]; end
+                if (f_d_q[1]) begin doff_q[35:18] <= ds1[W_TQ-1:0]; dc_q[1] <= ds1[W_TQ]; end
+                if (f_d_q[2]) begin doff_q[53:36] <= ds2[W_TQ-1:0]; dc_q[2] <= ds2[W_TQ]; end
+                if (f_d_q[3])       doff_q[69:54] <= ds3;
+                if (f_dr0_q) begin  // the call after the start (N0 = N(s) is the register N now)
+                    dr_q[W_DRL-1:0] <= dr_lo[W_DRL-1:0];
+                    drc_q           <= dr_lo[W_DRL];
                 end
-                if (f_doff1_q) doff_hi_q <= doff1_sum;
-                if (f_pre0_q) begin  // addend of step 0 (bit 0 of N0 is never the sign bit)
-                    addend_q <= n0_q[0] ? dr_x : {W_PP{1'b0}};
-                    cin_q    <= 1'b0;
-                end
-                if (mul_on) begin
-                    addend_q <= addend_next;
-                    cin_q    <= n0_q[1] & f_mul_pre_q;
-                    pp_q <= pp_sum >>> 1;
-                    pl_q <= {pp_sum[0], pl_q[R_FRAC-1:1]};
-                    n0_q <= n0_q >> 1;
-                end
+                if (f_dr1_q) dr_q[W_DRATIO-1:W_DRL] <= dr_hi;
                 if (f_x_q[0]) begin x_q[17:0]  <= xs0[W_TQ-1:0]; xc_q[0] <= xs0[W_TQ]; end
                 if (f_x_q[1]) begin x_q[35:18] <= xs1[W_TQ-1:0]; xc_q[1] <= xs1[W_TQ]; end
                 if (f_x_q[2]) begin x_q[53:36] <= xs2[W_TQ-1:0]; xc_q[2] <= xs2[W_TQ]; end
@@ -246,8 +243,12 @@ module pulse_multiplier (
             end
             busy_q       <= busy_d;
             cnt_q        <= cnt_d;
-            f_doff0_q    <= busy_d && cnt_d == C_DOFF0;
-            f_doff1_q    <= busy_d && cnt_d == C_DOFF1;
+            f_dr0_q      <= busy_d && cnt_d == C_DR0;
+            f_dr1_q      <= busy_d && cnt_d == C_DR1;
+            f_d_q[0]     <= busy_d && cnt_d == C_DOFF0;
+            f_d_q[1]     <= busy_d && cnt_d == C_DOFF0 + 1;
+            f_d_q[2]     <= busy_d && cnt_d == C_DOFF0 + 2;
+            f_d_q[3]     <= busy_d && cnt_d == C_DOFF0 + 3;
             f_pre0_q     <= busy_d && cnt_d == C_MUL0 - 1;
             f_mul_q      <= busy_d && cnt_d >= C_MUL0 && cnt_d < C_MUL0 + MUL_STEPS;
             f_mul_pre_q  <= busy_d && cnt_d == C_MUL0 + MUL_STEPS - 2;  // next step is the sign bit
@@ -262,14 +263,10 @@ module pulse_multiplier (
             f_last_q     <= busy_d && cnt_d == K_REBASE;
             // start (after the running one: a start in its last call reloads the sequencer)
             if (start) begin
-                n0_q      <= n_next;
-                dr_q      <= dr_d;
+                r_old_q   <= r_use_q;
                 off_old_q <= off_tgt_q;
-                pp_q      <= 0;
-                pl_q      <= 0;
                 r_use_q   <= i_ratio;
                 wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b1);   // R_int - R
-                wrap_neg_q <= add39_cs(~in_int_x, in_all_x, 1'b0);   // ~R_int + R
                 off_tgt_q <= i_comp_offset;
             end
             pend_q <= pend_d;
@@ -299,7 +296,6 @@ module pulse_multiplier (
     reg [W_ACC-1:0]   f_tp;                  // T before the last edge
     reg               f_start_p;             // the last edge was a start
     initial f_init = 1'b0;
-    localparam integer F_NB = 8;   // N0 width of the multiplier proof
 
     wire [W_ACC-1:0] f_t    = {t_hi_q, t_lo_q};
     wire [W_ACC-1:0] f_rx   = {{(W_ACC-W_RATIO){1'b0}}, r_use_q};
@@ -313,13 +309,13 @@ module pulse_multiplier (
     wire             f_idle  = f_age >= K_REBASE - 1;    // no re-base in progress before this call
     wire             f_start = f_idle && f_pend;
     wire [W_RATIO-1:0] f_rt_n = f_start ? i_ratio : f_rt;
-    wire [7:0]       f_n_nb = f_n[7:0] + {{6{i_step[1]}}, i_step};   // N after the step, low 8 bits
     wire signed [W_OFFSET-1:0] f_ot_n = f_start ? i_comp_offset : f_ot;
 
 `ifdef FORMAL_REBASE
-    // re-base proofs (-DFORMAL_REBASE: the sequencer's additions; with -DFORMAL_MUL as well: the
-    // serial multiplier): references captured at each start (N0, R_old, OFF_old); the target pair
-    // in force is R', OFF' (r_use_q / off_tgt_q, proven equal to the Definition's target above)
+    // re-base proofs (-DFORMAL_REBASE: the sequencer's additions and the multiplier's operands
+    // and schedule; the multiplier itself is proven on its own, proof pulse_multiplier_mul):
+    // references captured at each start (N0, R_old, OFF_old); the target pair in force is R', OFF'
+    // (r_use_q / off_tgt_q, proven equal to the Definition's target above)
     reg signed [W_RAW-1:0]    f_bn0;
     reg [W_RATIO-1:0]         f_bro;
     reg signed [W_OFFSET-1:0] f_boo;
@@ -329,44 +325,17 @@ module pulse_multiplier (
     wire signed [W_OFFSET:0]   f_bdo = $signed({off_tgt_q[W_OFFSET-1], off_tgt_q}) -
                                        $signed({f_boo[W_OFFSET-1], f_boo});
     wire [W_ACC-1:0] f_bdoff = {{(W_ACC-W_OFFSET-1){f_bdo[W_OFFSET]}}, f_bdo};
-`ifdef FORMAL_MUL
-    wire [71:0]      f_dr72  = {{(72-W_DRATIO){f_bdr[W_DRATIO-1]}}, f_bdr};
-    wire             f_neg   = f_bn0[W_RAW-1];
-    wire [71:0]      f_z     = {{(72-W_PP-R_FRAC){pp_q[W_PP-1]}}, pp_q, pl_q};
-    // multiply steps done after this count: 0 up to cnt 2, cnt - 2, 32 from cnt 34
-    wire [5:0]       f_i     = !busy_q ? 6'd0 : (cnt_q <= 2) ? 6'd0 : (cnt_q >= 34) ? 6'd32 : cnt_q - 6'd2;
-    // L_j = sum over k < j of bit k of N0 times dR * 2^k (j <= F_NB-1), incrementally;
-    // P = N0 * dR = L_(F_NB-1) - sign * dR * 2^(F_NB-1). After i multiply steps {pp, pl} is
-    //   L_i * 2^(32-i)                          for i <= F_NB-1,
-    //   P * 2^(32-i) + sign * dR * 2^32          for F_NB-1 < i < 32 (the sign bits added so far),
-    //   P                                       for i = 32 (the sign bit subtracted).
-    reg  [72*F_NB-1:0] f_lv;
-    reg  [71:0]      f_zexp;
-    integer          f_j;
-    always @* begin
-        f_lv[71:0] = 72'd0;
-        for (f_j = 1; f_j < F_NB; f_j = f_j + 1)
-            f_lv[f_j*72 +: 72] = f_lv[(f_j-1)*72 +: 72] + (f_bn0[f_j-1] ? (f_dr72 << (f_j - 1)) : 72'd0);
-    end
-    wire [71:0]      f_pall = f_lv[(F_NB-1)*72 +: 72] - (f_neg ? (f_dr72 << (F_NB - 1)) : 72'd0);
-    always @* begin
-        f_zexp = f_pall;
-        for (f_j = 0; f_j < 32; f_j = f_j + 1)
-            if (f_i == f_j) f_zexp = (f_j < F_NB) ? (f_lv[((f_j < F_NB) ? f_j : 0)*72 +: 72] << (32 - f_j))
-                                                  : (f_pall << (32 - f_j));
-    end
-    wire             f_mul_ok = f_z == f_zexp + ((f_neg && f_i >= F_NB && f_i < 32) ? (f_dr72 << 32) : 72'd0);
-    wire [W_ACC-1:0] f_bprod = f_pall[W_ACC-1:0];            // N0 * dR
-`endif
     wire [W_ACC-1:0] f_xs  = f_t + f_bdoff;                   // X = T + dOFF
     wire [W_ACC-1:0] f_ys  = f_xs + f_px;
     // carries out of the low 18, 36, 54 bits of T + dOFF
     wire [18:0]      f_xc0 = {1'b0, f_t[17:0]} + {1'b0, f_bdoff[17:0]};
     wire [36:0]      f_xc1 = {1'b0, f_t[35:0]} + {1'b0, f_bdoff[35:0]};
     wire [54:0]      f_xc2 = {1'b0, f_t[53:0]} + {1'b0, f_bdoff[53:0]};
-    wire [33:0]      f_dl  = {1'b0, off_new_x[32:0]} + {1'b0, ~off_old_x[32:0]} + 34'd1;
-    wire [W_ACC-1:0] f_px  = {pp_q[W_HI-1:0], pl_q};
-    wire [W_PP-1:0]  f_drx = {dr_q[W_DRATIO-1], dr_q};
+    wire [W_ACC-1:0] f_dsum = off_new_x + off_nld_x + 1'b1;    // dOFF and the carries of its quarters
+    wire [18:0]      f_dc0 = {1'b0, off_new_x[17:0]} + {1'b0, off_nld_x[17:0]} + 19'd1;
+    wire [36:0]      f_dc1 = {1'b0, off_new_x[35:0]} + {1'b0, off_nld_x[35:0]} + 37'd1;
+    wire [54:0]      f_dc2 = {1'b0, off_new_x[53:0]} + {1'b0, off_nld_x[53:0]} + 55'd1;
+    wire [W_ACC-1:0] f_px  = p_x;
     always @(posedge i_clk) begin
         if (f_start && !i_rst) begin
             f_bn0 <= f_n + {{(W_RAW-2){i_step[1]}}, i_step};
@@ -426,20 +395,15 @@ module pulse_multiplier (
             // helper invariants: the precomputed wrap increments and the decoded count
             assert(wrap_pos_q == $signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) -
                                  $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
-            assert(wrap_neg_q == ~$signed({{(W_INC-R_INT){1'b0}}, r_use_q[W_RATIO-1:R_FRAC]}) +
-                                 $signed({{(W_INC-W_RATIO){1'b0}}, r_use_q}));
         end
 `ifdef FORMAL_REBASE
-`ifdef FORMAL_MUL
-        // every start has N0 (N after its step) in F_NB bits: |N0| < 2^(F_NB-1)
-        if (f_start && !i_rst) assume((f_n + {{(W_RAW-2){i_step[1]}}, i_step}) ==
-                                      {{(W_RAW-F_NB){f_n_nb[F_NB-1]}}, f_n_nb[F_NB-1:0]});
-`endif
         if (f_init) begin
             // decoded control flags (helper invariants)
             if (!busy_q) assert(cnt_q == {W_CNT{1'b0}});
-            assert(f_doff0_q == (busy_q && cnt_q == C_DOFF0) && f_pre0_q == (busy_q && cnt_q == C_MUL0 - 1));
-            assert(f_doff1_q == (busy_q && cnt_q == C_DOFF1));
+            assert(f_dr0_q == (busy_q && cnt_q == C_DR0) && f_pre0_q == (busy_q && cnt_q == C_MUL0 - 1));
+            assert(f_dr1_q == (busy_q && cnt_q == C_DR1));
+            assert(f_d_q == {busy_q && cnt_q == C_DOFF0 + 3, busy_q && cnt_q == C_DOFF0 + 2,
+                             busy_q && cnt_q == C_DOFF0 + 1, busy_q && cnt_q == C_DOFF0});
             assert(f_mul_q == (busy_q && cnt_q >= C_MUL0 && cnt_q < C_MUL0 + MUL_STEPS));
             assert(f_mul_pre_q == (busy_q && cnt_q == C_MUL0 + MUL_STEPS - 2));
             assert(f_x_q == {busy_q && cnt_q == C_X0 + 3, busy_q && cnt_q == C_X0 + 2,
@@ -448,42 +412,108 @@ module pulse_multiplier (
                              busy_q && cnt_q == C_ADD0 + 1, busy_q && cnt_q == C_ADD0});
             if (f_app_p) assert(f_t == f_yp);    // the apply call loads T_new
             if (busy_q) begin
-                assert(dr_q == f_bdr);           // dR = R' - R_old
+                assert(r_old_q == f_bro);
+                // dR = R' - R_old in two halves
+                if (cnt_q >= 2) assert(dr_q[W_DRL-1:0] == f_bdr[W_DRL-1:0] && drc_q == dr_lo[W_DRL]);
+                if (cnt_q >= 3) assert(dr_q == f_bdr);
                 assert(off_old_q == f_boo);
-                // dOFF = OFF' - OFF_old in two halves
-                if (cnt_q >= 2) assert(doff_lo_q == f_dl[32:0] && dcy_q == f_dl[33]);
-                if (cnt_q >= 3) assert({{(W_ACC-2*W_DOFF_H){doff_hi_q[W_DOFF_H-1]}}, doff_hi_q, doff_lo_q} == f_bdoff);
+                // dOFF = OFF' - OFF_old, one quarter per call
+                assert(f_dsum == f_bdoff);
+                if (cnt_q >= C_DOFF0 + 1) assert(doff_q[17:0] == f_bdoff[17:0] && dc_q[0] == f_dc0[18]);
+                if (cnt_q >= C_DOFF0 + 2) assert(doff_q[35:0] == f_bdoff[35:0] && dc_q[1] == f_dc1[36]);
+                if (cnt_q >= C_DOFF0 + 3) assert(doff_q[53:0] == f_bdoff[53:0] && dc_q[2] == f_dc2[54]);
+                if (cnt_q >= C_DOFF0 + 4) assert(doff_q == f_bdoff);
                 // X = T + dOFF, one quarter per call
-                if (cnt_q >= 4) assert(x_q[17:0] == f_xs[17:0] && xc_q[0] == f_xc0[18]);
-                if (cnt_q >= 5) assert(x_q[35:0] == f_xs[35:0] && xc_q[1] == f_xc1[36]);
-                if (cnt_q >= 6) assert(x_q[53:0] == f_xs[53:0] && xc_q[2] == f_xc2[54]);
-                if (cnt_q >= 7) assert(x_q == f_xs);
-`ifdef FORMAL_MUL
-                // the serial multiplier: after i steps {pp, pl} is the sum of the first i
-                // partial products (closed form above), N0 shifted right by i, the addend of
-                // step i registered; after the 32 steps {pp, pl} = N0 * dR
-                assert(f_bn0 == {{(W_RAW-F_NB){f_bn0[F_NB-1]}}, f_bn0[F_NB-1:0]});
-                assert(f_mul_ok);
-                assert(n0_q == ($unsigned(f_bn0) >> f_i));
-                if (cnt_q >= 34) assert(f_px == f_bprod);
-                if (cnt_q >= 2 && cnt_q <= 33)
-                    assert(addend_q == (!n0_q[0] ? {W_PP{1'b0}} : (f_i == 6'd31) ? ~f_drx : f_drx) &&
-                           cin_q == (n0_q[0] && f_i == 6'd31));
-`else
+                if (cnt_q >= C_X0 + 1) assert(x_q[17:0] == f_xs[17:0] && xc_q[0] == f_xc0[18]);
+                if (cnt_q >= C_X0 + 2) assert(x_q[35:0] == f_xs[35:0] && xc_q[1] == f_xc1[36]);
+                if (cnt_q >= C_X0 + 3) assert(x_q[53:0] == f_xs[53:0] && xc_q[2] == f_xc2[54]);
+                if (cnt_q >= C_X0 + 4) assert(x_q == f_xs);
+                // the multiplier's operands: N0 = N(s) in the call that loads it, dR held from
+                // the call of the first addend (C_MUL0 - 1) on (above: dr_q == dR from call 3)
+                if (cnt_q == C_DR0) assert(n_q == f_bn0);
                 // T_new = X + P, one quarter per call
-                if (cnt_q >= 35) assert(y_q[17:0] == f_ys[17:0] && yc_q[0] == (({1'b0, x_q[17:0]} + {1'b0, f_px[17:0]}) >> 18));
-                if (cnt_q >= 36) assert(y_q[35:0] == f_ys[35:0] && yc_q[1] == (({1'b0, x_q[35:0]} + {1'b0, f_px[35:0]}) >> 36));
-                if (cnt_q >= 37) assert(y_q[53:0] == f_ys[53:0] && yc_q[2] == (({1'b0, x_q[53:0]} + {1'b0, f_px[53:0]}) >> 54));
+                if (cnt_q >= C_ADD0 + 1) assert(y_q[17:0] == f_ys[17:0] && yc_q[0] == (({1'b0, x_q[17:0]} + {1'b0, f_px[17:0]}) >> 18));
+                if (cnt_q >= C_ADD0 + 2) assert(y_q[35:0] == f_ys[35:0] && yc_q[1] == (({1'b0, x_q[35:0]} + {1'b0, f_px[35:0]}) >> 36));
+                if (cnt_q >= C_ADD0 + 3) assert(y_q[53:0] == f_ys[53:0] && yc_q[2] == (({1'b0, x_q[53:0]} + {1'b0, f_px[53:0]}) >> 54));
                 // the re-base step: the T applied in the next call (cnt = K_REBASE) is
-                // T + (OFF' - OFF_old) + {pp, pl}  (mod 2^70), {pp, pl} = N0 * dR by FORMAL_MUL
-                if (cnt_q >= 38) assert(y_q == f_t + f_bdoff + f_px);
-`endif
+                // T + (OFF' - OFF_old) + P  (mod 2^70), P = N0 * dR (proof pulse_multiplier_mul)
+                if (cnt_q >= C_ADD0 + 4) assert(y_q == f_t + f_bdoff + f_px);
             end
         end
 `endif
     end
 `endif
 
+endmodule
+
+// pulse_multiplier_smul — the re-base's serial signed multiplier, P = A * B (A: WA bits, B: WB
+// bits, both signed; P: WA + WB bits), one bit of A per step, LSB first (DESIGN §4.3, "Hardware
+// form"). Parameterised so that a narrow instance of this same RTL can be proven (proof
+// pulse_multiplier_mul, rtl_ref/formal/fv_pm_smul.v); pulse_multiplier uses WA = 32, WB = 38.
+// Schedule (the caller's): i_clr (P = 0; in or before the i_load call), i_load (A = i_a), i_pre
+// (the addend of step 0 registered from bit 0 of A and i_b), then WA calls with i_step, i_sign_nx
+// in the second-last of them (the last step is the sign bit of A: it subtracts B); i_b held from
+// i_pre to the last step. After the last step o_p = A * B, held until the next i_clr.
+// Per step: {pp, pl} += addend * 2^WA then shifts right by one (pp: WB + 1 bits, arithmetic;
+// pl: WA bits, the product's low bits arriving at the top); the addend of the next step (0, B or
+// ~B with a carry-in of 1) is registered a call ahead, so the (WB + 1)-bit adder has flip-flop
+// operands only.
+module pulse_multiplier_smul #(
+    parameter integer WA = 32,              // A (N0), one bit per step
+    parameter integer WB = 38               // B (dR)
+) (
+    input  wire                 i_clk,
+    input  wire                 i_rst,      // synchronous, active high: everything 0
+    input  wire                 i_clr,      // P = 0
+    input  wire                 i_load,     // A = i_a
+    input  wire [WA-1:0]        i_a,
+    input  wire                 i_pre,      // register the addend of step 0
+    input  wire                 i_step,     // one multiply step
+    input  wire                 i_sign_nx,  // (with i_step) the next step is the last one
+    input  wire signed [WB-1:0] i_b,
+    output wire [WA+WB-1:0]     o_p         // {pp, pl}
+);
+    localparam integer W_PP = WB + 1;
+    generate
+        if (WA < 3 || WB < 2) begin : g_bad_width
+            pulse_multiplier_smul_PARAMETER_WA_must_be_at_least_3_WB_at_least_2 u_param_error ();
+        end
+    endgenerate
+
+    reg        [WA-1:0]   a_q;       // shifts right, one bit per step
+    reg        [W_PP-1:0] addend_q;  // addend of the next step
+    reg                   cin_q;
+    reg signed [W_PP-1:0] pp_q;
+    reg        [WA-1:0]   pl_q;
+
+    wire signed [W_PP-1:0] b_x         = {i_b[WB-1], i_b};
+    wire        [W_PP-1:0] addend_next = !a_q[1] ? {W_PP{1'b0}} : i_sign_nx ? ~b_x : b_x;
+    wire signed [W_PP-1:0] pp_sum      = pp_q + addend_q + {{(W_PP-1){1'b0}}, cin_q};
+
+    always @(posedge i_clk) begin
+        if (i_rst) begin
+            a_q <= {WA{1'b0}}; addend_q <= {W_PP{1'b0}}; cin_q <= 1'b0; pp_q <= {W_PP{1'b0}}; pl_q <= {WA{1'b0}};
+        end else begin
+            if (i_load) a_q <= i_a;
+            if (i_pre) begin                 // step 0: bit 0 of A is never the sign bit
+                addend_q <= a_q[0] ? b_x : {W_PP{1'b0}};
+                cin_q    <= 1'b0;
+            end
+            if (i_step) begin
+                addend_q <= addend_next;
+                cin_q    <= a_q[1] & i_sign_nx;
+                pp_q     <= pp_sum >>> 1;
+                pl_q     <= {pp_sum[0], pl_q[WA-1:1]};
+                a_q      <= a_q >> 1;
+            end
+            if (i_clr) begin
+                pp_q <= {W_PP{1'b0}};
+                pl_q <= {WA{1'b0}};
+            end
+        end
+    end
+
+    assign o_p = {pp_q[WB-1:0], pl_q};
 endmodule
 
 `default_nettype wire

@@ -20,15 +20,16 @@ set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 RTL="$ROOT/rtl_ref"
 # output_pacer_sum (conservation through the split backlog, issue 11) takes about 10 minutes of SAT:
-# it is not in the default list (CTest formal); run it by name. Its mutation is in the self-test
-# (a broken copy fails in the base case within seconds).
-ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq rephase rephase_div error_map)
+# it is not in the default list (CTest formal); run it by name (make formal). Its mutation is in
+# the self-test (a broken copy fails in the base case within seconds). rephase_adj (about 1.5 min)
+# is in the default list.
+ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq pulse_multiplier_mul rephase rephase_adj rephase_div error_map)
 # smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
 # BMC of k calls only); the lengths at which the sat engine's induction closes. The default list
 # (CTest formal_smtbmc) leaves out the slow ones under z3 (dds_sincos about 100 s,
 # pulse_multiplier_seq about 70 s, output_pacer_sum about 7 min): the sat engine proves the first
 # two in make test; `make formal` runs all of them with both engines.
-SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier rephase_div error_map)
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer pulse_multiplier pulse_multiplier_mul rephase_div error_map)
 SMT_SOLVER="${SMT_SOLVER:-z3}"
 smt_spec() {
     case "$1" in
@@ -38,6 +39,7 @@ smt_spec() {
     dds_sincos)           echo "1|yes" ;;
     pulse_multiplier)     echo "1|yes" ;;
     pulse_multiplier_seq) echo "1|yes" ;;
+    pulse_multiplier_mul) echo "12|no" ;;
     output_pacer_sum)     echo "1|yes" ;;
     rephase)              echo "1|yes" ;;
     rephase_div)          echo "1|no" ;;
@@ -60,6 +62,7 @@ proof_spec() {
     dds_sincos)        echo "dds_sincos|dds_sincos.v|-tempinduct -maxsteps 8" ;;
     pulse_multiplier)  echo "pulse_multiplier|pulse_multiplier.v|-tempinduct -maxsteps 3" ;;
     pulse_multiplier_seq) echo "pulse_multiplier|-DFORMAL_REBASE pulse_multiplier.v|-tempinduct -maxsteps 1" ;;
+    pulse_multiplier_mul) echo "fv_pm_smul|pulse_multiplier.v formal/fv_pm_smul.v|-seq 12" ;;
     rephase)           echo "rephase|rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 1" ;;
     rephase_adj)       echo "rephase|-DFORMAL_ADJ rephase.v formal/fv_bresenham.v|-tempinduct -maxsteps 1" ;;
     rephase_div)       echo "fv_rephase_div|formal/fv_bresenham.v formal/fv_rephase_div.v|-seq 1" ;;
@@ -141,7 +144,10 @@ MUTATIONS=(
   "pm_c2|pulse_multiplier.v|pulse_multiplier|s/wire                   c2_d  = c2_l\[16\] ? c2_h1\[16\] : c2_h0\[16\];/wire                   c2_d  = c2_h0[16];/"
   "pm_wrap|pulse_multiplier.v|pulse_multiplier|s/wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b1);/wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b0);/"
   "pm_apply_call|pulse_multiplier.v|pulse_multiplier|s/f_last_q     <= busy_d \&\& cnt_d == K_REBASE;/f_last_q     <= busy_d \&\& cnt_d == K_REBASE - 1;/"
-  "pm_doff_carry|pulse_multiplier.v|pulse_multiplier_seq|s/{6'd0, ~off_old_x\[2\*W_DOFF_H-1:W_DOFF_H\]}, dcy_q);/{6'd0, ~off_old_x[2*W_DOFF_H-1:W_DOFF_H]}, 1'b0);/"
+  "pm_doff_carry|pulse_multiplier.v|pulse_multiplier_seq|s/off_nld_x\[35:18\]} + {{W_TQ{1'b0}}, dc_q\[0\]};/off_nld_x[35:18]};/"
+  "pm_dr_carry|pulse_multiplier.v|pulse_multiplier_seq|s/~{1'b0, r_old_q\[W_RATIO-1:W_DRL\]} +/~{1'b0, r_old_q[W_RATIO-1:W_DRL]};/;s/^ *{{(W_DRATIO-W_DRL-1){1'b0}}, drc_q};//"
+  "pm_mul_sign|pulse_multiplier.v|pulse_multiplier_mul|s/!a_q\[1\] ? {W_PP{1'b0}} : i_sign_nx ? ~b_x : b_x;/!a_q[1] ? {W_PP{1'b0}} : b_x;/"
+  "pm_mul_cin|pulse_multiplier.v|pulse_multiplier_mul|s/cin_q    <= a_q\[1\] \& i_sign_nx;/cin_q    <= 1'b0;/"
   "pm_tnew_carry|pulse_multiplier.v|pulse_multiplier_seq|s/ys3 = x_q\[69:54\] + p_x\[69:54\] + {15'd0, yc_q\[2\]};/ys3 = x_q[69:54] + p_x[69:54];/"
   "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
   "rep_b_bwd|rephase.v|rephase|s/wire signed \[W_POS-1:0\] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};/wire signed [W_POS-1:0] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}});/"

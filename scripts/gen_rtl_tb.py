@@ -153,7 +153,7 @@ BLOCKS = [
                 preset_t   = {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
                 preset_sum = preset_acc + preset_t;
                 dut.busy_q = 1'b0; dut.pend_q = 1'b0; dut.cnt_q = 0;
-                dut.f_doff0_q = 1'b0; dut.f_doff1_q = 1'b0; dut.f_mul_q = 1'b0; dut.f_mul_pre_q = 1'b0; dut.f_pre0_q = 1'b0;
+                dut.f_dr0_q = 1'b0; dut.f_dr1_q = 1'b0; dut.f_d_q = 4'd0; dut.f_mul_q = 1'b0; dut.f_mul_pre_q = 1'b0; dut.f_pre0_q = 1'b0;
                 dut.f_x_q = 4'd0; dut.f_y_q = 4'd0; dut.f_last_q = 1'b0;
                 dut.c_q = 1'b0; dut.inc_q = 0;
                 dut.n_q       = @preset_n@;
@@ -161,7 +161,6 @@ BLOCKS = [
                 dut.nmin_q    = @preset_n@ == 32'sh80000000;
                 dut.r_use_q   = @ratio@;
                 dut.wrap_pos_q = $signed({34'd0, i_ratio[36:32]}) - $signed({2'd0, i_ratio});
-                dut.wrap_neg_q = ~$signed({34'd0, i_ratio[36:32]}) + $signed({2'd0, i_ratio});
                 dut.off_tgt_q = @comp_offset@;
                 dut.lo_q      = preset_acc[31:0];
                 dut.hi_q      = preset_acc[69:32];
