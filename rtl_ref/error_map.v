@@ -176,9 +176,12 @@ module error_map (
         end
     endgenerate
     wire [31:0]       sor_hi = {{(32-W_OFF+W_ADDR){1'b0}}, sor[W_OFF-1:W_ADDR]};  // [k] = |a_off[37:k+10]
-    wire [W_OFF-1:0]  off_u  = a_off;
-    wire [W_OFF-1:0]  off_sh = off_u >> a_k;
-    wire [W_FRAC-1:0] u_sh   = off_u[W_FRAC-1:0] << (K_MAX - a_k);
+    // i = off[k+9:k] and u = off[k-1:0] << (20 - k) are the fields [29:20] and [19:0] of
+    // {off[29:0], 20 zeros} >> k (k <= K_MAX = 20 while active): one shifter for both fields
+    wire [W_ADDR+2*W_FRAC-1:0] off_w  = {a_off[W_ADDR+W_FRAC-1:0], {W_FRAC{1'b0}}};
+    wire [W_ADDR+2*W_FRAC-1:0] off_sw = off_w >> a_k;
+    wire [W_ADDR-1:0]          off_sh = off_sw[W_ADDR+W_FRAC-1:W_FRAC];
+    wire [W_FRAC-1:0]          u_sh   = off_sw[W_FRAC-1:0];
     // even-RAM address (last + 1) / 2 of the clamp candidate last (that of i is formed in C)
     wire [W_ADDR:0]   last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
 
