@@ -60,9 +60,14 @@ void pso::reset_run() {
     arr_len_ = 1;
     t_ = 0;
     for (int i = 0; i < kAxes; ++i) p_[i] = s_[i] = 0;
-    closed_ = phi_ = est_prev_ = fired_ = frozen_ = 0;
+    closed_ = phi_ = fired_ = frozen_ = 0;
+    for (int k = 0; k < kFireLat; ++k) {
+        est_hist_[k] = 0;
+        inwin_hist_[k] = false;
+    }
+    fd_prev_ = 0;
+    sp_pending_ = false;
     ps_count_ = 0;
-    inwin_prev_ = false;
     idx_ = 0;
     done_ = false;
     have_emit_ = false;
@@ -82,6 +87,9 @@ long double pso::threshold(const pso_regs& r) const {
 }
 
 pso::out pso::step(const pso_in& in, const pso_regs& r) {
+    // the array entry of the next fire as the RAM stands after the previous call (the decision
+    // of this call uses it; a write of this call acts from the next decision)
+    const uint64_t entry_before = ram_[static_cast<size_t>(idx_)];
     if (r.arr_we) ram_[static_cast<size_t>(r.arr_addr) % kArrDepth] = r.arr_data;
     out o;
     if (!config_ok(r)) {
@@ -104,11 +112,16 @@ pso::out pso::step(const pso_in& in, const pso_regs& r) {
             arr_wrap_ = r.arr_wrap;
         }
         const int64_t t = t_;
-        const long double thr = threshold(r);
+        // threshold of this call's decision: fire_dist of the previous call, or the entry before
+        // this call's write; thr_now: the threshold of the next fire as seen in this call (the
+        // spacing sample)
+        const long double thr = arr_en_ ? counts(entry_before) : counts(fd_prev_);
+        const long double thr_now = threshold(r);
+        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 3)
 
-        // ---- firing decision on the estimate of the previous call ----
+        // ---- firing decision on the estimate of call t - 3 ----
         const bool was_done = done_;
-        o.fire = !done_ && est_prev_ - fired_ >= thr;
+        o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr;
         if (o.fire) {
             fired_ += thr;
             if (arr_en_) {
@@ -119,11 +132,11 @@ pso::out pso::step(const pso_in& in, const pso_regs& r) {
                     ++idx_;
                 }
             }
-            if (done_) frozen_ = est_prev_ - fired_;
+            if (done_) frozen_ = est_old - fired_;
         }
-        o.dist = was_done ? frozen_ : est_prev_ - fired_;
-        o.in_win = inwin_prev_;
-        o.emit = o.fire && inwin_prev_;
+        o.dist = was_done ? frozen_ : est_old - fired_;
+        o.in_win = inwin_hist_[kFireLat - 1];
+        o.emit = o.fire && o.in_win;
         const bool pulse_before = have_emit_ && (t - 1) - last_emit_ < last_w_;
         if (o.emit) {
             o.overlap = pulse_before;
@@ -150,7 +163,10 @@ pso::out pso::step(const pso_in& in, const pso_regs& r) {
             phi_ += counts(inc_eff);
             o.ps_pulse = floorl(phi_) > before;
             if (o.ps_pulse) ++ps_count_;
-            o.spacing_err = r.min_period != 0 && thr < counts(inc_eff) * static_cast<long double>(r.min_period);
+            if (t % kSpLat == 0) {  // sample call: the result of the previous sample, a new sample
+                o.spacing_err = t >= kSpLat && sp_pending_;
+                sp_pending_ = r.min_period != 0 && thr_now < counts(inc_eff) * static_cast<long double>(r.min_period);
+            }
             est = floorl(phi_);
         } else {
             int d[kAxes];
@@ -184,8 +200,13 @@ pso::out pso::step(const pso_in& in, const pso_regs& r) {
             const int64_t wp = r.win_src == 3 ? ps_count_ : in.pos[r.win_src];
             inwin = r.win_low <= wp && wp <= r.win_high;
         }
-        inwin_prev_ = inwin;
-        est_prev_ = est;
+        for (int k = kFireLat - 1; k > 0; --k) {
+            est_hist_[k] = est_hist_[k - 1];
+            inwin_hist_[k] = inwin_hist_[k - 1];
+        }
+        est_hist_[0] = est;
+        inwin_hist_[0] = inwin;
+        fd_prev_ = r.fire_dist;
         ++t_;
     }
     o.idx = idx_;

@@ -6,8 +6,11 @@
 //     current one; the estimate is est(t) = sum of closed chords + chord(P(t) - S), where
 //     chord(v) = |v| rounded to the nearest 2^-32 count (sqrtl, then an exact integer check);
 //   * part-speed: est(t) = floor(Phi(t)), Phi = sum of the clamped commanded rate (exact);
-//   * the k-th fire is the first call t+1 with est(t) - (sum of the thresholds already fired)
-//     >= threshold (absolute bookkeeping of fired thresholds, no remainder register);
+//   * the k-th fire is the first call t+3 with est(t) - (sum of the thresholds already fired)
+//     >= threshold (absolute bookkeeping of fired thresholds, no remainder register); the
+//     threshold is fire_dist of call t+2, or the array entry as the RAM stands after call t+2;
+//     no fire in the first three calls of a run (docs/PSO_COUNTERS.md §2.5, §2.9);
+//   * spacing_err: every 17 run calls, the check of the command sampled 17 calls before;
 //   * the pulse is high at call t when t - (call of the last emit) < pulse width of that emit.
 // Distances are long double counts; every value is a multiple of 2^-32 below 2^32 counts, so
 // long double (64-bit significand) holds them exactly.
@@ -46,7 +49,9 @@ struct pso_in {
 class pso {
 public:
     static constexpr int kAxes = 3;
-    static constexpr int kMaxK = 32;
+    static constexpr int kMaxK = 16;
+    static constexpr int kFireLat = 3;   // calls from a step to its fire
+    static constexpr int kSpLat = 17;    // calls from a spacing sample to its flag
     static constexpr int kArrDepth = 64;
     static constexpr long double kMinDist = 2.0L;       // counts
     static constexpr long double kClockHz = 100e6L;
@@ -93,8 +98,10 @@ private:
     long double closed_ = 0;        // sum of closed chords
     long double phi_ = 0;           // part-speed commanded distance
     int64_t ps_count_ = 0;
-    long double est_prev_ = 0;      // estimate after the previous call
-    bool inwin_prev_ = false;
+    long double est_hist_[kFireLat] = {0, 0, 0};   // estimate after call t-1, t-2, t-3
+    bool inwin_hist_[kFireLat] = {false, false, false};
+    uint64_t fd_prev_ = 0;          // fire_dist of the previous call
+    bool sp_pending_ = false;       // spacing check of the last sample
     long double fired_ = 0;         // sum of the thresholds fired
     int idx_ = 0;
     bool done_ = false;
