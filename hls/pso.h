@@ -2,26 +2,32 @@
 // firing comparator with remainder carry, pulse output of programmable width, a position window,
 // an array of firing distances and the part-speed pulse generator (24 MHz limit).
 //
-// docs/PSO_COUNTERS.md §2 is the normative per-call description; in short:
+// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the four stages); in short:
 //
-//   stage A (this call's inputs)   tracking window: per-axis signed travel D since the window
+//   stage A  (this call's inputs)  tracking window: per-axis signed travel D since the window
 //                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
 //                                  window at the previous position, |D_i| reaching K closes it at
 //                                  the current one; address s = sum D_i^2 of the chord ROM.
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
-//                                  24 MHz), one distance count per carry.
-//   stage B (stage A of last call) chord = ROM[s] = round(sqrt(s) * 2^32) (registered BRAM
-//                                  read), remainder update, fire when remainder + open-window
-//                                  chord >= threshold, subtract the threshold (carry), pulse timer.
+//                                  24 MHz), one distance count per carry; the minimum-spacing
+//                                  check as a sequenced shift-add product (17 calls per sample).
+//   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (registered BRAM read).
+//   stage B1 (R of the last call)  increments x (into the remainder) and y (estimate step, open
+//                                  chord included), and x - thr, y - thr for both candidate
+//                                  thresholds (the next fire's, and the one after it).
+//   stage B2 (B1 of the last call) fire when rem + (y - thr) >= 0, rem' = rem + x (- thr): one
+//                                  add of the remainder per result; the candidate is picked by
+//                                  the registered fire of the last call. Pulse timer, flags.
 //
 // With K = 1 every step closes its window and the increment is the per-call magnitude
 // 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
 // removes the staircase over-estimate of diagonal moves (see the document for figures).
 //
 // Widths (all derived from the primaries in pso_cfg): distances Q24.32 (56 bits unsigned),
-// remainder 58 bits signed, chord 39 bits, window travel 7 bits signed, ROM 3073 x 39 bits
-// (K_MAX = 32). Latency: a step at call t can fire at call t+1 (the fire/emit/pulse outputs of
-// call t+1); flags about this call's command (rate_over, spacing_err) are outputs of call t.
+// remainder 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
+// (K_MAX = 16). Latency: a step at call t can fire at call t+3 (FIRE_LAT; the fire/emit/pulse
+// outputs of call t+3); rate_over is an output of the command's call; spacing_err of run call
+// 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
 
@@ -37,7 +43,7 @@ struct pso_cfg {
     static constexpr int N_AXES = 3;
     static constexpr int D_FRAC = 32;       // fraction bits of every distance (2^-32 count)
     static constexpr int D_INT = 24;        // distance registers: < 2^24 counts (1.31 m)
-    static constexpr int K_MAX = 32;        // longest tracking window, counts on one axis
+    static constexpr int K_MAX = 16;        // longest tracking window, counts on one axis (ROM: 10 BRAMs)
     static constexpr int ARR_DEPTH = 64;    // firing-distance array (distributed RAM)
     static constexpr int W_PW = 16;         // pulse width register, clocks
     static constexpr int W_GAP = 16;        // laser minimum pulse period register, clocks
@@ -49,14 +55,19 @@ struct pso_cfg {
     // derived
     static constexpr int W_DIST = D_INT + D_FRAC;                    // 56, unsigned
     static constexpr int W_REM = D_INT + 2 + D_FRAC;                 // 58, signed
-    static constexpr int W_K = clog2p1(K_MAX);                       // 6, K register
-    static constexpr int W_WIN = W_K + 1;                            // 7, signed travel -K..K
-    static constexpr int S_MAX = N_AXES * K_MAX * K_MAX;             // 3072
-    static constexpr int W_S = clog2p1(S_MAX);                       // 12, ROM address
-    static constexpr int W_CHORD = clog2p1(2 * K_MAX) + D_FRAC;      // 39: sqrt(3)*K < 2K
+    static constexpr int W_K = clog2p1(K_MAX);                       // 5, K register
+    static constexpr int W_WIN = W_K + 1;                            // 6, signed travel -K..K
+    static constexpr int S_MAX = N_AXES * K_MAX * K_MAX;             // 768
+    static constexpr int W_S = clog2p1(S_MAX);                       // 10, ROM address
+    static constexpr int W_CHORD = clog2p1(2 * K_MAX - 1) + D_FRAC;  // 37: sqrt(3)*K < 2K - 1
+    static constexpr int W_INCR = W_CHORD + 1;                       // 38: x, y <= two chords
     static constexpr int W_ADDR = clog2p1(ARR_DEPTH - 1);            // 6
     static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
+    static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
+    static constexpr int FIRE_LAT = 3;                               // calls from a step to its fire
+    static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
+    static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
     static constexpr unsigned long long ONE = 1ULL << D_FRAC;        // one count
     static constexpr unsigned long long MIN_DIST = 2ULL << D_FRAC;   // smallest legal threshold
     // floor(24 MHz / 100 MHz * 2^32): the largest increment whose carry rate is <= 24 MHz
@@ -79,6 +90,9 @@ struct pso_cfg {
     using addr_t = uint<W_ADDR>;
     using len_t = uint<W_LEN>;
     using prod_t = uint<W_PROD>;
+    using incr_t = uint<W_INCR>;
+    using sphi_t = uint<W_SPHI>;
+    using spk_t = uint<W_SPK>;
     using mask_t = uint<N_AXES>;
     using src_t = uint<2>;      // window source: 0..2 axis position, 3 part-speed pulse count
     using bad_t = uint<ARR_DEPTH>;
@@ -247,22 +261,32 @@ public:
             arr_wrap_q_ = r.arr_wrap;
             run_q_ = true;
         }
-        const cfg::dist_t thr = arr_en_q_ ? arr_[idx_.to_uint()] : r.fire_dist;
+        // ---- stage B1 (from the R registers): increments and candidate differences ----
+        // thr0: the threshold of the next fire if this call's B2 does not fire; thr1 if it does
+        // (array: the entry after idx). The RAM is read after this call's write.
+        cfg::len_t nx = idx_ + 1;
+        if (nx >= arr_len_q_) nx = 0;
+        const cfg::dist_t thr0 = arr_en_q_ ? arr_[idx_.to_uint()] : r.fire_dist;
+        const cfg::dist_t thr1 = arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
+        const uint64_t pr = r_rev_ ? part_.to_uint64() : 0;
+        const uint64_t one = r_pulse_ ? cfg::ONE : 0;
+        const cfg::incr_t y = pr + r_chord_.to_uint64() + one;  // three-input sum (carry-save + one add)
+        const cfg::incr_t x = r_kclose_ ? y : cfg::incr_t(pr + one);
+        const int64_t t0 = static_cast<int64_t>(thr0.to_uint64());
+        const int64_t t1 = static_cast<int64_t>(thr1.to_uint64());
+        const int64_t x_v = static_cast<int64_t>(x.to_uint64());
+        const int64_t y_v = static_cast<int64_t>(y.to_uint64());
+        const bool done_before = done_;
 
-        // ---- stage B: accumulate the chord read for last call's window, fire, pulse ----
-        const cfg::chord_t chord = pso_chord(a_s_);
-        const int64_t thr_v = static_cast<int64_t>(thr.to_uint64());
-        int64_t base = rem_.to_int64();
-        if (a_rev_) base += static_cast<int64_t>(part_.to_uint64());
-        if (a_kclose_) base += static_cast<int64_t>(chord.to_uint64());
-        if (a_pulse_) base += static_cast<int64_t>(cfg::ONE);
-        const cfg::chord_t partial = a_kclose_ ? cfg::chord_t(0) : chord;
-        const int64_t value = base + static_cast<int64_t>(partial.to_uint64());
-        const bool fire = !done_ && value >= thr_v;
-        const cfg::rem_t frozen = rem_.to_int64() + static_cast<int64_t>(part_.to_uint64());
+        // ---- stage B2 (from the B1 registers): fire, remainder, array index, pulse ----
+        const int64_t rem_v = rem_.to_int64();
+        const int64_t ym = (b_fire1_ ? b_ym1_ : b_ym0_).to_int64();
+        const int64_t xm = (b_fire1_ ? b_xm1_ : b_xm0_).to_int64();
+        const int64_t v_m = rem_v + ym;  // value - thr
+        const bool fire = b_v_ && !done_ && v_m >= 0;
         if (!done_) {
-            rem_ = fire ? base - thr_v : base;
-            part_ = partial;
+            rem_ = fire ? rem_v + xm : rem_v + static_cast<int64_t>(b_x_.to_uint64());
+            dist_ = fire ? v_m : rem_v + static_cast<int64_t>(b_y_.to_uint64());
         }
         if (fire && arr_en_q_) {
             if (idx_ + 1 >= arr_len_q_) {
@@ -272,7 +296,7 @@ public:
                 idx_ = idx_ + 1;
             }
         }
-        const bool emit = fire && a_inwin_;
+        const bool emit = fire && b_inwin_;
         const bool overlap = emit && timer_ != 0;
         const bool freq_err = emit && r.min_period != 0 && since_ + 1 < r.min_period;
         if (emit) {
@@ -288,6 +312,27 @@ public:
             if (ovl_cnt_ != cfg::OVL_MAX) ovl_cnt_ = ovl_cnt_ + 1;
         }
         if (freq_err) freq_st_ = true;
+        const bool in_win_used = b_inwin_;
+
+        // ---- B1 registers ----
+        if (!done_before) part_ = r_kclose_ ? cfg::chord_t(0) : r_chord_;
+        b_x_ = x;
+        b_y_ = y;
+        b_xm0_ = x_v - t0;
+        b_ym0_ = y_v - t0;
+        b_xm1_ = x_v - t1;
+        b_ym1_ = y_v - t1;
+        b_inwin_ = r_inwin_;
+        b_v_ = r_v_;
+        b_fire1_ = fire;
+
+        // ---- stage R: chord ROM read (registered BRAM read at the address stage A wrote) ----
+        r_chord_ = pso_chord(a_s_);
+        r_rev_ = a_rev_;
+        r_kclose_ = a_kclose_;
+        r_pulse_ = a_pulse_;
+        r_inwin_ = a_inwin_;
+        r_v_ = a_v_;
 
         // ---- stage A: part-speed generator and tracking window for this call's steps ----
         bool ps_pulse = false;
@@ -300,8 +345,26 @@ public:
             ps_pulse = (sum >> cfg::W_INC) != 0;
             ph_ = sum;  // keeps the low W_INC bits
             if (ps_pulse) ps_cnt_ = ps_cnt_ + 1;
-            const cfg::prod_t min_spacing = cfg::prod_t(inc) * r.min_period;
-            spacing_err = r.min_period != 0 && thr < min_spacing;
+            // minimum spacing, sequenced: a sample call (k = 0) shows the check of the previous
+            // sample and loads the operands; steps i = 0..15 in the next 16 calls (one 33-bit add
+            // each, LSB first: hi += bit i of min_period ? inc : 0, then {hi, lo} >>= 1)
+            if (sp_k_ == 0) {
+                const uint64_t prod = (sp_hi_.to_uint64() << cfg::W_GAP) | sp_lo_.to_uint64();
+                spacing_err = sp_full_ && sp_min_ != 0 && sp_thr_.to_uint64() < prod;
+                sp_full_ = true;
+                sp_inc_ = inc;
+                sp_min_ = r.min_period;
+                sp_thr_ = thr0;
+                sp_hi_ = 0;
+                sp_lo_ = 0;
+                sp_k_ = 1;
+            } else {
+                const unsigned i = sp_k_.to_uint() - 1;
+                const cfg::sphi_t sh = sp_hi_ + (((sp_min_ >> i) & 1) != 0 ? sp_inc_ : cfg::inc_t(0));
+                sp_lo_ = (sp_lo_ >> 1) | (cfg::gap_t(sh & 1) << (cfg::W_GAP - 1));
+                sp_hi_ = sh >> 1;
+                sp_k_ = sp_k_ == cfg::W_GAP ? cfg::spk_t(0) : cfg::spk_t(sp_k_ + 1);
+            }
         }
         if (rate_over) rate_over_st_ = true;
         if (spacing_err) spacing_st_ = true;
@@ -332,18 +395,18 @@ public:
         a_kclose_ = kclose;
         a_s_ = s;
         a_pulse_ = ps_pulse;
+        a_v_ = true;
         bool inw = true;
         if (r.win_en) {
             const pos_t wp = r.win_src == 3 ? ps_cnt_ : in.pos[r.win_src.to_uint()];
             inw = r.win_low <= wp && wp <= r.win_high;
         }
-        const bool in_win_used = a_inwin_;
         a_inwin_ = inw;
 
         o.fire = fire;
         o.emit = emit;
         o.in_win = in_win_used;
-        o.dist = (done_ && !fire) ? frozen : cfg::rem_t(fire ? value - thr_v : value);
+        o.dist = dist_;
         o.overlap = overlap;
         o.rate_over = rate_over;
         o.spacing_err = spacing_err;
@@ -361,7 +424,24 @@ private:
         a_s_ = 0;
         a_pulse_ = false;
         a_inwin_ = false;
+        a_v_ = false;
+        r_chord_ = 0;
+        r_rev_ = false;
+        r_kclose_ = false;
+        r_pulse_ = false;
+        r_inwin_ = false;
+        r_v_ = false;
+        b_x_ = 0;
+        b_y_ = 0;
+        b_xm0_ = 0;
+        b_ym0_ = 0;
+        b_xm1_ = 0;
+        b_ym1_ = 0;
+        b_inwin_ = false;
+        b_v_ = false;
+        b_fire1_ = false;
         rem_ = 0;
+        dist_ = 0;
         part_ = 0;
         idx_ = 0;
         done_ = false;
@@ -369,6 +449,13 @@ private:
         since_ = cfg::GAP_MAX;
         ph_ = 0;
         ps_cnt_ = 0;
+        sp_k_ = 0;
+        sp_full_ = false;
+        sp_inc_ = 0;
+        sp_min_ = 0;
+        sp_thr_ = 0;
+        sp_hi_ = 0;
+        sp_lo_ = 0;
         run_q_ = false;
         ps_q_ = false;
         mask_q_ = 0;
@@ -395,12 +482,27 @@ private:
     cfg::bad_t arr_bad_;
     // stage A
     cfg::win_t trav_[cfg::N_AXES];
-    bool a_rev_, a_kclose_, a_pulse_, a_inwin_;
+    bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;
     cfg::s_t a_s_;
     cfg::inc_t ph_;
     pos_t ps_cnt_;
-    // stage B
-    cfg::rem_t rem_;
+    // minimum-spacing product (sequenced)
+    cfg::spk_t sp_k_;
+    bool sp_full_;
+    cfg::inc_t sp_inc_;
+    cfg::gap_t sp_min_;
+    cfg::dist_t sp_thr_;
+    cfg::sphi_t sp_hi_;
+    cfg::gap_t sp_lo_;
+    // stage R
+    cfg::chord_t r_chord_;
+    bool r_rev_, r_kclose_, r_pulse_, r_inwin_, r_v_;
+    // stage B1
+    cfg::incr_t b_x_, b_y_;
+    cfg::rem_t b_xm0_, b_ym0_, b_xm1_, b_ym1_;
+    bool b_inwin_, b_v_, b_fire1_;
+    // stage B2
+    cfg::rem_t rem_, dist_;
     cfg::chord_t part_;
     cfg::len_t idx_;
     bool done_;

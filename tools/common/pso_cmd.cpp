@@ -260,7 +260,7 @@ const char* const kPsoUsage =
     "usage: laserax pso [options]\n"
     "  --out DIR          output folder (default out)\n"
     "  --dist-um D        firing distance in um, [0, 1310720) (default 10)\n"
-    "  --k K              tracking window register 0..63 (legal 1..32, default 16; 1 = per-clock magnitudes)\n"
+    "  --k K              tracking window register 0..31 (legal 1..16, default 16; 1 = per-clock magnitudes)\n"
     "  --pulse-w W        pulse width in clocks, 0..65535 (default 10)\n"
     "  --speed-mm-s V     path speed in mm/s, (0, 7421.875] (default 200)\n"
     "  --laser-khz F      laser pulse frequency limit, 0..1e6 (default 0 = no check)\n"
@@ -305,7 +305,7 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
                 window = true;
             }
         } else if (cl.is("--dist-um")) cl.get_real(0.0, 16777216.0 * kNmPerCount / 1000.0, &dist_um, false, true);
-        else if (cl.is("--k")) cl.get_int(0, 63, &k);
+        else if (cl.is("--k")) cl.get_int(0, 31, &k);
         else if (cl.is("--pulse-w")) cl.get_int(0, 65535, &pulse_w);
         else if (cl.is("--speed-mm-s")) cl.get_real(0.0, speed_max, &speed, true, false);
         else if (cl.is("--laser-khz")) cl.get_real(0.0, 1e6, &laser_khz);
