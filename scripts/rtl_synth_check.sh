@@ -22,7 +22,7 @@
 set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top
-         laserax_regs laserax_axil encoder_counter)
+         laserax_regs laserax_axil encoder_counter pso)
 COARSE_MODULES=" error_map laserax_top laserax_axil "  # synth -run :fine (see above)
 IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 LATCH_CELLS='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
@@ -156,7 +156,7 @@ mkdir -p "$work"
 sources=("$ROOT"/rtl_ref/input_filter.v "$ROOT"/rtl_ref/quad_decoder.v "$ROOT"/rtl_ref/pulse_multiplier.v
          "$ROOT"/rtl_ref/output_pacer.v "$ROOT"/rtl_ref/rephase.v "$ROOT"/rtl_ref/dds_sincos.v
          "$ROOT"/rtl_ref/error_map.v "$ROOT"/rtl_ref/laserax_top.v "$ROOT"/rtl_ref/laserax_regs.v
-         "$ROOT"/rtl_ref/laserax_axil.v "$ROOT"/rtl_ref/encoder_counter.v)
+         "$ROOT"/rtl_ref/laserax_axil.v "$ROOT"/rtl_ref/encoder_counter.v "$ROOT"/rtl_ref/pso.v)
 
 fails=0
 for m in "${MODULES[@]}"; do

@@ -36,7 +36,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl_ref")
 MODULES = ["input_filter", "quad_decoder", "pulse_multiplier", "output_pacer", "rephase",
-           "dds_sincos", "error_map", "laserax_top", "encoder_counter"]
+           "dds_sincos", "error_map", "laserax_top", "encoder_counter", "pso"]
 # Every module file of rtl_ref/ is read (not only those of the table), so a block instantiated by
 # the top can never be missing from the design (the AXI wrappers are read too and ignored).
 SOURCES = sorted(os.path.join(RTL, f) for f in os.listdir(RTL) if f.endswith(".v"))

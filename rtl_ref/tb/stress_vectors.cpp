@@ -35,6 +35,12 @@
 //                           counters at the extremes (largest product), corr_period 32..65535
 //                           changed live (a product restarted), qstep = -2, invalid sources, rates
 //                           and periods (see encoder_counter_stress below).
+//   pso_stress              segments with every register re-drawn: tracking on any axes with every K,
+//                           part-speed at rates above the 24 MHz clamp, arrays of 1..64 entries
+//                           (wrap or done) written while disabled and while running (the entry of
+//                           the next fire too), windows on every source, spacing and frequency
+//                           flags, enable drops, invalid configurations of every kind, fires in
+//                           consecutive calls (see pso_stress below).
 // Every file has the column layout of the golden file of its block (lxt::vec_layout(), shared with
 // `laserax vectors`), so one testbench rtl_ref/tb/tb_<block>.v runs both sets. The columns the
 // golden sets hold at 0 are exercised here: pulse_multiplier `preset, preset_n` (a row with
@@ -52,6 +58,8 @@
 
 #include "hls/axis_core.h"
 #include "hls/encoder_counter.h"
+#include "hls/pso.h"
+#include "tools/common/pso_cmd.h"
 #include "rtl_ref/tb/vecgen.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/vectors.h"
@@ -891,6 +899,161 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
     return t;
 }
 
+// ---- pso --------------------------------------------------------------------------------------
+// Segments of 30..2500 calls; at each segment start every register is re-drawn: tracking (any
+// axis mask, K 1..16) or part-speed (rates up to 2^32 - 1: clamped, rate_over; INC_MAX and
+// INC_MAX + 1), firing distance 2 counts exactly .. 200 counts with a random fraction, array
+// mode (length 1..64, wrap or not, entries rewritten while disabled), pulse width 1..80, the
+// window on any source with edges next to the current position, laser minimum period 0..300
+// (freq_err; spacing_err in part-speed). One segment in 7 is short and invalid (K 0 or 17..31,
+// distance or an entry below 2 counts, length 0 or 65..127, no axis, pulse width 0, low > high,
+// source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
+// per call on every axis: fires in consecutive calls at small distances; reversals), enable
+// drops of 1..3 calls, clears, live distance changes, array writes while running (to the entry
+// of the next fire and the one after it, too: the RAM forwarding of the RTL). The first 120
+// calls are directed: an array run in part-speed with a spacing check, dropped for one call at
+// idx != 0 while entry 0 is rewritten, then restarted (the first call of a run reads entry 0).
+vec_table pso_stress(rng_t& r, long long calls) {
+    using C = lx::pso_cfg;
+    vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
+    lx::pso m;
+    golden::pso_regs g;  // segment registers (pulses cleared)
+    double prob[3] = {0.5, 0.5, 0.5};
+    int dir[3] = {1, 1, 1};
+    int64_t pos[3] = {0, 0, 0};
+    uint64_t inc = 0;
+    long long seg_end = 0;
+    int rewrite = 0;   // calls left of an array rewrite (enable low)
+    int off = 0;       // calls left of an enable drop
+    int64_t last_idx = 0;
+    auto draw_dist = [&]() -> uint64_t {
+        switch (r.range(0, 4)) {
+            case 0: return C::MIN_DIST;
+            case 1: return C::MIN_DIST + r.range(1, 3);
+            case 2: return (static_cast<uint64_t>(r.range(2, 4)) << 32) + (r.u() & 0xffffffffULL);
+            default: return (static_cast<uint64_t>(r.range(2, 200)) << 32) + (r.u() & 0xffffffffULL);
+        }
+    };
+    auto draw_inc = [&]() -> uint64_t {
+        switch (r.range(0, 5)) {
+            case 0: return C::INC_MAX;
+            case 1: return C::INC_MAX + 1;
+            case 2: return r.u() & 0xffffffffULL;
+            case 3: return static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::INC_MAX)));
+            default: return static_cast<uint64_t>(r.range(0, 1 << 28));
+        }
+    };
+    for (long long n = 0; n < calls; ++n) {
+        if (n >= seg_end) {
+            seg_end = n + r.range(30, 2500);
+            golden::pso_regs x;
+            x.enable = !r.chance(10);
+            x.part_speed = r.chance(2);
+            x.axis_mask = static_cast<unsigned>(r.range(1, 7));
+            x.win_k = r.chance(3) ? 16 : static_cast<int>(r.range(1, 16));
+            x.fire_dist = draw_dist();
+            x.arr_en = r.chance(3);
+            x.arr_len = r.chance(5) ? 64 : r.chance(2) ? static_cast<int>(r.range(1, 8)) : static_cast<int>(r.range(1, 64));
+            x.arr_wrap = r.chance(2);
+            x.pulse_w = r.chance(4) ? 1 : static_cast<int>(r.range(1, 80));
+            x.win_en = r.chance(2);
+            x.win_src = static_cast<int>(r.range(0, x.part_speed ? 3 : 2));
+            const int64_t c = x.win_src == 3 ? 0 : pos[x.win_src];
+            x.win_low = c - r.range(-50, 400);
+            x.win_high = x.win_low + r.range(0, 800);
+            x.min_period = r.chance(3) ? 0 : static_cast<int>(r.range(1, 300));
+            for (int a = 0; a < 3; ++a) {
+                prob[a] = r.chance(4) ? 1.0 : static_cast<double>(r.range(0, 1000)) / 1000.0;
+                if (r.chance(2)) dir[a] = -dir[a];
+            }
+            inc = draw_inc();
+            if (r.chance(7)) {  // an invalid segment, short
+                seg_end = n + r.range(1, 40);
+                switch (r.range(0, 8)) {
+                    case 0: x.win_k = r.chance(2) ? 0 : static_cast<int>(r.range(17, 31)); break;
+                    case 1: x.arr_en = false; x.fire_dist = static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1))); break;
+                    case 2: x.arr_en = true; x.arr_len = r.chance(2) ? 0 : static_cast<int>(r.range(65, 127)); break;
+                    case 3: x.part_speed = false; x.axis_mask = 0; break;
+                    case 4: x.pulse_w = 0; break;
+                    case 5: x.win_en = true; x.win_high = x.win_low - r.range(1, 5); break;
+                    case 6: x.win_en = true; x.part_speed = false; x.win_src = 3; break;
+                    default: x.arr_en = true; x.arr_len = 64; break;  // an entry never written or below 2
+                }
+            }
+            g = x;
+            if (g.arr_en && g.arr_len >= 1 && g.arr_len <= 64 && !r.chance(4))
+                rewrite = g.arr_len + 1;  // rewrite the used entries while disabled (one per call)
+        }
+        golden::pso_regs x = g;
+        golden::pso_in in;
+        // motion
+        for (int a = 0; a < 3; ++a) {
+            if (r.chance(400)) dir[a] = -dir[a];
+            const bool stepping = static_cast<double>(r.u() % 1000000) < prob[a] * 1000000.0;
+            in.step[a] = stepping ? dir[a] : 0;
+            pos[a] += in.step[a];
+            in.pos[a] = pos[a];
+        }
+        if (r.chance(300)) inc = draw_inc();
+        in.ps_inc = inc;
+        if (rewrite > 0) {  // enable low while the array is (re)written
+            --rewrite;
+            x.enable = false;
+            if (rewrite < g.arr_len) {
+                x.arr_we = true;
+                x.arr_addr = rewrite;
+                x.arr_data = r.chance(400) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
+                                           : draw_dist();
+            }
+        } else {
+            if (off == 0 && r.chance(700)) off = static_cast<int>(r.range(1, 3));
+            if (off > 0) {
+                --off;
+                x.enable = false;
+            }
+            if (r.chance(50)) {  // a write while running: often the entry of the next fire or the one after
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 2)) % 64 : r.range(0, 63));
+                x.arr_data = r.chance(30) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
+                                          : draw_dist();
+            }
+            if (r.chance(800)) g.fire_dist = draw_dist();  // live change
+            x.fire_dist = g.fire_dist;
+            x.clear = r.chance(500);
+        }
+        if (n < 120) {  // directed prologue (see above)
+            x = golden::pso_regs{};
+            in.ps_inc = C::INC_MAX;
+            x.part_speed = true;
+            x.arr_en = true;
+            x.arr_len = 3;
+            x.arr_wrap = true;
+            x.min_period = 20;   // 0.24 * 20 = 4.8 counts: entries below it are flagged
+            x.pulse_w = 2;
+            if (n < 3) {
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n);
+                x.arr_data = (static_cast<uint64_t>(n) + 3) << 32;  // 3, 4, 5 counts
+            }
+            x.enable = n >= 3 && n != 60;
+            if (n == 60) {  // dropped at idx != 0; entry 0 rewritten in that call
+                x.arr_we = true;
+                x.arr_addr = 0;
+                x.arr_data = 6ULL << 32;
+            }
+            if (n == 61) {  // first call of the new run: entry 0 rewritten again in this call
+                x.arr_we = true;
+                x.arr_addr = 0;
+                x.arr_data = 7ULL << 32;
+            }
+        }
+        const lx::pso::out_t o = m.step(lxt::pso_to_hls(in), lxt::pso_to_hls(x));
+        last_idx = static_cast<int64_t>(o.idx.to_uint64());
+        t.rows.push_back(lxt::pso_vec_row(in, x, o));
+    }
+    return t;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -905,6 +1068,7 @@ int main(int argc, char** argv) {
                            tables->push_back(top_stress(r, 3 * calls));
                            tables->push_back(error_map_stress(r, calls));
                            tables->push_back(encoder_counter_stress(r, calls));
+                           tables->push_back(pso_stress(r, calls));
                            return true;
                        });
 }

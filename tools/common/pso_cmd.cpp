@@ -188,6 +188,40 @@ bool pso_sampler::advance(double tau, int step[3]) {
 
 // ---- conversion and comparison ----------------------------------------------------------------
 
+namespace {
+
+std::vector<int64_t> pso_vec_inputs(const golden::pso_in& in, const golden::pso_regs& r) {
+    return {in.step[0], in.step[1], in.step[2], in.pos[0], in.pos[1], in.pos[2], static_cast<int64_t>(in.ps_inc),
+            r.enable, r.part_speed, static_cast<int64_t>(r.axis_mask), r.win_k, static_cast<int64_t>(r.fire_dist),
+            r.arr_en, r.arr_len, r.arr_wrap, r.arr_we, r.arr_addr, static_cast<int64_t>(r.arr_data), r.pulse_w,
+            r.win_en, r.win_src, r.win_low, r.win_high, r.min_period, r.clear};
+}
+
+}  // namespace
+
+std::vector<int64_t> pso_vec_row(const golden::pso_in& in, const golden::pso_regs& r, const golden::pso::out& o) {
+    std::vector<int64_t> row = pso_vec_inputs(in, r);
+    const int64_t dist = static_cast<int64_t>(o.dist * 4294967296.0L);  // exact: a multiple of 2^-32
+    const std::vector<int64_t> outs = {o.fire, o.emit, o.pulse, o.in_win, dist, o.idx, o.arr_done,
+                                       static_cast<int64_t>(o.fire_cnt), o.overlap_cnt, o.overlap, o.overlap_st,
+                                       o.rate_over, o.rate_over_st, o.spacing_err, o.spacing_st, o.freq_err,
+                                       o.freq_st, o.ps_pulse, o.ps_count, o.cfg_err};
+    row.insert(row.end(), outs.begin(), outs.end());
+    return row;
+}
+
+std::vector<int64_t> pso_vec_row(const golden::pso_in& in, const golden::pso_regs& r, const lx::pso::out_t& o) {
+    std::vector<int64_t> row = pso_vec_inputs(in, r);
+    const std::vector<int64_t> outs = {o.fire, o.emit, o.pulse, o.in_win, o.dist.to_int64(),
+                                       static_cast<int64_t>(o.idx.to_uint64()), o.arr_done,
+                                       static_cast<int64_t>(o.fire_cnt.to_uint64()),
+                                       static_cast<int64_t>(o.overlap_cnt.to_uint64()), o.overlap, o.overlap_st,
+                                       o.rate_over, o.rate_over_st, o.spacing_err, o.spacing_st, o.freq_err,
+                                       o.freq_st, o.ps_pulse, o.ps_count.to_int64(), o.cfg_err};
+    row.insert(row.end(), outs.begin(), outs.end());
+    return row;
+}
+
 lx::pso_regs pso_to_hls(const golden::pso_regs& r) {
     lx::pso_regs h;
     h.enable = r.enable;

@@ -76,6 +76,11 @@ lx::pso_regs pso_to_hls(const golden::pso_regs& r);
 lx::pso_in pso_to_hls(const golden::pso_in& in);
 // "" or a message naming the first differing output.
 std::string pso_compare(const lx::pso::out_t& h, const golden::pso::out& g);
+// One row of the pso vector files (columns: lxt::vec_layout("pso"), every port of hls/pso.h and
+// rtl_ref/pso.v): the inputs of the call, then the outputs from the golden model (`laserax
+// vectors`) or from hls/ (rtl_stress_vectors).
+std::vector<int64_t> pso_vec_row(const golden::pso_in& in, const golden::pso_regs& r, const golden::pso::out& o);
+std::vector<int64_t> pso_vec_row(const golden::pso_in& in, const golden::pso_regs& r, const lx::pso::out_t& o);
 
 int cmd_pso(const std::vector<std::string>& args, size_t first);
 

@@ -20,6 +20,7 @@
 #include "golden/rephase.h"
 #include "hls/axis_core.h"
 #include "hls/encoder_counter.h"
+#include "hls/pso.h"
 #include "tools/common/dds_table.h"
 #include "tools/common/sim.h"
 
@@ -331,6 +332,23 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 in("k1", EM::W_K), in("n1", EM::W_N), in("we", 1), in("addr", EM::W_ADDR), in("data", EM::W_CORR, true),
                 out("corr", EM::W_C, true), out("delta", EM::W_CDELTA, true), out("active", 1), out("in_range", 1),
                 out("clamped", 1), out("cfg_err", 1)};
+    // the PSO block at its ports (hls/pso.h, rtl_ref/pso.v): every input (pso_in, pso_regs) and
+    // every output (pso::out_t)
+    if (block == "pso") {
+        using PC = lx::pso_cfg;
+        return {in("step0", 2, true), in("step1", 2, true), in("step2", 2, true), in("pos0", W::W_POS, true),
+                in("pos1", W::W_POS, true), in("pos2", W::W_POS, true), in("ps_inc", PC::W_INC), in("enable", 1),
+                in("part_speed", 1), in("axis_mask", PC::N_AXES), in("win_k", PC::W_K), in("fire_dist", PC::W_DIST),
+                in("arr_en", 1), in("arr_len", PC::W_LEN), in("arr_wrap", 1), in("arr_we", 1),
+                in("arr_addr", PC::W_ADDR), in("arr_data", PC::W_DIST), in("pulse_w", PC::W_PW), in("win_en", 1),
+                in("win_src", 2), in("win_low", W::W_POS, true), in("win_high", W::W_POS, true),
+                in("min_period", PC::W_GAP), in("clear", 1), out("fire", 1), out("emit", 1), out("pulse", 1),
+                out("in_win", 1), out("dist", PC::W_REM, true), out("idx", PC::W_LEN), out("arr_done", 1),
+                out("fire_cnt", PC::W_FCNT), out("overlap_cnt", PC::W_OVL), out("overlap", 1), out("overlap_st", 1),
+                out("rate_over", 1), out("rate_over_st", 1), out("spacing_err", 1), out("spacing_st", 1),
+                out("freq_err", 1), out("freq_st", 1), out("ps_pulse", 1), out("ps_count", W::W_POS, true),
+                out("cfg_err", 1)};
+    }
     // the encoder counter block at its ports (hls/encoder_counter.h, rtl_ref/encoder_counter.v):
     // every input and every output, channels 0 and 1
     if (block == "encoder_counter") {

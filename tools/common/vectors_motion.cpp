@@ -7,99 +7,128 @@
 #include "golden/pso.h"
 #include "hls/encoder_counter.h"
 #include "hls/pso.h"
+#include "tools/common/pso_cmd.h"
 #include "tools/common/vectors.h"
 
 namespace lxt {
 
-namespace {
-
-vec_column vin(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, true}; }
-vec_column vout(const char* n, int bits, bool s = false) { return vec_column{n, bits, s, false}; }
-
-}  // namespace
-
 bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>& tables, std::string* err) {
-    using PC = lx::pso_cfg;
-    const int WP = lx::axis_widths::W_POS;
     std::mt19937_64 rng(seed ^ 0x5a5aULL);
 
-    // ---- pso: a 2D path of random straight segments with reversals, window on part of it
-    vec_table pso{"pso",
-                  {vin("step0", 2, true), vin("step1", 2, true), vin("step2", 2, true), vin("pos0", WP, true),
-                   vin("pos1", WP, true), vin("pos2", WP, true), vin("enable", 1), vin("fire_dist", PC::W_DIST),
-                   vin("pulse_w", PC::W_PW), vin("win_en", 1), vin("win_low", WP, true), vin("win_high", WP, true),
-                   vin("clear", 1), vout("fire", 1), vout("emit", 1), vout("pulse", 1), vout("in_win", 1),
-                   vout("dist", PC::W_REM, true), vout("fire_cnt", PC::W_FCNT), vout("overlap_cnt", PC::W_OVL),
-                   vout("overlap_st", 1), vout("cfg_err", 1)},
-                  {}};
+    // ---- pso (columns: lxt::vec_layout("pso"), every port). Four parts of the run:
+    //      1 (0 .. 40 %)  2D path of random straight segments with reversals (K 16), window on
+    //                     x in [-200, 200] in its second half, live distance and width changes
+    //                     (overlaps), a clear every 20000 calls;
+    //      2 (40 .. 60 %) 3D path, K 8, array mode: 8 entries (3..40 counts) written while
+    //                     disabled, the run wraps; the window on z;
+    //      3 (60 .. 80 %) part-speed: a rate profile up to 30 MHz (clamped, rate_over), laser
+    //                     minimum period 100 (spacing_err, freq_err), window on the pulse count;
+    //      4 (80 .. 100 %) 2D again (K 4), with enable toggles and one-call invalid
+    //                     configurations (K 0, distance below 2 counts, window low > high)
+    vec_table pso{"pso", vec_layout("pso"), {}};
     {
         lx::pso h;
         golden::pso g;
         g.reset();
-        lx::pso_regs hr;
-        golden::pso_regs gr;
         int64_t pos[3] = {0, 0, 0};
-        double acc[2] = {0, 0}, vel[2] = {0, 0};
+        double acc[3] = {0, 0, 0}, vel[3] = {0, 0, 0};
         long long seg_left = 0;
+        const long long p2 = calls * 2 / 5, p3 = calls * 3 / 5, p4 = calls * 4 / 5;
         for (long long t = 0; t < calls; ++t) {
+            const int part = t < p2 ? 1 : t < p3 ? 2 : t < p4 ? 3 : 4;
+            const bool three_d = part == 2;
             if (seg_left-- <= 0) {
                 const double ang = static_cast<double>(rng() % 6283) / 1000.0;
+                const double el = three_d ? static_cast<double>(rng() % 3141) / 1000.0 - 1.5707 : 0.0;
                 const double speed = 0.05 + static_cast<double>(rng() % 900) / 1000.0;  // counts per call
-                vel[0] = speed * std::cos(ang);
-                vel[1] = speed * std::sin(ang);
+                vel[0] = speed * std::cos(ang) * std::cos(el);
+                vel[1] = speed * std::sin(ang) * std::cos(el);
+                vel[2] = speed * std::sin(el);
                 seg_left = 200 + static_cast<long long>(rng() % 3000);
             }
-            const bool enable = t >= 5;
-            const bool win_en = t >= calls / 2;
-            const uint64_t fire_dist = (t < calls / 3 ? 128ULL : 37ULL) << 32;  // live change
-            const int pulse_w = t < calls / 4 ? 10 : 60;                        // overlaps later
-            const bool clear = t % 20000 == 19999;
-            lx::pso_in hi{};
+            golden::pso_regs gr;
             golden::pso_in gi;
-            for (int a = 0; a < 2; ++a) {
+            gr.enable = t >= 5;
+            gr.win_src = 0;
+            gr.win_low = -200;
+            gr.win_high = 200;
+            gr.clear = t % 20000 == 19999;
+            if (part == 1) {
+                gr.axis_mask = 3;
+                gr.win_en = t >= p2 / 2;
+                gr.fire_dist = (t < p2 / 3 ? 128ULL : 37ULL) << 32;  // live change
+                gr.pulse_w = t < p2 / 4 ? 10 : 60;                   // overlaps later
+            } else if (part == 2) {
+                // entries written in the first calls of the part (enable low), then an array run
+                const long long k = t - p2;
+                gr.enable = k >= 12;
+                gr.axis_mask = 7;
+                gr.win_k = 8;
+                gr.arr_en = true;
+                gr.arr_len = 8;
+                gr.arr_wrap = true;
+                if (k < 8) {
+                    gr.arr_we = true;
+                    gr.arr_addr = static_cast<int>(k);
+                    gr.arr_data = (3ULL + static_cast<uint64_t>(rng() % 38)) * (1ULL << 32) + (rng() & 0xffffffffULL);
+                }
+                gr.pulse_w = 4;
+                gr.win_en = true;
+                gr.win_src = 2;
+                gr.win_low = -300;
+                gr.win_high = 300;
+            } else if (part == 3) {
+                const long long k = t - p3;
+                gr.enable = k >= 2;
+                gr.part_speed = true;
+                gr.fire_dist = (k < (p4 - p3) / 2 ? 20ULL : 5ULL) << 32;
+                gr.pulse_w = 2;
+                gr.min_period = 100;
+                gr.win_en = true;
+                gr.win_src = 3;
+                gr.win_low = 100;
+                gr.win_high = 2000;
+                // rate profile: a ramp from 0 to 30 MHz and back, period 4000 calls
+                const long long ph = k % 4000;
+                const double mhz = 30.0 * static_cast<double>(ph < 2000 ? ph : 4000 - ph) / 2000.0;
+                gi.ps_inc = static_cast<uint64_t>(mhz / 100.0 * 4294967296.0);
+            } else {
+                const long long k = t - p4;
+                gr.axis_mask = 3;
+                gr.win_k = 4;
+                gr.fire_dist = (9ULL << 32) + 0x80000000ULL;
+                gr.pulse_w = 3;
+                gr.enable = k % 1500 >= 3;
+                if (k % 2500 == 1000) gr.win_k = 0;
+                if (k % 2500 == 1700) gr.fire_dist = (1ULL << 32);
+                if (k % 2500 == 2200) {
+                    gr.win_en = true;
+                    gr.win_low = 5;
+                    gr.win_high = 4;
+                }
+            }
+            for (int a = 0; a < 3; ++a) {
+                if (part == 3 || (a == 2 && !three_d)) {
+                    gi.step[a] = 0;
+                    continue;
+                }
                 acc[a] += vel[a];
                 int st = 0;
                 if (acc[a] >= 1.0) st = 1;
                 if (acc[a] <= -1.0) st = -1;
                 acc[a] -= st;
                 pos[a] += st;
-                hi.step[a] = st;
                 gi.step[a] = st;
             }
-            hi.step[2] = 0;
-            for (int a = 0; a < 3; ++a) {
-                hi.pos[a] = pos[a];
-                gi.pos[a] = pos[a];
-            }
-            hi.ps_inc = 0;
-            gi.ps_inc = 0;
-            hr.enable = gr.enable = enable;
-            hr.fire_dist = fire_dist;
-            gr.fire_dist = fire_dist;
-            hr.pulse_w = pulse_w;
-            gr.pulse_w = pulse_w;
-            hr.win_en = gr.win_en = win_en;
-            hr.win_src = 0;
-            gr.win_src = 0;
-            hr.win_low = -200;
-            gr.win_low = -200;
-            hr.win_high = 200;
-            gr.win_high = 200;
-            hr.clear = gr.clear = clear;
-            const lx::pso::out_t ho = h.step(hi, hr);
+            for (int a = 0; a < 3; ++a) gi.pos[a] = pos[a];
+            const lx::pso::out_t ho = h.step(pso_to_hls(gi), pso_to_hls(gr));
             const golden::pso::out go = g.step(gi, gr);
-            const int64_t gdist = static_cast<int64_t>(go.dist * 4294967296.0L);
-            if (ho.fire != go.fire || ho.emit != go.emit || ho.pulse != go.pulse || ho.in_win != go.in_win ||
-                ho.dist.to_int64() != gdist || ho.fire_cnt.to_uint64() != go.fire_cnt ||
-                ho.overlap_cnt.to_int64() != go.overlap_cnt || ho.overlap_st != go.overlap_st ||
-                ho.cfg_err != go.cfg_err) {
-                if (err) *err = "pso: hls/golden mismatch at call " + std::to_string(t);
+            const std::string m = pso_compare(ho, go);
+            if (!m.empty()) {
+                if (err) *err = "pso: hls/golden mismatch at call " + std::to_string(t) + ": " + m;
                 return false;
             }
-            pso.rows.push_back({hi.step[0].to_int64(), hi.step[1].to_int64(), 0, pos[0], pos[1], pos[2], enable,
-                                static_cast<int64_t>(fire_dist), pulse_w, win_en, -200, 200, clear, go.fire, go.emit,
-                                go.pulse, go.in_win, gdist, static_cast<int64_t>(go.fire_cnt), go.overlap_cnt,
-                                go.overlap_st, go.cfg_err});
+            pso.rows.push_back(pso_vec_row(gi, gr, go));
         }
     }
 
