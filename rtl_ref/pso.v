@@ -96,7 +96,6 @@ module pso (
     localparam integer W_REM    = 58;   // remainder, signed
     localparam integer K_MAX    = 16;   // longest tracking window
     localparam integer W_K      = 5;
-    localparam integer W_WIN    = 6;    // travel D, signed -K..K
     localparam integer S_MAX    = 768;  // 3 K_MAX^2
     localparam integer W_S      = 10;
     localparam integer W_CHORD  = 37;
@@ -165,8 +164,11 @@ module pso (
     reg [2:0]               mask_q;
     reg [6:0]               len_q;
     // stage A
-    reg signed [W_WIN-1:0]  trav0_q, trav1_q, trav2_q;
-    reg                     a_rev_q, a_kclose_q, a_pulse_q, a_inwin_q, a_v_q;
+    reg [11:0]              ta_q;         // |D| per axis (4 bits each, axis 0 low)
+    reg [2:0]               tp_q, tn_q;   // D > 0, D < 0 per axis
+    reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
+    reg                     a_wen_q;      // window of this call: enable, position, edges (the
+    reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R)
     reg [W_S-1:0]           a_s_q;
     reg [W_INC-1:0]         ph_q;
     reg signed [W_POS-1:0]  ps_cnt_q;
@@ -189,6 +191,7 @@ module pso (
     // stage B2
     reg [W_REM-1:0]         rem_q, dist_q;
     reg [6:0]               idx_q;
+    reg [6:0]               nx_q, nx2_q, nx3_q;   // next(idx), next(next(idx)), next^3(idx)
     reg                     done_q;
     reg [W_PW-1:0]          timer_q;
     reg [W_GAP-1:0]         since_q;
@@ -208,10 +211,22 @@ module pso (
     wire        k_ok    = (i_win_k != 5'd0) && (!i_win_k[4] || (i_win_k[3:0] == 4'd0));
     wire        axes_ok = i_part_speed || (i_axis_mask != 3'd0);
     wire        len_ok  = (i_arr_len != 7'd0) && (!i_arr_len[6] || (i_arr_len[5:0] == 6'd0));
-    wire [63:0] used    = i_arr_len[6] ? {64{1'b1}} : ((64'd1 << i_arr_len[5:0]) - 64'd1);
+    wire [63:0] used;     // entries 0 .. arr_len - 1 (a thermometer code, no carry chain)
+    genvar ug;
+    generate
+        for (ug = 0; ug < 64; ug = ug + 1) begin : g_used
+            assign used[ug] = (i_arr_len > ug);
+        end
+    endgenerate
     wire        thr_ok  = i_arr_en ? (len_ok && ((bad_d & used) == 64'd0))
                                    : (i_fire_dist[W_DIST-1:D_FRAC+1] != 23'd0);
-    wire        win_ok  = !i_win_en || ((i_win_low <= i_win_high) && (i_win_src != 2'd3 || i_part_speed));
+    // win_low <= win_high: the sign of high - low (39 bits) as a carry-select subtract (19-bit low
+    // part; the upper 20 bits with borrow 0 and 1)
+    wire [20:0] wlo_l = {1'b0, i_win_high[18:0], 1'b1} + {1'b0, ~i_win_low[18:0], 1'b1};  // [20]: no borrow
+    wire [19:0] wup0  = {i_win_high[37], i_win_high[37:19]} + {~i_win_low[37], ~i_win_low[37:19]};
+    wire [20:0] wup1  = {i_win_high[37], i_win_high[37:19], 1'b1} + {~i_win_low[37], ~i_win_low[37:19], 1'b1};
+    wire        win_le = !(wlo_l[20] ? wup1[20] : wup0[19]);
+    wire        win_ok  = !i_win_en || (win_le && (i_win_src != 2'd3 || i_part_speed));
     wire        cfg_ok  = k_ok && axes_ok && thr_ok && win_ok && (i_pulse_w != 16'd0);
 
     // latched modes as seen in this call (the first call of a run latches them)
@@ -219,6 +234,23 @@ module pso (
     wire [2:0] mask_e   = run_q ? mask_q : i_axis_mask;
     wire       arr_en_e = run_q ? arr_en_q : i_arr_en;
     wire [6:0] len_e    = run_q ? len_q : i_arr_len;
+
+    // carry-select W_REM-bit add with carry-in: low 29 bits, upper 29 bits for carry 0 and 1
+    // ({a, c} + {b, c}: the carry-in through bit 0 of one adder)
+    localparam integer LH = W_REM / 2;
+    function [W_REM-1:0] csel;
+        input [W_REM-1:0] a, b;
+        input             cin;
+        reg [LH+1:0]        lo;
+        reg [W_REM-LH-1:0]  hi0;
+        reg [W_REM-LH:0]    hi1;
+        begin
+            lo  = {1'b0, a[LH-1:0], cin} + {1'b0, b[LH-1:0], cin};
+            hi0 = a[W_REM-1:LH] + b[W_REM-1:LH];
+            hi1 = {a[W_REM-1:LH], 1'b1} + {b[W_REM-1:LH], 1'b1};
+            csel = {lo[LH+1] ? hi1[W_REM-LH:1] : hi0, lo[LH:1]};
+        end
+    endfunction
 
     function [6:0] next_idx;   // next array index (0 after the last entry)
         input [6:0] i;
@@ -240,34 +272,53 @@ module pso (
     wire [W_DIST-1:0] a0 = !run_q ? entry0_q : b_fire1_q ? e1 : e0;
     wire [W_DIST-1:0] a1 = b_fire1_q ? e2 : e1;
     // this call's write forwarded
-    wire [6:0]        nx  = next_idx(idx_q, len_q);
     wire [W_DIST-1:0] t0a = (i_arr_we && i_arr_addr == idx_q[5:0]) ? i_arr_data : a0;
-    wire [W_DIST-1:0] t1a = (i_arr_we && i_arr_addr == nx[5:0]) ? i_arr_data : a1;
+    wire [W_DIST-1:0] t1a = (i_arr_we && i_arr_addr == nx_q[5:0]) ? i_arr_data : a1;
     wire [W_DIST-1:0] thr0 = arr_en_e ? t0a : i_fire_dist;
     wire [W_DIST-1:0] thr1 = arr_en_q ? t1a : i_fire_dist;
 
-    wire [W_CHORD-1:0] chord = r_v_q ? r_chord_q : {W_CHORD{1'b0}};
-    wire [W_CHORD-1:0] pr    = r_rev_q ? part_q : {W_CHORD{1'b0}};
-    wire [W_INCR-1:0]  one   = {{(W_INCR-D_FRAC-1){1'b0}}, r_pulse_q, {D_FRAC{1'b0}}};
-    wire [W_INCR-1:0]  y     = {1'b0, pr} + {1'b0, chord} + one;
-    wire [W_INCR-1:0]  x     = r_kclose_q ? y : ({1'b0, pr} + one);
-    wire [W_REM-1:0]   y58   = {{(W_REM-W_INCR){1'b0}}, y};
-    wire [W_REM-1:0]   x58   = {{(W_REM-W_INCR){1'b0}}, x};
-    wire [W_REM-1:0]   ym0_d = y58 - {2'b00, thr0};
-    wire [W_REM-1:0]   xm0_d = x58 - {2'b00, thr0};
-    wire [W_REM-1:0]   ym1_d = y58 - {2'b00, thr1};
-    wire [W_REM-1:0]   xm1_d = x58 - {2'b00, thr1};
+    // The ROM output is used unmasked: while r_v = 1 it is the chord of hls/ (the last two calls
+    // ran); while r_v = 0 (a run's first calls) b_x, b_y and part are stored as 0 and the
+    // differences are unused (b_v = 0: no fire, dist = rem + b_y).
+    // pr | cp and pr + cp: a generator pulse (1.0, bit 32) only comes with chord 0 and pr 0.
+    wire [W_REM-1:0]   pr  = {{(W_REM-W_CHORD){1'b0}}, r_rev_q ? part_q : {W_CHORD{1'b0}}};
+    wire [W_REM-1:0]   cp  = {{(W_REM-W_CHORD){1'b0}}, r_chord_q | {r_pulse_q, {D_FRAC{1'b0}}}};
+    wire [W_REM-1:0]   y58 = csel(pr, cp, 1'b0);                 // y = pr + chord + one
+    wire [W_INCR-1:0]  y   = y58[W_INCR-1:0];
+    wire [W_INCR-1:0]  x   = r_kclose_q ? y : (pr[W_INCR-1:0] | cp[W_INCR-1:0] & {W_INCR{r_pulse_q}});
+    // y - thr = pr + cp + ~thr + 1 (carry-save, then one carry-select add); x - thr is y - thr
+    // after a K close, else (pr + one) - thr
+    wire [W_REM-1:0]   nt0 = ~{2'b00, thr0};
+    wire [W_REM-1:0]   nt1 = ~{2'b00, thr1};
+    wire [W_REM-1:0]   po  = pr | (cp & {W_REM{r_pulse_q}});          // pr + one
+    wire [W_REM-1:0]   ym0_d = csel(pr ^ cp ^ nt0, {((pr & cp) | (pr & nt0) | (cp & nt0)), 1'b0}, 1'b1);
+    wire [W_REM-1:0]   ym1_d = csel(pr ^ cp ^ nt1, {((pr & cp) | (pr & nt1) | (cp & nt1)), 1'b0}, 1'b1);
+    wire [W_REM-1:0]   pm0   = csel(po, nt0, 1'b1);
+    wire [W_REM-1:0]   pm1   = csel(po, nt1, 1'b1);
+    wire [W_REM-1:0]   xm0_d = r_kclose_q ? ym0_d : pm0;
+    wire [W_REM-1:0]   xm1_d = r_kclose_q ? ym1_d : pm1;
 
     // ---- stage B2 ------------------------------------------------------------------------------
     wire [W_REM-1:0] ym   = b_fire1_q ? b_ym1_q : b_ym0_q;
     wire [W_REM-1:0] xm   = b_fire1_q ? b_xm1_q : b_xm0_q;
-    wire [W_REM-1:0] vm   = rem_q + ym;                      // value - thr
+    wire [W_REM-1:0] vm   = csel(rem_q, ym, 1'b0);           // value - thr
     wire             fire = b_v_q && !done_q && !vm[W_REM-1];
-    wire [W_REM-1:0] rem_d  = done_q ? rem_q : fire ? rem_q + xm : rem_q + {{(W_REM-W_INCR){1'b0}}, b_x_q};
-    wire [W_REM-1:0] dist_d = done_q ? dist_q : fire ? vm : rem_q + {{(W_REM-W_INCR){1'b0}}, b_y_q};
-    wire             last   = ({1'b0, idx_q} + 8'd1) >= {1'b0, len_q};
-    wire [6:0]       idx_d  = (fire && arr_en_q) ? (last ? (arr_wrap_q ? 7'd0 : idx_q) : idx_q + 7'd1) : idx_q;
+    wire [W_REM-1:0] rx   = csel(rem_q, xm, 1'b0);
+    wire [W_REM-1:0] r0   = csel(rem_q, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);
+    wire [W_REM-1:0] ry   = csel(rem_q, {{(W_REM-W_INCR){1'b0}}, b_y_q}, 1'b0);
+    wire [W_REM-1:0] rem_d  = done_q ? rem_q : fire ? rx : r0;
+    wire [W_REM-1:0] dist_d = done_q ? dist_q : fire ? vm : ry;
+    // the index moves to next(idx) (a register, as next(next(idx)) and next^3(idx): no add or
+    // compare after the fire decision); idx is the last entry iff next(idx) = 0
+    wire             last   = (nx_q == 7'd0);
+    wire             adv    = fire && arr_en_q && !(last && !arr_wrap_q);
+    wire [6:0]       idx_d  = adv ? nx_q : idx_q;
     wire             done_d = done_q || (fire && arr_en_q && last && !arr_wrap_q);
+    // the first call of a run: next(0), next(next(0)), next^3(0) for the latched length
+    wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
+    wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
+    wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
+    wire [6:0]       nx4    = next_idx(nx3_q, len_q);
     wire             emit   = fire && b_inwin_q;
     wire             overlap  = emit && (timer_q != 16'd0);
     wire             freq_err = emit && (i_min_period != 16'd0) &&
@@ -280,12 +331,17 @@ module pso (
     wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
-    wire             rate_over = ps_e && (i_ps_inc > INC_MAX);
-    wire [W_INC-1:0] inc       = (i_ps_inc > INC_MAX) ? INC_MAX : i_ps_inc;
-    wire [W_INC:0]   ph_sum    = {1'b0, ph_q} + {1'b0, inc};
+    // the clamp compare and the two phase sums side by side (no add after the compare)
+    wire             over      = (i_ps_inc > INC_MAX);
+    wire             rate_over = ps_e && over;
+    wire [W_INC-1:0] inc       = over ? INC_MAX : i_ps_inc;
+    wire [W_INC:0]   ph_in     = {1'b0, ph_q} + {1'b0, i_ps_inc};
+    wire [W_INC:0]   ph_max    = {1'b0, ph_q} + {1'b0, INC_MAX};
+    wire [W_INC:0]   ph_sum    = over ? ph_max : ph_in;
     wire             ps_pulse  = ps_e && ph_sum[W_INC];
     wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
-    wire signed [W_POS-1:0] ps_cnt_d = ps_pulse ? ps_cnt_q + 38'sd1 : ps_cnt_q;
+    wire signed [W_POS-1:0] ps_cnt1  = ps_cnt_q + 38'sd1;
+    wire signed [W_POS-1:0] ps_cnt_d = ps_pulse ? ps_cnt1 : ps_cnt_q;
     // minimum spacing: k = 0 shows the previous sample's check and loads; k = 1..16 step k - 1
     wire             sp_load   = ps_e && (sp_k_q == 5'd0);
     wire             sp_step   = ps_e && (sp_k_q != 5'd0);
@@ -293,29 +349,55 @@ module pso (
     wire             spacing_err = sp_load && sp_full_q && sp_mnz_q && ({8'd0, sp_prod} > sp_thr_q);
     wire [W_SPHI-1:0] sp_sh    = sp_hi_q + (sp_m_q[0] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}});
 
-    // ---- stage A: tracking window --------------------------------------------------------------
-    wire signed [W_WIN-1:0] d0 = (!ps_e && mask_e[0]) ? {{(W_WIN-2){i_step0[1]}}, i_step0} : {W_WIN{1'b0}};
-    wire signed [W_WIN-1:0] d1 = (!ps_e && mask_e[1]) ? {{(W_WIN-2){i_step1[1]}}, i_step1} : {W_WIN{1'b0}};
-    wire signed [W_WIN-1:0] d2 = (!ps_e && mask_e[2]) ? {{(W_WIN-2){i_step2[1]}}, i_step2} : {W_WIN{1'b0}};
-    wire rev = ((d0 != 0) && (trav0_q != 0) && (d0[W_WIN-1] != trav0_q[W_WIN-1])) ||
-               ((d1 != 0) && (trav1_q != 0) && (d1[W_WIN-1] != trav1_q[W_WIN-1])) ||
-               ((d2 != 0) && (trav2_q != 0) && (d2[W_WIN-1] != trav2_q[W_WIN-1]));
-    wire signed [W_WIN-1:0] dn0 = (rev ? {W_WIN{1'b0}} : trav0_q) + d0;
-    wire signed [W_WIN-1:0] dn1 = (rev ? {W_WIN{1'b0}} : trav1_q) + d1;
-    wire signed [W_WIN-1:0] dn2 = (rev ? {W_WIN{1'b0}} : trav2_q) + d2;
-    wire [W_WIN-1:0] mg0 = dn0[W_WIN-1] ? -dn0 : dn0;
-    wire [W_WIN-1:0] mg1 = dn1[W_WIN-1] ? -dn1 : dn1;
-    wire [W_WIN-1:0] mg2 = dn2[W_WIN-1] ? -dn2 : dn2;
-    wire kclose = (mg0 >= {1'b0, i_win_k}) || (mg1 >= {1'b0, i_win_k}) || (mg2 >= {1'b0, i_win_k});
-    wire [W_S-1:0] s_d = mg0 * mg0 + mg1 * mg1 + mg2 * mg2;
+    // ---- stage A: tracking window -------------------------------------------------------------
+    // Per axis the travel D is kept as |D| (ta, 0..15: a window closes when |D| reaches K <= 16)
+    // and its sign (tp: D > 0, tn: D < 0), so the call needs no add before the decisions:
+    //   rev_i  = step +1 against D < 0, or step -1 against D > 0 (an untracked axis has D = 0)
+    //   |Dn_i| = (rev ? 0 : |D_i|) + |d_i|, and its square = rev ? |d_i| : (|d_i| ? (|D_i| + 1)^2
+    //            : |D_i|^2) (squares of the 4-bit register: LUTs)
+    //   kclose = some |Dn_i| >= K (compares of the register with K, picked by rev and the move)
+    wire       k0 = (i_win_k == 5'd0);
+    wire       k1 = (i_win_k <= 5'd1);
+    wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
+    wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
+    wire [2:0] tr  = run_q ? (mask_q & {3{!ps_q}}) : (i_axis_mask & {3{!i_part_speed}});
+    wire [2:0] rev_i = (stp & tn_q) | (stm & tp_q);
+    wire       rev = |rev_i;
+    wire [2:0] up  = stp & tr;
+    wire [2:0] dw  = stm & tr;
+    wire [2:0] mv  = up | dw;
+    wire [8:0] sqs [0:2];
+    wire [2:0] kc;
+    wire [3:0] ta_n [0:2];
+    genvar ax;
+    generate
+        for (ax = 0; ax < 3; ax = ax + 1) begin : g_axis
+            wire [3:0] a    = ta_q[4*ax+3:4*ax];
+            wire [8:0] sq0  = a * a;
+            wire [8:0] sq1  = ({1'b0, a} + 5'd1) * ({1'b0, a} + 5'd1);
+            wire       ge0  = ({1'b0, a} >= i_win_k);
+            wire       ge1  = ({1'b0, a} + 5'd1 >= i_win_k);
+            wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
+            assign sqs[ax]  = mv[ax] ? (rev ? 9'd1 : sq1) : (rev ? 9'd0 : sq0);
+            assign kc[ax]   = mv[ax] ? (rev ? k1 : ge1) : (rev ? k0 : ge0);
+            assign ta_n[ax] = magn[3:0];
+        end
+    endgenerate
+    wire           kclose = |kc;
+    wire [W_S-1:0] s_d    = {1'b0, sqs[0]} + {1'b0, sqs[1]} + {1'b0, sqs[2]};
+    wire [11:0]    ta_d   = kclose ? 12'd0 : {ta_n[2], ta_n[1], ta_n[0]};
+    wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
+    wire [2:0]     tn_d   = (dw | (tn_q & {3{!rev}})) & {3{!kclose}};
     // window
     wire signed [W_POS-1:0] wp = (i_win_src == 2'd3) ? ps_cnt_d : (i_win_src == 2'd2) ? i_pos2 :
                                  (i_win_src == 2'd1) ? i_pos1 : i_pos0;
-    wire inw = !i_win_en || ((i_win_low <= wp) && (wp <= i_win_high));
+    // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
+    // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
+    wire r_inwin_d = !a_wen_q || ((a_wlo_q <= a_wp_q) && (a_wp_q <= a_whi_q));
 
     // array read addresses for the next call's B1 (from this call's index)
-    wire [6:0] rn1 = next_idx(idx_q, len_e);
-    wire [6:0] rn2 = next_idx(rn1, len_e);
+    wire [6:0] rn1 = nx_q;
+    wire [6:0] rn2 = nx2_q;
 
     // ---- register update -----------------------------------------------------------------------
     always @(posedge i_clk) begin
@@ -358,13 +440,16 @@ module pso (
             arr_wrap_q <= 1'b0;
             mask_q <= 3'd0;
             len_q <= 7'd1;
-            trav0_q <= {W_WIN{1'b0}};
-            trav1_q <= {W_WIN{1'b0}};
-            trav2_q <= {W_WIN{1'b0}};
+            ta_q <= 12'd0;
+            tp_q <= 3'd0;
+            tn_q <= 3'd0;
             a_rev_q <= 1'b0;
             a_kclose_q <= 1'b0;
             a_pulse_q <= 1'b0;
-            a_inwin_q <= 1'b0;
+            a_wen_q <= 1'b0;
+            a_wp_q <= {W_POS{1'b0}};
+            a_wlo_q <= {W_POS{1'b0}};
+            a_whi_q <= {W_POS{1'b0}};
             a_v_q <= 1'b0;
             a_s_q <= {W_S{1'b0}};
             ph_q <= {W_INC{1'b0}};
@@ -395,6 +480,9 @@ module pso (
             rem_q <= {W_REM{1'b0}};
             dist_q <= {W_REM{1'b0}};
             idx_q <= 7'd0;
+            nx_q <= 7'd0;
+            nx2_q <= 7'd0;
+            nx3_q <= 7'd0;
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             since_q <= {W_GAP{1'b1}};
@@ -415,13 +503,16 @@ module pso (
             mask_q <= mask_e;
             len_q <= len_e;
             // A
-            trav0_q <= kclose ? {W_WIN{1'b0}} : dn0;
-            trav1_q <= kclose ? {W_WIN{1'b0}} : dn1;
-            trav2_q <= kclose ? {W_WIN{1'b0}} : dn2;
+            ta_q <= ta_d;
+            tp_q <= tp_d;
+            tn_q <= tn_d;
             a_rev_q <= rev;
             a_kclose_q <= kclose;
             a_pulse_q <= ps_pulse;
-            a_inwin_q <= inw;
+            a_wen_q <= i_win_en;
+            a_wp_q <= wp;
+            a_wlo_q <= i_win_low;
+            a_whi_q <= i_win_high;
             a_v_q <= 1'b1;
             a_s_q <= s_d;
             ph_q <= ph_d;
@@ -445,11 +536,11 @@ module pso (
             r_rev_q <= a_rev_q;
             r_kclose_q <= a_kclose_q;
             r_pulse_q <= a_pulse_q;
-            r_inwin_q <= a_inwin_q;
+            r_inwin_q <= a_v_q && r_inwin_d;
             r_v_q <= a_v_q;
             // B1
-            b_x_q <= x;
-            b_y_q <= y;
+            b_x_q <= r_v_q ? x : {W_INCR{1'b0}};
+            b_y_q <= r_v_q ? y : {W_INCR{1'b0}};
             b_xm0_q <= xm0_d;
             b_ym0_q <= ym0_d;
             b_xm1_q <= xm1_d;
@@ -457,11 +548,20 @@ module pso (
             b_inwin_q <= r_inwin_q;
             b_v_q <= r_v_q;
             b_fire1_q <= fire;
-            if (!done_q) part_q <= r_kclose_q ? {W_CHORD{1'b0}} : chord;
+            if (!done_q) part_q <= (r_kclose_q || !r_v_q) ? {W_CHORD{1'b0}} : r_chord_q;
             // B2
             rem_q <= rem_d;
             dist_q <= dist_d;
             idx_q <= idx_d;
+            if (!run_q) begin
+                nx_q <= nx_0;
+                nx2_q <= nx2_0;
+                nx3_q <= nx3_0;
+            end else if (adv) begin
+                nx_q <= nx2_q;
+                nx2_q <= nx3_q;
+                nx3_q <= nx4;
+            end
             done_q <= done_d;
             timer_q <= timer_d;
             since_q <= since_d;
