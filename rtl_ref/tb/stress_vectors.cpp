@@ -910,9 +910,13 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
 // per call on every axis: fires in consecutive calls at small distances; reversals), enable
 // drops of 1..3 calls, clears, live distance changes, array writes while running (to the entry
-// of the next fire and the one after it, too: the RAM forwarding of the RTL). The first 120
+// of the next fire and the one after it, too: the RAM forwarding of the RTL; one segment in 3
+// writes there in half of its calls). The first 120
 // calls are directed: an array run in part-speed with a spacing check, dropped for one call at
-// idx != 0 while entry 0 is rewritten, then restarted (the first call of a run reads entry 0).
+// idx != 0 while entry 0 is rewritten, then restarted (the first call of a run samples entry 0
+// for the spacing check); again with entry 0 rewritten in the first call of the run. Calls
+// 120..319: one count per call on x, an array of 3 entries without wrap (done, idx stays at the
+// last entry), then emits exactly 2 calls apart with min_period 2 (not early) and 3 (freq_err).
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -926,6 +930,8 @@ vec_table pso_stress(rng_t& r, long long calls) {
     int rewrite = 0;   // calls left of an array rewrite (enable low)
     int off = 0;       // calls left of an enable drop
     int64_t last_idx = 0;
+    bool hammer = false;
+    long long drop_call = -1;  // directed prologue: the first call from 60 on with idx != 0  // this segment writes the entries at idx .. idx + 2 in most calls
     auto draw_dist = [&]() -> uint64_t {
         switch (r.range(0, 4)) {
             case 0: return C::MIN_DIST;
@@ -967,6 +973,12 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 if (r.chance(2)) dir[a] = -dir[a];
             }
             inc = draw_inc();
+            hammer = r.chance(3);
+            if (hammer && r.chance(2)) {  // fast 3D tracking with small entries: fires a call or two apart
+                x.part_speed = false;
+                x.axis_mask = 7;
+                for (int a = 0; a < 3; ++a) prob[a] = 1.0;
+            }
             if (r.chance(7)) {  // an invalid segment, short
                 seg_end = n + r.range(1, 40);
                 switch (r.range(0, 8)) {
@@ -1011,11 +1023,12 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 --off;
                 x.enable = false;
             }
-            if (r.chance(50)) {  // a write while running: often the entry of the next fire or the one after
+            if (r.chance(hammer ? 2 : 50)) {  // a write while running: often the entry of the next fire or the one after
                 x.arr_we = true;
                 x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 2)) % 64 : r.range(0, 63));
                 x.arr_data = r.chance(30) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
-                                          : draw_dist();
+                             : hammer    ? C::MIN_DIST + (r.u() & 0x1ffffffffULL)
+                                         : draw_dist();
             }
             if (r.chance(800)) g.fire_dist = draw_dist();  // live change
             x.fire_dist = g.fire_dist;
@@ -1035,16 +1048,39 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.arr_addr = static_cast<int>(n);
                 x.arr_data = (static_cast<uint64_t>(n) + 3) << 32;  // 3, 4, 5 counts
             }
-            x.enable = n >= 3 && n != 60;
-            if (n == 60) {  // dropped at idx != 0; entry 0 rewritten in that call
+            if (drop_call < 0 && n >= 60 && last_idx != 0) drop_call = n;
+            x.enable = n >= 3 && n != drop_call && n != 90;
+            if (n == drop_call) {  // dropped at idx != 0; entry 0 rewritten in that call (6 counts: not
+                            // flagged; entries 1, 2 would be)
                 x.arr_we = true;
                 x.arr_addr = 0;
                 x.arr_data = 6ULL << 32;
             }
-            if (n == 61) {  // first call of the new run: entry 0 rewritten again in this call
+            if (n == 91) {  // first call of the next run: entry 0 rewritten in this call (4 counts: flagged)
                 x.arr_we = true;
                 x.arr_addr = 0;
-                x.arr_data = 7ULL << 32;
+                x.arr_data = 4ULL << 32;
+            }
+        }
+        if (n >= 120 && n < 320) {  // directed: x moves one count per call
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            in.step[0] = 1;
+            in.pos[0] = n;
+            x.axis_mask = 1;
+            x.pulse_w = 1;
+            x.enable = n != 120 && n != 200 && n != 260;
+            if (n < 200) {  // an array of 3 entries without wrap: done after the third fire
+                x.arr_en = true;
+                x.arr_len = 3;
+                if (n < 123) {
+                    x.arr_we = true;
+                    x.arr_addr = static_cast<int>(n - 120);
+                    x.arr_data = (n == 121 ? 3ULL << 32 : 2ULL << 32) + (n == 122 ? 0x80000000ULL : 0);
+                }
+            } else {  // emits exactly 2 calls apart: min_period 2 is not early, 3 is
+                x.fire_dist = C::MIN_DIST;
+                x.min_period = n < 260 ? 2 : 3;
             }
         }
         const lx::pso::out_t o = m.step(lxt::pso_to_hls(in), lxt::pso_to_hls(x));
