@@ -37,9 +37,42 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl_ref")
 MODULES = ["input_filter", "quad_decoder", "pulse_multiplier", "output_pacer", "rephase",
            "dds_sincos", "error_map", "laserax_top", "encoder_counter", "pso"]
-# Every module file of rtl_ref/ is read (not only those of the table), so a block instantiated by
-# the top can never be missing from the design (the AXI wrappers are read too and ignored).
+# The files read for a module are found, not listed: the file that defines it and, transitively,
+# every rtl_ref/ file defining a module it instantiates (found by name in the text), so a block
+# instantiated by the top can never be missing from the design. Only those files are read, so a
+# module's netlist (and its placement at a fixed seed) does not move when an unrelated file is
+# added to rtl_ref/ (reading every file shifted Yosys' internal names and moved every fmax by
+# several MHz).
 SOURCES = sorted(os.path.join(RTL, f) for f in os.listdir(RTL) if f.endswith(".v"))
+
+
+def _module_files():
+    """{module name: defining file} over rtl_ref/*.v, and {file: text without comments}."""
+    defs, texts = {}, {}
+    for path in SOURCES:
+        with open(path) as f:
+            text = re.sub(r"/\*.*?\*/", "", re.sub(r"//[^\n]*", "", f.read()), flags=re.S)
+        texts[path] = text
+        for name in re.findall(r"^\s*module\s+(\w+)", text, flags=re.M):
+            defs[name] = path
+    return defs, texts
+
+
+def sources_for(top):
+    """The rtl_ref/ files the module top needs (its own file first, then the instantiated ones)."""
+    defs, texts = _module_files()
+    if top not in defs:
+        return list(SOURCES)   # unknown: read everything, hierarchy -check reports what is missing
+    need, todo = [], [defs[top]]
+    while todo:
+        path = todo.pop(0)
+        if path in need:
+            continue
+        need.append(path)
+        for name, dpath in defs.items():
+            if dpath not in need and re.search(r"^\s*" + name + r"\s*(#|\w)", texts[path], flags=re.M):
+                todo.append(dpath)
+    return need
 DEVICES = {
     "hx8k": {"nextpnr": ["--hx8k", "--package", "ct256"], "synth": [], "lcs": 7680},
     "up5k": {"nextpnr": ["--up5k", "--package", "sg48"], "synth": ["-dsp"], "lcs": 5280},
@@ -61,8 +94,8 @@ def run(cmd, cwd, log):
     return rc, time.time() - t0
 
 
-def read_verilog_cmd():
-    return "read_verilog " + " ".join(SOURCES)
+def read_verilog_cmd(top):
+    return "read_verilog " + " ".join(sources_for(top))
 
 
 def cell_counts(json_path, top):
@@ -122,7 +155,7 @@ def do_module(m, a):
     if a.no_generic:
         r["g_lut"] = r["g_ff"] = "-"
     gjson = os.path.join(out, f"{m}.generic.json")
-    script = (f"{read_verilog_cmd()}; hierarchy -check -top {m}; "
+    script = (f"{read_verilog_cmd(m)}; hierarchy -check -top {m}; "
               f"synth -flatten -top {m} -run begin:fine; opt -fast -full; techmap; opt -fast; "
               f"abc -lut 4; opt -fast; check -assert; write_json {gjson}")
     rc = 0 if a.no_generic else run(["yosys", "-q", "-p", script], out, os.path.join(out, f"{m}.generic.log"))[0]
@@ -138,7 +171,7 @@ def do_module(m, a):
     # iCE40, block alone
     ijson = os.path.join(out, f"{m}.ice40.json")
     taps = "chparam -set DEBUG_TAPS 1 laserax_top; " if (m == "laserax_top" and a.keep_taps) else ""
-    script = f"{read_verilog_cmd()}; {taps}synth_ice40 {' '.join(dev['synth'])} -top {m} -json {ijson}"
+    script = f"{read_verilog_cmd(m)}; {taps}synth_ice40 {' '.join(dev['synth'])} -top {m} -json {ijson}"
     rc, _ = run(["yosys", "-q", "-p", script], out, os.path.join(out, f"{m}.ice40.log"))
     if rc != 0:
         r["i_err"] = "synth_ice40 failed"
@@ -159,7 +192,7 @@ def do_module(m, a):
     with open(wv, "w") as f:
         f.write(text)
     wjson = os.path.join(out, f"wrap_{m}.json")
-    script = f"{read_verilog_cmd()} {wv}; {taps}synth_ice40 {' '.join(dev['synth'])} -top wrap_{m} -json {wjson}"
+    script = f"{read_verilog_cmd(m)} {wv}; {taps}synth_ice40 {' '.join(dev['synth'])} -top wrap_{m} -json {wjson}"
     rc, _ = run(["yosys", "-q", "-p", script], out, os.path.join(out, f"wrap_{m}.ice40.log"))
     if rc != 0:
         r["fmax"] = "harness synth failed"
