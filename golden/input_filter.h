@@ -10,6 +10,7 @@
 // from the output"; it has no fixed-width counter (the filter length n is used as given;
 // callers stay inside the register width, W_GLITCH = 8 or W_DEBOUNCE = 16 bits).
 #pragma once
+#include <algorithm>
 #include <cstdint>
 
 namespace golden {
@@ -34,5 +35,36 @@ private:
     int64_t run_ = 0;     // consecutive calls (ending at the previous call) with x != f
     int64_t n_prev_ = 0;  // N(t-1); first used at call index 3, set at every call
 };
+
+// Defined here (inline) so that the decoder's three filters are inlined into its step (simulation
+// speed of the testbenches); the definition is the golden one of DESIGN.md 4.1.
+inline input_filter::out input_filter::step(bool pin, int64_t n) {
+    const int64_t need = std::max<int64_t>(n_prev_, 1);  // N(t-1); N = 0 and N = 1 are the same
+    n_prev_ = n;
+    bool glitch = false;
+    if (calls_ >= 2) {
+        const bool x = pin_m2_;  // x(t) = pin(t-2)
+        if (!valid_) {
+            // first sample x(2) = pin(0): loaded, not filtered
+            f_ = x;
+            valid_ = true;
+            run_ = 0;
+        } else if (x != f_) {
+            ++run_;  // x has differed from the output on run_ consecutive calls ending at t
+            if (run_ >= need) {
+                f_ = x;
+                run_ = 0;
+            }
+        } else {
+            glitch = run_ > 0;  // x came back after differing for 1..N-1 calls: suppressed pulse
+            run_ = 0;           // a pulse shorter than max(N,1) calls never passes
+        }
+    } else {
+        ++calls_;
+    }
+    pin_m2_ = pin_m1_;
+    pin_m1_ = pin;
+    return out{f_, valid_, glitch};
+}
 
 }  // namespace golden
