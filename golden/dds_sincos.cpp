@@ -82,7 +82,15 @@ dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
         // outputs from the phase before this call's update. Reading: amplitude and P of this
         // call; ph is reduced mod the current P (only matters if P changed while running).
         const int64_t k = mod(ph_, P);
-        codes(k, P, amplitude, s1_, c1_);
+        if (!last_ok_ || k != last_k_ || P != last_P_ || amplitude != last_amp_) {
+            codes(k, P, amplitude, last_s_, last_c_);
+            last_ok_ = true;
+            last_k_ = k;
+            last_P_ = P;
+            last_amp_ = amplitude;
+        }
+        s1_ = last_s_;
+        c1_ = last_c_;
         ph_ = mod(ph_ + ostep, P);
     } else {
         // invalid configuration (never reached through axis_chain): hold, no division by 0

@@ -15,7 +15,8 @@
 //
 // Speed (issue 13): the codes are a pure function of (k, P, amp), so each instance memoises them
 // in a table indexed by k for the (P, amp) of the last call (a generation number invalidates the
-// whole table when P or amp changes); reset() clears the registers, not the memo.
+// whole table when P or amp changes), and the codes of the last lookup; reset() clears the
+// registers, not the memo.
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -42,6 +43,9 @@ private:
     std::vector<memo_entry> memo_;
     int64_t memo_P_ = 0, memo_amp_ = 0;
     uint32_t memo_gen_ = 0;
+    // and the codes of the last (k, P, amp) looked up (the phase stands still in most calls)
+    bool last_ok_ = false;
+    int64_t last_k_ = 0, last_P_ = 0, last_amp_ = 0, last_s_ = 0, last_c_ = 0;
 
     int64_t ph_ = 0;       // phase in [0, P)
     int64_t s1_ = 0;       // codes of the read stage (reset 0/0)

@@ -55,7 +55,7 @@ error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
     const int b = r.bank_sel ? 1 : 0;
     const error_map_geom& g = r.geom[b];
     out n;
-    const bool ok = geom_ok(g);
+    const bool ok = r.map_en && geom_ok(g);  // read only with map_en (no check while disabled)
     n.cfg_err = r.map_en && !ok;
     n.active = r.map_en && homed && ok;
     if (n.active && sample) {

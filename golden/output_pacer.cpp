@@ -32,10 +32,13 @@ output_pacer::out output_pacer::step(int64_t delta, int64_t pace_m, uint64_t thr
 
     // taps: B(t-2), P(t-2) = hist[1] before the shift
     const out o{emit, hist_p_[1], hist_b_[1], ovs, ovs_st_};
-    for (int i = 3; i > 0; --i) {
-        hist_b_[i] = hist_b_[i - 1];
-        hist_p_[i] = hist_p_[i - 1];
-    }
+    // the history shifts by one call (written out: as a loop the compiler calls memmove twice)
+    hist_b_[3] = hist_b_[2];
+    hist_b_[2] = hist_b_[1];
+    hist_b_[1] = hist_b_[0];
+    hist_p_[3] = hist_p_[2];
+    hist_p_[2] = hist_p_[1];
+    hist_p_[1] = hist_p_[0];
     hist_b_[0] = backlog_;
     hist_p_[0] = paced_;
     return o;
