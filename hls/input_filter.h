@@ -78,13 +78,6 @@ public:
         return o;
     }
 
-    // Settled with this pin: valid, counter 0, and the pin, both synchroniser stages and the output
-    // agree. Then step(pin, n) changes no register but ready_ (cnt + 1 >= N with cnt = 0) and
-    // returns {f, 1, 0}; hold(n) is that step (a clock enable of the other registers).
-    bool settled(bool pin) const { return valid_ && cnt_ == 0 && s1_ == f_ && s2_ == f_ && pin == f_; }
-    void hold(cnt_t n) { ready_ = n <= 1; }
-    bool level() const { return f_; }
-
 private:
     bool s1_, s2_, f_, valid_;
     bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)

@@ -66,46 +66,6 @@ public:
 
     out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
                bool clear) {
-        // quiet call: the three filters settled on their pins. Their outputs stay (valid, no
-        // glitch) and equal pa_ / pb_ (loaded with them every call), so no step, no illegal
-        // transition, no overspeed: only the spacing counter, the clear and the laser error act.
-        if (fa_.settled(a) && fb_.settled(b) && fe_.settled(lerr)) {
-            fa_.hold(glitch_n);
-            fb_.hold(glitch_n);
-            fe_.hold(glitch_n);
-            const bool fe = fe_.level();
-            if (clear) {
-                illegal_st_ = false;
-                ovs_st_ = false;
-                glitch_st_ = false;
-                err_cnt_ = 0;
-                if (!fe) lerr_alarm_ = false;
-            }
-            const bool lerr_now = primed_ && fe;
-            primed_ = true;  // valid
-            if (since_ != cfg::SINCE_MAX) since_ = since_ + 1;
-            close_ = uint<cfg::W_SPACING + 1>(since_) + 1 < min_spacing;
-            if (lerr_now) lerr_alarm_ = true;
-            out_t o;
-            o.step = 0;
-            o.raw_count = raw_;
-            o.illegal = false;
-            o.ovs = false;
-            o.err_cnt = err_cnt_;
-            o.illegal_st = illegal_st_;
-            o.ovs_st = ovs_st_;
-            o.lerr = lerr_now;
-            o.lerr_alarm = lerr_alarm_;
-            o.glitch_st = glitch_st_;
-            return o;
-        }
-        return step_full(a, b, lerr, glitch_n, min_spacing, clear);
-    }
-
-private:
-    // the general call (DESIGN 4.2)
-    out_t step_full(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
-                    bool clear) {
         const input_filter<cfg::W_GLITCH>::out_t ra = fa_.step(a, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t rb = fb_.step(b, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t re = fe_.step(lerr, glitch_n);
@@ -169,6 +129,7 @@ private:
         return o;
     }
 
+private:
     input_filter<cfg::W_GLITCH> fa_, fb_, fe_;
     bool pa_, pb_, primed_;
     raw_t raw_;
