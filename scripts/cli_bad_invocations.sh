@@ -84,7 +84,7 @@ expect 2 'vectors: --calls: 99 is out of range'                     vectors --ca
 expect 2 'vectors: --calls: .1e3. is not an integer'                vectors --calls 1e3
 expect 2 'vectors: --calls: 100000001 is out of range'              vectors --calls 100000001
 expect 2 "vectors: unknown option '--bogus'"                        vectors --bogus 1
-expect 2 'pso: --k: 64 is out of range \(allowed 0\.\.63\)'         pso --k 64
+expect 2 'pso: --k: 32 is out of range \(allowed 0\.\.31\)'         pso --k 32
 expect 2 'pso: --k: .1.5. is not an integer'                        pso --k 1.5
 expect 2 'pso: --pulse-w: -1 is out of range'                       pso --pulse-w -1
 expect 2 'pso: --speed-mm-s: 0 is out of range \(allowed \(0, '     pso --speed-mm-s 0
