@@ -335,19 +335,20 @@ module laserax_top #(
 
     // pacer: consumes the multiplier delta and the map delta of the previous call as two addends
     // (their sum is formed in the pacer's carry-save layer, so no adder precedes it)
-    wire signed [1:0]  pac_pstep;
+    wire signed [1:0]  pac_pstep, pac_pstep_nx;
     wire signed [37:0] pac_paced;
     wire signed [39:0] pac_backlog;
     wire               pac_ovs, pac_ovs_st;
     output_pacer u_pac (
         .i_clk(i_clk), .i_rst(blk_rst), .i_delta(mul_delta), .i_add(map_delta), .i_pace_m(r_pace_m),
         .i_thr(r_backlog_thr), .i_clear(r_clear),
-        .o_pstep(pac_pstep), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
+        .o_pstep(pac_pstep), .o_pstep_nx(pac_pstep_nx), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
         .o_ovs_st(pac_ovs_st));
 
-    // rephase: pacer step, debounced switch and laser error of the previous call
+    // rephase: pacer step, debounced switch and laser error of the previous call; the pacer's
+    // look-ahead (its next pstep) for the registered count decode (DESIGN 4.5)
     rephase u_rep (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_sw(swf_f), .i_sw_valid(swf_valid),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_pstep_nx(pac_pstep_nx), .i_sw(swf_f), .i_sw_valid(swf_valid),
         .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_period(r_period), .i_period_m1(r_period_m1),
         .i_period_m2(r_period_m2), .i_mark_len(r_mark_len),
         .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),

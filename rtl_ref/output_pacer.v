@@ -27,6 +27,8 @@ module output_pacer (
     input  wire [31:0]        i_thr,     // backlog alarm threshold
     input  wire               i_clear,   // register pulse: clears ovs_st (unless ovs)
     output wire signed [1:0]  o_pstep,   // emitted count: -1, 0, +1
+    output wire signed [1:0]  o_pstep_nx,// look-ahead: the o_pstep of the next call (emit, 0 in a
+                                         // reset call), for rephase's registered decode (DESIGN 4.4)
     output wire signed [37:0] o_paced,   // paced position P(t-2) (tap)
     output wire signed [39:0] o_backlog, // counts still to emit, B(t-2) (tap)
     output wire               o_ovs,     // pulse: |B(t-4)| > thr(t-1)
@@ -269,6 +271,7 @@ module output_pacer (
     end
 
     assign o_pstep   = e_prev_q;
+    assign o_pstep_nx = i_rst ? 2'sd0 : emit;
     assign o_paced   = {p_hi_q, p_lo_d_q};
     assign o_backlog = {b_hi_q, b_lo_q};
     assign o_ovs     = ovs_q;
@@ -290,6 +293,7 @@ module output_pacer (
     reg                   f_rst_p2;
     reg signed [FW-1:0]   f_pc, f_b1, f_pc1, f_b2, f_pc2;   // P(t); B, P of calls t-1, t-2
     reg signed [1:0]      f_e1;     // emitted count of the previous call
+    reg signed [1:0]      f_nx;     // o_pstep_nx of the previous call
     initial f_init = 1'b0;
 
     localparam [W_PACE+1:0] F_SINCE_MAX = {(W_PACE+2){1'b1}};
@@ -315,6 +319,7 @@ module output_pacer (
 
     always @(posedge i_clk) begin
         if (i_rst) f_init <= 1'b1;
+        f_nx       <= o_pstep_nx;
         f_rst_p    <= i_rst;
         f_clear_p  <= i_clear;
         f_ovs_st_p <= ovs_st_q;
@@ -377,6 +382,7 @@ module output_pacer (
         end
 `endif
         if (f_init) begin
+            assert(o_pstep == f_nx);   // the look-ahead is the next call's pstep
             if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
             // the carry-save sums equal the plain sums (the conservation proof uses the plain ones)
             assert(t_sum == t_a + t_b + t_m + t_n);

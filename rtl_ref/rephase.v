@@ -31,6 +31,10 @@ module rephase (
     input  wire               i_clk,
     input  wire               i_rst,       // synchronous, active high: rephase::reset()
     input  wire signed [1:0]  i_pstep,     // paced count from the pacer: -1, 0, +1
+    // look-ahead: the i_pstep of the next call, in every call (reset calls included); the pacer's
+    // o_pstep_nx. The count's direction relative to the homing direction (s_pos / s_neg) is
+    // registered from it, so its decode and fan-out are off the path from the pacer (DESIGN 4.5)
+    input  wire signed [1:0]  i_pstep_nx,
     input  wire               i_sw,        // debounced reference switch level
     input  wire               i_sw_valid,  // its input_filter valid flag
     input  wire               i_rehome,    // register pulse: back to stage 1
@@ -92,6 +96,7 @@ module rephase (
     reg signed [W_POS-1:0] b_q, b_d, c_q, c_d, z_q, z_d;
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
+    reg                    sp_q, sn_q;         // s_pos / s_neg of this call, from i_pstep_nx
 
     // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
     // The low half adds s (a W_LO-bit chain); the high half takes hi + 1 / hi - 1 (chains of the
@@ -128,9 +133,10 @@ module rephase (
     wire                    in2      = stage_q == 2'd2 && !leave;
     wire                    in3      = stage_q == 2'd3 && !leave;
     wire                    cap      = stage_q == 2'd1 && rise && !i_unhome;
-    // step in the homing direction
-    wire                    s_pos    = !pz && (pfwd == fwd_q);
-    wire                    s_neg    = !pz && (pfwd != fwd_q);
+    // step in the homing direction: s_pos = pstep != 0 && (pstep > 0) == fwd, s_neg likewise,
+    // registered in the previous call from i_pstep_nx and the next fwd (sp_q, sn_q)
+    wire                    s_pos    = sp_q;
+    wire                    s_neg    = sn_q;
     wire                    tr_pos   = tr_pos_q;     // tr > 0 (a register, see tr_pos_d)
 
     // 2. the extra count of this call (registers only)
@@ -448,6 +454,10 @@ module rephase (
             ostep_q    <= ostep_d;
             mark_q     <= mark_d;
         end
+        // the count decode of the next call: its pstep against its fwd (the reset value in a
+        // reset call)
+        sp_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == (i_rst || fwd_d));
+        sn_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d));
     end
 
     assign o_ostep   = ostep_q;
@@ -477,6 +487,7 @@ module rephase (
     initial f_init = 1'b0;
     reg [W_P-1:0]     f_per;                 // P (no initial value: any, then kept)
     reg               f_pnz;                 // the previous call had a real count
+    reg signed [1:0]  f_pnx;                 // i_pstep_nx of the previous call
     reg               f_swp, f_sws;
     reg [1:0]         f_stage;
     reg               f_dlast, f_dir;        // direction of the last count, homing direction
@@ -565,6 +576,7 @@ module rephase (
 
     always @(posedge i_clk) begin
         f_per <= f_per;
+        f_pnx <= i_pstep_nx;
         if (i_rst) begin
             f_init  <= 1'b1;
             f_pnz   <= 1'b0;
@@ -638,10 +650,13 @@ module rephase (
         assume(i_period_m1 == $signed({1'b0, f_per}) - 14'sd1 && i_period_m2 == $signed({1'b0, f_per}) - 14'sd2);
         assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
         assume(i_pstep != -2'sd2);
+        assume(!f_init || i_pstep == f_pnx);                  // the look-ahead input is exact
         assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart
         assume(i_mark_len >= f_p4 && i_mark_len <= f_per);
 
         if (f_init) begin
+            // the registered count decode is that of this call's pstep against fwd
+            assert(s_pos == (!pz && pfwd == fwd_q) && s_neg == (!pz && pfwd != fwd_q));
             // the paced stream, the stage machine and its inputs follow the text
             assert(paced_q == f_paced);
             assert(stage_q == f_stage && f_stage != 2'd0);

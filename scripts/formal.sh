@@ -156,6 +156,7 @@ MUTATIONS=(
   "rep_z|rephase.v|rephase|s/z_d     = bs_q + (p4_x ^/z_d     = bs_q + (mark_len_x ^/"
   "rep_mark_len|rephase.v|rephase|s/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_lt))/wire        in_rng = s_pos ? (u_m1 || (u_hz \&\& u_le))/"
   "rep_back_a|rephase.v|rephase|s/wire        tr_back  = (s_neg \&\& tr_is0)/wire        tr_back  = (s_neg \&\& tr_is0 \&\& 1'b0)/"
+  "rep_snx_fwd|rephase.v|rephase|s/(!i_pstep_nx\[1\] == (i_rst || fwd_d))/(!i_pstep_nx[1] == (i_rst || fwd_q))/"
   "rep_extra_lost|rephase.v|rephase|s/adj_d     = pz ? adj_q + lsgn_x : adj_q;/adj_d     = adj_q;/"
   "rep_adj_carry|rephase.v|rephase_adj|s/                    t_d   = t_pk;/                    t_d   = t_pd;/"
   "rep_first_load|rephase.v|rephase_adj|s/wire signed \[W_BR-1:0\] t_ld   = (d_br <<< 1) - px_br;/wire signed [W_BR-1:0] t_ld   = (d_br <<< 1) - px_br + 1;/"

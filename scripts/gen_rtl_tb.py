@@ -30,8 +30,9 @@ The spec (BLOCKS below), one entry per block:
   unused    DUT ports that are not vector columns: inputs are held at their idle value, outputs
             are left unchecked
   tb_params testbench parameters besides N_MAX (name, default, comment)
-  extra     block-specific Verilog: `decls` (after the include) and `apply` (end of apply_inputs);
-            @field@ stands for the row slice of that field
+  extra     block-specific Verilog: `decls` (after the include), `apply` (end of apply_inputs) and
+            `idle` (end of idle_inputs); @field@ stands for the row slice of that field,
+            @next.field@ for that slice of `row_nx` (a register the block's `decls` declare)
 Adding a column to a block is one IN/OUT line in its `fields` (plus the column in
 lxt::vec_layout() and the writers, and the port in the RTL). The generator refuses a spec whose
 ports do not match the port list of rtl_ref/<module>.v (name, direction, width, signedness), so
@@ -188,7 +189,7 @@ BLOCKS = [
             OUT("ovs", 1),
             OUT("ovs_st", 1),
         ],
-        unused=[IN("add", 18, S)],
+        unused=[IN("add", 18, S), OUT("pstep_nx", 2, S)],
         extra=dict(
             decls="""\
     // the second addend (i_add, the error-map delta in the top): the vector's delta is split into
@@ -236,10 +237,23 @@ BLOCKS = [
             OUT("homed", 1),
         ],
         # P - 1 and P - 2 of the period column (the top forms them in its register stage)
-        unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2)],
-        extra=dict(apply="""\
+        unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2),
+                IN("pstep_nx", 2, S)],
+        extra=dict(
+            decls="""\
+    // the look-ahead input pstep_nx is the pstep of the next call (DESIGN 4.5): the next row's
+    // pstep (row 0's during reset, 0 after the last row)
+    reg [ROW_BITS-1:0] row_nx;
+""",
+            apply="""\
             i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
+            row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
+            i_pstep_nx = @next.pstep@;
+""",
+            idle="""\
+            row_nx = vec[0];
+            i_pstep_nx = @next.pstep@;
 """),
     ),
     dict(
@@ -600,10 +614,10 @@ def check_spec(b):
             raise SpecError("%s: output %s needs a DUT port" % (where, f.name))
     extra = b.get("extra", {})
     for key in extra:
-        if key not in ("decls", "apply"):
+        if key not in ("decls", "apply", "idle"):
             raise SpecError("%s: unknown extra '%s'" % (where, key))
     for text in extra.values():
-        for ref in re.findall(r"@(\w+)@", text):
+        for ref in re.findall(r"@(?:next\.)?(\w+)@", text):
             if ref not in {f.name for f in b["fields"] if f.is_in}:
                 raise SpecError("%s: extra code refers to unknown input field @%s@" % (where, ref))
 
@@ -671,7 +685,11 @@ def generate(b, command):
         pos = lo
 
     def subst(text):
-        return re.sub(r"@(\w+)@", lambda m: sl[(True, m.group(1))], text)
+        # @name@: the row's slice of input column `name`; @next.name@: the same slice of `row_nx`
+        # (the next row, declared by the block's `decls`)
+        return re.sub(r"@(next\.)?(\w+)@",
+                      lambda m: sl[(True, m.group(2))].replace("row[", "row_nx[" if m.group(1) else "row["),
+                      text)
 
     def rng(bits):
         return "" if bits == 1 else "[%d:0] " % (bits - 1)
@@ -756,6 +774,8 @@ def generate(b, command):
     o.append("        begin\n")
     for f in ins + uins:
         o.append("            %s = %d'd%d;\n" % (f.port, f.bits, f.idle & ((1 << f.bits) - 1)))
+    if "idle" in extra:
+        o.append(subst(extra["idle"]))
     o.append("        end\n")
     o.append("    endtask\n")
     o.append("\n")

@@ -49,6 +49,7 @@ module tb_output_pacer;
     wire [39:0] o_backlog;
     wire o_ovs;
     wire o_ovs_st;
+    wire [1:0] o_pstep_nx;   // not in the vectors
 
     output_pacer dut (
         .i_clk(i_clk),
@@ -62,7 +63,8 @@ module tb_output_pacer;
         .o_paced(o_paced),
         .o_backlog(o_backlog),
         .o_ovs(o_ovs),
-        .o_ovs_st(o_ovs_st)
+        .o_ovs_st(o_ovs_st),
+        .o_pstep_nx(o_pstep_nx)
     );
 
     `include "tb_common.vh"

@@ -56,6 +56,7 @@ module tb_rephase;
     reg  [12:0] i_mark_len;
     reg  [13:0] i_period_m1;   // idle (not in the vectors)
     reg  [13:0] i_period_m2;   // idle (not in the vectors)
+    reg  [1:0] i_pstep_nx;   // idle (not in the vectors)
     wire [1:0] o_ostep;
     wire [37:0] o_out_pos;
     wire o_mark;
@@ -80,6 +81,7 @@ module tb_rephase;
         .i_mark_len(i_mark_len),
         .i_period_m1(i_period_m1),
         .i_period_m2(i_period_m2),
+        .i_pstep_nx(i_pstep_nx),
         .o_ostep(o_ostep),
         .o_out_pos(o_out_pos),
         .o_mark(o_mark),
@@ -95,6 +97,10 @@ module tb_rephase;
 
     `include "tb_common.vh"
 
+    // the look-ahead input pstep_nx is the pstep of the next call (DESIGN 4.5): the next row's
+    // pstep (row 0's during reset, 0 after the last row)
+    reg [ROW_BITS-1:0] row_nx;
+
     task apply_inputs;
         begin
             i_pstep = row[317:316];
@@ -106,6 +112,8 @@ module tb_rephase;
             i_mark_len = row[280:268];
             i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
+            row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
+            i_pstep_nx = row_nx[317:316];
         end
     endtask
 
@@ -120,6 +128,9 @@ module tb_rephase;
             i_mark_len = 13'd0;
             i_period_m1 = 14'd16383;
             i_period_m2 = 14'd16382;
+            i_pstep_nx = 2'd0;
+            row_nx = vec[0];
+            i_pstep_nx = row_nx[317:316];
         end
     endtask
 
