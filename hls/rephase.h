@@ -166,26 +166,21 @@ public:
         const pos_t a_prev = a_;
         const bool fwd_prev = fwd_;
         const bool rise = sw && !sw_prev_ && sw_seen_;
-        bool homing = false;
-        if (leave) {
-            stage_ = 1;  // the adjustment in place stays (no phase jump)
-        } else if (stage_ == 1) {
-            if (rise && !unhome) {
-                stage_ = 2;
-                a_ = paced_;
-                fwd_ = fwd_last_;
-                tr_ = 0;
-                fresh_ = true;
-                num_ = 0;
-                wa_ = w_;  // the phase at A; d follows from it in the next call
-                dnew_ = true;
-            }
+        // 4a. the window state (travel, Bresenham) by the stage before the call, without the
+        //     leave / capture decisions: held at its value at A (tr = 0, num = 0, fresh) in
+        //     stage 1, so the capture loads none of it; a stage-2 call steps it even when it
+        //     leaves (stage 1 resets it in the next call)
+        const bool homing = in2 && s > 0 && at_last_;  // tr' == P
+        bool back = false;
+        if (stage_ == 1) {
+            tr_ = 0;
+            fresh_ = true;
+            num_ = 0;
         } else if (stage_ == 2) {
             if (s > 0) {
                 if (fr) {  // num = 0: no carry; num' = d, t' = 2d - P in the next call
                     v_ = 0;
                     fresh_ = false;
-                    first_ = true;
                 } else if (t_ >= 0) {  // num + d >= P: carry
                     const cfg::br_t t_old = t_;
                     t_ = cfg::br_t(t_ + k_);
@@ -209,11 +204,27 @@ public:
                     num_ = cfg::ph_t(v_old);
                 }
             }
-            homing = s > 0 && at_last_;  // tr' == P
             tr_ = tr_ + s;
             if (tr_ < 0) {
-                stage_ = 1;  // back past A: the adjustment is 0 here
+                back = true;
                 tr_ = 0;
+            }
+        }
+        first_ = in2 && s > 0 && fr;
+        // 4b. stage machine
+        if (leave) {
+            stage_ = 1;  // the adjustment in place stays (no phase jump)
+        } else if (stage_ == 1) {
+            if (rise && !unhome) {
+                stage_ = 2;
+                a_ = paced_;
+                fwd_ = fwd_last_;
+                wa_ = w_;  // the phase at A; d follows from it in the next call
+                dnew_ = true;
+            }
+        } else if (stage_ == 2) {
+            if (back) {
+                stage_ = 1;  // back past A: the adjustment is 0 here
             } else if (homing) {
                 stage_ = 3;
                 const pos_t bb = bs_;  // A + dir*P, formed in an earlier call

@@ -292,26 +292,19 @@ module rephase (
         // 3. phase
         w_d        = w_n;
 
-        // 4. stage machine
-        if (leave) begin
-            stage_d = 2'd1;                                     // the adjustment stays in place
-        end else if (stage_q == 2'd1) begin
-            if (cap) begin
-                stage_d = 2'd2;
-                a_d     = paced_d;
-                fwd_d   = fwd_last_d;
-                tr_d    = {W_TR{1'b0}};
-                fresh_d = 1'b1;
-                num_d   = {W_PH{1'b0}};
-                wa_d    = w_n;
-                dnew_d  = 1'b1;
-            end
+        // 4a. the window state (travel, Bresenham) by the stage before the call, without the
+        //     leave / capture decisions (they read the late unhome level): in stage 1 it is held
+        //     at its value at A (tr = 0, num = 0, fresh), so the capture needs no load; a stage-2
+        //     call steps it even when it leaves (stage 1 then resets it in the next call)
+        if (stage_q == 2'd1) begin
+            tr_d    = {W_TR{1'b0}};
+            fresh_d = 1'b1;
+            num_d   = {W_PH{1'b0}};
         end else if (stage_q == 2'd2) begin
             if (s_pos) begin
                 if (fr) begin                                   // num = 0: no carry
                     v_d     = {W_BR{1'b0}};                     // num' = d, t' = 2d - P in the
                     fresh_d = 1'b0;                             // next call (below)
-                    first_d = 1'b1;
                 end else if (!t_neg) begin                // carry
                     num_d = t_lo;
                     t_d   = t_pk;
@@ -332,10 +325,23 @@ module rephase (
                     v_d   = v_md;
                 end
             end
-            tr_d = tr_s;
+            tr_d = tr_back ? {W_TR{1'b0}} : tr_s;
+        end
+        first_d = in2 && s_pos && fr;
+        // 4b. stage machine
+        if (leave) begin
+            stage_d = 2'd1;                                     // the adjustment stays in place
+        end else if (stage_q == 2'd1) begin
+            if (cap) begin
+                stage_d = 2'd2;
+                a_d     = paced_d;
+                fwd_d   = fwd_last_d;
+                wa_d    = w_n;
+                dnew_d  = 1'b1;
+            end
+        end else if (stage_q == 2'd2) begin
             if (tr_back) begin
                 stage_d = 2'd1;                                 // back past A
-                tr_d    = {W_TR{1'b0}};
             end else if (homing) begin
                 stage_d = 2'd3;
                 b_d     = bs_q;
@@ -348,16 +354,16 @@ module rephase (
         // tr' > 0 without a compare after the tr add (tr >= 0 always: the step back past A
         // leaves with tr' = 0): 0 at A and on that step; +1 gives tr' >= 1; -1 gives tr' > 0 iff
         // tr >= 2; otherwise tr is held
-        if (cap)      tr_pos_d = 1'b0;
-        else if (in2) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
-        else          tr_pos_d = tr_pos_q;
+        if (stage_q == 2'd1)      tr_pos_d = 1'b0;
+        else if (stage_q == 2'd2) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
+        else                      tr_pos_d = tr_pos_q;
         if (dnew_q) d_d = d_cur;
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
         bs_d      = bs_sum;
         // at_last' = (tr' == P - 1), from the case that formed tr'
-        if (cap || (in2 && tr_back)) at_last_d = p_is1;
-        else if (in2)                at_last_d = last_s;
-        else                         at_last_d = last_hold;
+        if (stage_q == 2'd1 || (stage_q == 2'd2 && tr_back)) at_last_d = p_is1;
+        else if (stage_q == 2'd2)                            at_last_d = last_s;
+        else                                                 at_last_d = last_hold;
 
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
