@@ -248,18 +248,23 @@ module rephase (
     wire signed [1:0]       ls_ml  = (lag_e1 || lag_em) ? 2'sd0 : lsgn_q;
     wire signed [1:0]       ls_p1  = lag_em ? 2'sd0 : lsgn_q[1] ? -2'sd1 : 2'sd1;
     wire signed [1:0]       ls_m1  = lag_e1 ? 2'sd0 : (lsgn_q == 2'sd1) ? 2'sd1 : -2'sd1;
-    wire                    dq_p   = !leave && stage_q == 2'd2 && (fwd_q ? (!fr && !t_q[W_BR-1])
-                                                                         : (tr_pos && v_q[W_BR-1]));
-    wire                    dq_m   = !leave && stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
-                                                                         : (!fr && !t_q[W_BR-1]));
+    // the extra-count test per pstep value without the leave term: a leave call (stage 2 and
+    // unhome or rehome) adds no extra count, which the last select applies (lv), so the late
+    // unhome level (the decoder's register, across the chip) meets lag' only in the last LUT
+    wire                    dq_p   = stage_q == 2'd2 && (fwd_q ? (!fr && !t_q[W_BR-1])
+                                                               : (tr_pos && v_q[W_BR-1]));
+    wire                    dq_m   = stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
+                                                               : (!fr && !t_q[W_BR-1]));
+    (* keep *) wire lv;
+    assign lv = i_unhome || i_rehome;
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
     (* keep *) wire signed [1:0]       ls_cp, ls_cm;
     assign lag_cp = dq_p ? lag_p1 : lag_q;
     assign lag_cm = dq_m ? lag_m1 : lag_q;
     assign ls_cp  = dq_p ? ls_p1 : lsgn_q;
     assign ls_cm  = dq_m ? ls_m1 : lsgn_q;
-    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : i_pstep[1] ? lag_cm : lag_cp;
-    wire signed [1:0]       lsgn_n = pz ? ls_ml : i_pstep[1] ? ls_cm : ls_cp;
+    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : lv ? lag_q : i_pstep[1] ? lag_cm : lag_cp;
+    wire signed [1:0]       lsgn_n = pz ? ls_ml : lv ? lsgn_q : i_pstep[1] ? ls_cm : ls_cp;
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
@@ -675,8 +680,8 @@ module rephase (
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
             assert(lsgn_q == lag_q[1:0]);
             // the per-pstep forms of the extra-count test are the test itself
-            if (i_pstep == 2'sd1)  assert(dq_p == dq_nz);
-            if (i_pstep == -2'sd1) assert(dq_m == dq_nz);
+            if (i_pstep == 2'sd1)  assert((dq_p && !lv) == dq_nz);
+            if (i_pstep == -2'sd1) assert((dq_m && !lv) == dq_nz);
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
             if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
             if (first_q) assert(f_stage == 2'd2 && !fresh_q);        // right after the first count
