@@ -209,6 +209,7 @@ module laserax_top #(
     // multiplier reads it straight from these registers; register-file state, not reset by the
     // safe state (power-up: the reset values, in force until the first load)
     reg  [36:0]        ratio_eff;
+    reg                ratio_eff_nz;  // ratio_eff != 0, kept beside it (the check of ratio_next)
     reg  signed [63:0] offset_eff;
     reg                pup_q;       // this call is the power-up call (DESIGN 4.7)
     wire               comp_load_next = !i_comp_sync || i_comp_commit;
@@ -217,9 +218,11 @@ module laserax_top #(
     always @(posedge i_clk) begin
         if (i_rst) begin
             ratio_eff  <= RATIO_DEFAULT;
+            ratio_eff_nz <= RATIO_DEFAULT != 37'd0;
             offset_eff <= 64'sd0;
         end else begin
             ratio_eff  <= ratio_next;
+            ratio_eff_nz <= comp_load_next ? i_ratio != 37'd0 : ratio_eff_nz;
             offset_eff <= offset_next;
         end
     end
@@ -258,7 +261,9 @@ module laserax_top #(
     // safe_q: carry chain + two LUT levels.
     (* keep *) wire cfg_ok_late;
     assign cfg_ok_late = mark_ok && spacing_ok;
-    wire        cfg_ok_tree = period_ok && width_ok && amp_ok && i_ratio != 37'd0 && ratio_next != 37'd0 &&
+    // ratio_next != 0: i_ratio != 0 (a term already) when the pair loads, else ratio_eff != 0
+    // (the flag kept beside it), so no 37-bit select sits in front of a zero test
+    wire        cfg_ok_tree = period_ok && width_ok && amp_ok && i_ratio != 37'd0 && (comp_load_next || ratio_eff_nz) &&
                               (|i_pace_m[15:1]) && i_tbl_period == i_period && !i_tbl_we;  // pace_m >= 2
     (* keep *) wire cfg_ok_early;
     assign cfg_ok_early = cfg_ok_tree;
