@@ -86,7 +86,10 @@ long double pso::threshold(const pso_regs& r) const {
     return arr_en_ ? counts(ram_[static_cast<size_t>(idx_)]) : counts(r.fire_dist);
 }
 
-pso::out pso::step(const pso_in& in, const pso_regs& r) {
+pso::out pso::step(const pso_in& in, const pso_regs& presented) {
+    // register stage: this call works with the values presented in the previous call
+    const pso_regs r = force_;
+    force_ = presented;
     // the array entry of the next fire as the RAM stands after the previous call (the decision
     // of this call uses it; a write of this call acts from the next decision)
     const uint64_t entry_before = ram_[static_cast<size_t>(idx_)];

@@ -11,7 +11,9 @@
 //     threshold is fire_dist of call t+2, or the array entry as the RAM stands after call t+2;
 //     no fire in the first three calls of a run (docs/PSO_COUNTERS.md §2.5, §2.9);
 //   * spacing_err: every 17 run calls, the check of the command sampled 17 calls before;
-//   * the pulse is high at call t when t - (call of the last emit) < pulse width of that emit.
+//   * the pulse is high at call t when t - (call of the last emit) < pulse width of that emit;
+//   * register stage (§2.2): the registers passed to step() in call t are in force in call t+1;
+//     every register named above is the value in force (the reset values after construction).
 // Distances are long double counts; every value is a multiple of 2^-32 below 2^32 counts, so
 // long double (64-bit significand) holds them exactly.
 #pragma once
@@ -74,6 +76,7 @@ public:
 
     pso();
     void reset();
+    // r: the register values presented in this call (in force from the next call on)
     out step(const pso_in& in, const pso_regs& r);
 
     bool config_ok(const pso_regs& r) const;
@@ -87,6 +90,7 @@ private:
     long double threshold(const pso_regs& r) const;
 
     std::vector<uint64_t> ram_;
+    pso_regs force_;                // register values in force (presented in the previous call)
     // run state
     bool running_ = false;
     bool ps_ = false, arr_en_ = false, arr_wrap_ = false;

@@ -25,7 +25,9 @@
 //
 // Widths (all derived from the primaries in pso_cfg): distances Q24.32 (56 bits unsigned),
 // remainder 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
-// (K_MAX = 16). Latency: a step at call t can fire at call t+3 (FIRE_LAT; the fire/emit/pulse
+// (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
+// stage; the configuration check is formed on the presented values and registered).
+// Latency: a step at call t can fire at call t+3 (FIRE_LAT; the fire/emit/pulse
 // outputs of call t+3); rate_over is an output of the command's call; spacing_err of run call
 // 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
@@ -66,6 +68,7 @@ struct pso_cfg {
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
     static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
     static constexpr int FIRE_LAT = 3;                               // calls from a step to its fire
+    static constexpr int REG_LAT = 1;                                // calls from presenting a register to its use
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
     static constexpr unsigned long long ONE = 1ULL << D_FRAC;        // one count
@@ -138,6 +141,7 @@ inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
 
 // Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched
 // at the rising edge of the run state (enable with a valid configuration); the others act live.
+// Every value is in force one call after it is presented (the block's register stage).
 struct pso_regs {
     bool enable = false;
     bool part_speed = false;
@@ -214,6 +218,8 @@ public:
     pso() {
         for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
         arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
+        rq_ = pso_regs();           // register stage: the reset values in force
+        ok_q_ = pso_config_ok(rq_, arr_bad_);
         reset();
     }
 
@@ -229,14 +235,22 @@ public:
         freq_st_ = false;
     }
 
-    out_t step(const pso_in& in, const pso_regs& r) {
-        if (r.arr_we) {
-            arr_[r.arr_addr.to_uint()] = r.arr_data;
-            const cfg::bad_t bit = cfg::bad_t(1) << r.arr_addr.to_uint();
-            arr_bad_ = (r.arr_data < cfg::MIN_DIST) ? cfg::bad_t(arr_bad_ | bit) : cfg::bad_t(arr_bad_ & ~bit);
+    // rp: the register values presented in this call; they are in force in the next call
+    // (register stage, docs/PSO_COUNTERS.md §2.2), with their configuration check formed now.
+    out_t step(const pso_in& in, const pso_regs& rp) {
+        const pso_regs r = rq_;    // the values in force (presented in the last call)
+        const bool cfg_ok = ok_q_; // their check, formed in the last call
+        if (r.arr_we) arr_[r.arr_addr.to_uint()] = r.arr_data;
+        // register stage: the bad-entry map after the presented write (one call ahead of the
+        // RAM), the check of the presented values against it
+        if (rp.arr_we) {
+            const cfg::bad_t bit = cfg::bad_t(1) << rp.arr_addr.to_uint();
+            arr_bad_ = (rp.arr_data < cfg::MIN_DIST) ? cfg::bad_t(arr_bad_ | bit) : cfg::bad_t(arr_bad_ & ~bit);
         }
+        ok_q_ = pso_config_ok(rp, arr_bad_);
+        rq_ = rp;
         out_t o;  // every field 0 / false (default member initialisers)
-        if (!pso_config_ok(r, arr_bad_)) {
+        if (!cfg_ok) {
             reset();
             o.cfg_err = true;
             return o;
@@ -477,9 +491,13 @@ private:
         o.ps_count = ps_cnt_;
     }
 
-    // array RAM and its "entry below the minimum distance" bitmap
+    // array RAM and its "entry below the minimum distance" bitmap (the map after the write
+    // presented in the last call: one call ahead of the RAM)
     cfg::dist_t arr_[cfg::ARR_DEPTH];
     cfg::bad_t arr_bad_;
+    // register stage: the register values in force and their configuration check
+    pso_regs rq_;
+    bool ok_q_;
     // stage A
     cfg::win_t trav_[cfg::N_AXES];
     bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;

@@ -10,6 +10,13 @@
 // "entry below 2 counts" map and raises cfg_err for that call; a call with enable = 0 resets the
 // tracking state (counters and sticky flags are kept).
 //
+// Register stage (§2.2): the register inputs presented at an edge are in force at the next one
+// (f_* registers, the reset values after i_rst). The configuration check is formed on the
+// presented values (against the bad-entry map after their write) and registered (cfg_ok_q), so
+// the reset of the state is a register plus one gate. The array RAM is written at the edge of
+// the call that presents the write (the data are in force, for the model, one call later:
+// the reads below forward accordingly).
+//
 // Stages (registers before the edge; §2.4):
 //   A   this call's steps: tracking window (travel D per axis, reversal / |D| >= K closes), ROM
 //       address s = sum D^2 -> a_s; part-speed phase accumulator (clamped to INC_MAX), pulse
@@ -24,12 +31,15 @@
 //       call). Array index, pulse timer, overlap / frequency flags.
 // A step in call t fires in call t + 3.
 //
-// Array RAM (64 x 56): three copies (one read port each, the write port shared), read with
-// addresses formed from the index register of the call before B1 (idx, next(idx),
-// next(next(idx))); B1 picks two of the three with the registered fire of the last call, then
-// forwards the write of the last call and of this call, so it sees the RAM after this call's
-// write, as hls/ does. In the first call of a run (idx = 0 after a reset call, whose read
-// addresses may be stale) entry 0 comes from a copy register (entry0) instead.
+// Array RAM (64 x 56): four copies (one read port each, the write port shared), read in call
+// t - 2 at idx, next(idx), next^2(idx), next^3(idx) of that call. Threshold prefetch: in call
+// t - 1 three of the four (picked by the registered index move of call t - 2) are completed with
+// the writes in force in calls t - 1 and t (forwarded: the first was written after the read,
+// the second is presented in call t - 1), or replaced by fire_dist in force in call t, and
+// registered (th0..th2: the entries idx, next(idx), next^2(idx) of call t - 1). B1 in call t
+// picks two of them with the index move of call t - 1. A call that resets the tracking state
+// prepares entry 0 (from a copy register, entry0) for the first call of the next run, and loads
+// next(0).. next^3(0) for the length presented (in force in that first call).
 //
 // Widths (pso_cfg): distances Q24.32 (56 unsigned), remainder and dist 58 signed, chord 37,
 // x / y 38, travel 6 signed, K 5, positions 38 signed, part-speed rate Q0.32, pulse width and
@@ -140,25 +150,42 @@ module pso (
         for (ri = 0; ri <= S_MAX; ri = ri + 1) rom[ri] = round_sqrt(ri[W_S-1:0]);
     end
 
-    // ---- array RAM: three copies with one read port each ---------------------------------------
+    // ---- array RAM: four copies with one read port each ----------------------------------------
     reg [W_DIST-1:0] arr0 [0:63];
     reg [W_DIST-1:0] arr1 [0:63];
     reg [W_DIST-1:0] arr2 [0:63];
+    reg [W_DIST-1:0] arr3 [0:63];
     integer ai;
     initial begin
         for (ai = 0; ai < 64; ai = ai + 1) begin
             arr0[ai] = {W_DIST{1'b0}};
             arr1[ai] = {W_DIST{1'b0}};
             arr2[ai] = {W_DIST{1'b0}};
+            arr3[ai] = {W_DIST{1'b0}};
         end
     end
 
     // ---- registers ---------------------------------------------------------------------------
-    reg [63:0]              bad_q;        // entry below 2 counts (or never written)
-    reg [W_DIST-1:0]        entry0_q;     // copy of entry 0
-    reg [W_DIST-1:0]        rd0_q, rd1_q, rd2_q;   // array read data (BRAM output registers)
-    reg                     fw0_q, fw1_q, fw2_q;   // the last call's write hit that read address
-    reg [W_DIST-1:0]        wd_q;         // the last call's write data
+    // register stage: the values in force (presented in the last call)
+    reg                     f_enable_q, f_part_speed_q, f_arr_en_q, f_arr_wrap_q, f_win_en_q, f_clear_q;
+    reg [2:0]               f_axis_mask_q;
+    reg [4:0]               f_win_k_q;
+    reg [6:0]               f_arr_len_q;
+    reg [W_PW-1:0]          f_pulse_w_q;
+    reg [1:0]               f_win_src_q;
+    reg signed [W_POS-1:0]  f_win_low_q, f_win_high_q;
+    reg [W_GAP-1:0]         f_min_period_q;
+    reg                     f_we_q;       // the write in force (made in the RAM at the last edge)
+    reg [W_DIST-1:0]        f_data_q;
+    reg                     cfg_ok_q;     // configuration check of the values in force
+    reg [63:0]              bad_q;        // entry below 2 counts (or never written), after the
+                                          //   writes presented so far
+    reg [W_DIST-1:0]        entry0_q;     // copy of entry 0 (the RAM after the last edge)
+    reg [W_DIST-1:0]        rd0_q, rd1_q, rd2_q, rd3_q;   // array read data (BRAM output registers)
+    reg                     fw0_q, fw1_q, fw2_q, fw3_q;   // the write presented with the read hit its address
+    reg [W_DIST-1:0]        th0_q, th1_q, th2_q;          // thresholds: entries idx .. next^2(idx)
+                                                          //   of the last call, or fire_dist
+    reg                     adv_q;        // the last call moved the index
     // run state and latched mode registers
     reg                     run_q, ps_q, arr_en_q, arr_wrap_q;
     reg [2:0]               mask_q;
@@ -227,13 +254,17 @@ module pso (
     wire [20:0] wup1  = {i_win_high[37], i_win_high[37:19], 1'b1} + {~i_win_low[37], ~i_win_low[37:19], 1'b1};
     wire        win_le = !(wlo_l[20] ? wup1[20] : wup0[19]);
     wire        win_ok  = !i_win_en || (win_le && (i_win_src != 2'd3 || i_part_speed));
-    wire        cfg_ok  = k_ok && axes_ok && thr_ok && win_ok && (i_pulse_w != 16'd0);
+    // the check of the presented values, in force (registered) with them in the next call
+    wire        cfg_ok_d = k_ok && axes_ok && thr_ok && win_ok && (i_pulse_w != 16'd0);
+    // resets of this call: invalid configuration (everything but the RAM), enable = 0 (tracking)
+    wire        rst_cfg  = i_rst || !cfg_ok_q;
+    wire        rst_trk  = rst_cfg || !f_enable_q;
 
     // latched modes as seen in this call (the first call of a run latches them)
-    wire       ps_e     = run_q ? ps_q : i_part_speed;
-    wire [2:0] mask_e   = run_q ? mask_q : i_axis_mask;
-    wire       arr_en_e = run_q ? arr_en_q : i_arr_en;
-    wire [6:0] len_e    = run_q ? len_q : i_arr_len;
+    wire       ps_e     = run_q ? ps_q : f_part_speed_q;
+    wire [2:0] mask_e   = run_q ? mask_q : f_axis_mask_q;
+    wire       arr_en_e = run_q ? arr_en_q : f_arr_en_q;
+    wire [6:0] len_e    = run_q ? len_q : f_arr_len_q;
 
     // carry-select W_REM-bit add with carry-in: low 29 bits, upper 29 bits for carry 0 and 1
     // ({a, c} + {b, c}: the carry-in through bit 0 of one adder)
@@ -262,20 +293,38 @@ module pso (
         end
     endfunction
 
+    // ---- threshold prefetch (for the next call's B1) --------------------------------------------
+    // read data of the last call (addresses idx .. next^3(idx) of that call), the write presented
+    // with the read forwarded (it was made after the read: read-before-write), shifted by one
+    // entry when the last call moved the index: entries idx .. next^2(idx) of this call, after
+    // the write in force in this call
+    wire [W_DIST-1:0] e0 = fw0_q ? f_data_q : rd0_q;
+    wire [W_DIST-1:0] e1 = fw1_q ? f_data_q : rd1_q;
+    wire [W_DIST-1:0] e2 = fw2_q ? f_data_q : rd2_q;
+    wire [W_DIST-1:0] e3 = fw3_q ? f_data_q : rd3_q;
+    wire [W_DIST-1:0] g0 = adv_q ? e1 : e0;
+    wire [W_DIST-1:0] g1 = adv_q ? e2 : e1;
+    wire [W_DIST-1:0] g2 = adv_q ? e3 : e2;
+    // the write presented in this call (in force in the next) forwarded; a call that resets the
+    // tracking state prepares entry 0 for the first call of a run (idx = 0 then)
+    wire              pw0 = i_arr_we && (i_arr_addr == (rst_trk ? 6'd0 : idx_q[5:0]));
+    wire              pw1 = i_arr_we && (i_arr_addr == nx_q[5:0]);
+    wire              pw2 = i_arr_we && (i_arr_addr == nx2_q[5:0]);
+    wire [W_DIST-1:0] h0  = pw0 ? i_arr_data : rst_trk ? entry0_q : g0;
+    wire [W_DIST-1:0] h1  = pw1 ? i_arr_data : g1;
+    wire [W_DIST-1:0] h2  = pw2 ? i_arr_data : g2;
+    // array mode of the next call: the latched mode, or the one presented now if this call
+    // resets the tracking state (the next call may start a run); else fire_dist presented now
+    wire              en_n = rst_trk ? i_arr_en : arr_en_e;
+    wire [W_DIST-1:0] th0_d = en_n ? h0 : i_fire_dist;
+    wire [W_DIST-1:0] th1_d = en_n ? h1 : i_fire_dist;
+    wire [W_DIST-1:0] th2_d = en_n ? h2 : i_fire_dist;
+
     // ---- stage B1 ------------------------------------------------------------------------------
-    // array data read with the addresses of the last call (i, next(i), next(next(i)) of its idx),
-    // the last call's write forwarded (read-before-write RAM)
-    wire [W_DIST-1:0] e0 = fw0_q ? wd_q : rd0_q;
-    wire [W_DIST-1:0] e1 = fw1_q ? wd_q : rd1_q;
-    wire [W_DIST-1:0] e2 = fw2_q ? wd_q : rd2_q;
-    // entries idx and next(idx) after the last call (its fire moved idx by b_fire1)
-    wire [W_DIST-1:0] a0 = !run_q ? entry0_q : b_fire1_q ? e1 : e0;
-    wire [W_DIST-1:0] a1 = b_fire1_q ? e2 : e1;
-    // this call's write forwarded
-    wire [W_DIST-1:0] t0a = (i_arr_we && i_arr_addr == idx_q[5:0]) ? i_arr_data : a0;
-    wire [W_DIST-1:0] t1a = (i_arr_we && i_arr_addr == nx_q[5:0]) ? i_arr_data : a1;
-    wire [W_DIST-1:0] thr0 = arr_en_e ? t0a : i_fire_dist;
-    wire [W_DIST-1:0] thr1 = arr_en_q ? t1a : i_fire_dist;
+    // thresholds of the next fire if this call's B2 does not fire (thr0) and if it does (thr1):
+    // entries idx and next(idx) of this call, the index moved by the last call's fire (adv_q)
+    wire [W_DIST-1:0] thr0 = adv_q ? th1_q : th0_q;
+    wire [W_DIST-1:0] thr1 = adv_q ? th2_q : th1_q;
 
     // The ROM output is used unmasked: while r_v = 1 it is the chord of hls/ (the last two calls
     // ran); while r_v = 0 (a run's first calls) b_x, b_y and part are stored as 0 and the
@@ -314,20 +363,21 @@ module pso (
     wire             adv    = fire && arr_en_q && !(last && !arr_wrap_q);
     wire [6:0]       idx_d  = adv ? nx_q : idx_q;
     wire             done_d = done_q || (fire && arr_en_q && last && !arr_wrap_q);
-    // the first call of a run: next(0), next(next(0)), next^3(0) for the latched length
+    // a call that resets the tracking state: next(0), next^2(0), next^3(0) for the length
+    // presented (in force in the next call, which may start a run and latch it)
     wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
     wire [6:0]       nx4    = next_idx(nx3_q, len_q);
     wire             emit   = fire && b_inwin_q;
     wire             overlap  = emit && (timer_q != 16'd0);
-    wire             freq_err = emit && (i_min_period != 16'd0) &&
-                                (({1'b0, since_q} + 17'd1) < {1'b0, i_min_period});
-    wire [W_PW-1:0]  timer_d  = emit ? i_pulse_w : (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;
+    wire             freq_err = emit && (f_min_period_q != 16'd0) &&
+                                (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
+    wire [W_PW-1:0]  timer_d  = emit ? f_pulse_w_q : (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;
     wire [W_GAP-1:0] since_d  = emit ? 16'd0 : (since_q != 16'hffff) ? since_q + 16'd1 : since_q;
     wire [W_FCNT-1:0] fire_cnt_d = emit ? fire_cnt_q + 32'd1 : fire_cnt_q;
     // clear acts first, an event of this call sets its flag again
-    wire [W_OVL-1:0] ovl_base = i_clear ? 16'd0 : ovl_cnt_q;
+    wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
     wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
@@ -356,11 +406,11 @@ module pso (
     //   |Dn_i| = (rev ? 0 : |D_i|) + |d_i|, and its square = rev ? |d_i| : (|d_i| ? (|D_i| + 1)^2
     //            : |D_i|^2) (squares of the 4-bit register: LUTs)
     //   kclose = some |Dn_i| >= K (compares of the register with K, picked by rev and the move)
-    wire       k0 = (i_win_k == 5'd0);
-    wire       k1 = (i_win_k <= 5'd1);
+    wire       k0 = (f_win_k_q == 5'd0);
+    wire       k1 = (f_win_k_q <= 5'd1);
     wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
     wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
-    wire [2:0] tr  = run_q ? (mask_q & {3{!ps_q}}) : (i_axis_mask & {3{!i_part_speed}});
+    wire [2:0] tr  = run_q ? (mask_q & {3{!ps_q}}) : (f_axis_mask_q & {3{!f_part_speed_q}});
     wire [2:0] rev_i = (stp & tn_q) | (stm & tp_q);
     wire       rev = |rev_i;
     wire [2:0] up  = stp & tr;
@@ -375,8 +425,8 @@ module pso (
             wire [3:0] a    = ta_q[4*ax+3:4*ax];
             wire [8:0] sq0  = a * a;
             wire [8:0] sq1  = ({1'b0, a} + 5'd1) * ({1'b0, a} + 5'd1);
-            wire       ge0  = ({1'b0, a} >= i_win_k);
-            wire       ge1  = ({1'b0, a} + 5'd1 >= i_win_k);
+            wire       ge0  = ({1'b0, a} >= f_win_k_q);
+            wire       ge1  = ({1'b0, a} + 5'd1 >= f_win_k_q);
             wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
             assign sqs[ax]  = mv[ax] ? (rev ? 9'd1 : sq1) : (rev ? 9'd0 : sq0);
             assign kc[ax]   = mv[ax] ? (rev ? k1 : ge1) : (rev ? k0 : ge0);
@@ -389,41 +439,77 @@ module pso (
     wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
     wire [2:0]     tn_d   = (dw | (tn_q & {3{!rev}})) & {3{!kclose}};
     // window
-    wire signed [W_POS-1:0] wp = (i_win_src == 2'd3) ? ps_cnt_d : (i_win_src == 2'd2) ? i_pos2 :
-                                 (i_win_src == 2'd1) ? i_pos1 : i_pos0;
+    wire signed [W_POS-1:0] wp = (f_win_src_q == 2'd3) ? ps_cnt_d : (f_win_src_q == 2'd2) ? i_pos2 :
+                                 (f_win_src_q == 2'd1) ? i_pos1 : i_pos0;
     // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
     // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
     wire r_inwin_d = !a_wen_q || ((a_wlo_q <= a_wp_q) && (a_wp_q <= a_whi_q));
 
-    // array read addresses for the next call's B1 (from this call's index)
-    wire [6:0] rn1 = nx_q;
-    wire [6:0] rn2 = nx2_q;
-
     // ---- register update -----------------------------------------------------------------------
+    // register stage (reset values of pso_regs after i_rst), the check, the bad-entry map
     always @(posedge i_clk) begin
         if (i_rst) begin
+            f_enable_q <= 1'b0;
+            f_part_speed_q <= 1'b0;
+            f_axis_mask_q <= 3'd3;
+            f_win_k_q <= 5'd16;
+            f_arr_en_q <= 1'b0;
+            f_arr_len_q <= 7'd1;
+            f_arr_wrap_q <= 1'b0;
+            f_pulse_w_q <= 16'd10;
+            f_win_en_q <= 1'b0;
+            f_win_src_q <= 2'd0;
+            f_win_low_q <= {W_POS{1'b0}};
+            f_win_high_q <= {W_POS{1'b0}};
+            f_min_period_q <= {W_GAP{1'b0}};
+            f_clear_q <= 1'b0;
+            f_we_q <= 1'b0;
+            cfg_ok_q <= 1'b1;                 // the reset values are a legal configuration
             bad_q <= {64{1'b1}};
             entry0_q <= {W_DIST{1'b0}};
         end else begin
+            f_enable_q <= i_enable;
+            f_part_speed_q <= i_part_speed;
+            f_axis_mask_q <= i_axis_mask;
+            f_win_k_q <= i_win_k;
+            f_arr_en_q <= i_arr_en;
+            f_arr_len_q <= i_arr_len;
+            f_arr_wrap_q <= i_arr_wrap;
+            f_pulse_w_q <= i_pulse_w;
+            f_win_en_q <= i_win_en;
+            f_win_src_q <= i_win_src;
+            f_win_low_q <= i_win_low;
+            f_win_high_q <= i_win_high;
+            f_min_period_q <= i_min_period;
+            f_clear_q <= i_clear;
+            f_we_q <= i_arr_we;
+            cfg_ok_q <= cfg_ok_d;
             bad_q <= bad_d;
             if (i_arr_we && i_arr_addr == 6'd0) entry0_q <= i_arr_data;
         end
     end
 
-    // array RAM copies: read before write, no reset
+    // array RAM copies: written at the edge of the call that presents the write, read before
+    // write, no reset
     always @(posedge i_clk) begin
         if (i_arr_we) begin
             arr0[i_arr_addr] <= i_arr_data;
             arr1[i_arr_addr] <= i_arr_data;
             arr2[i_arr_addr] <= i_arr_data;
+            arr3[i_arr_addr] <= i_arr_data;
         end
         rd0_q <= arr0[idx_q[5:0]];
-        rd1_q <= arr1[rn1[5:0]];
-        rd2_q <= arr2[rn2[5:0]];
+        rd1_q <= arr1[nx_q[5:0]];
+        rd2_q <= arr2[nx2_q[5:0]];
+        rd3_q <= arr3[nx3_q[5:0]];
         fw0_q <= i_arr_we && (i_arr_addr == idx_q[5:0]);
-        fw1_q <= i_arr_we && (i_arr_addr == rn1[5:0]);
-        fw2_q <= i_arr_we && (i_arr_addr == rn2[5:0]);
-        wd_q <= i_arr_data;
+        fw1_q <= i_arr_we && (i_arr_addr == nx_q[5:0]);
+        fw2_q <= i_arr_we && (i_arr_addr == nx2_q[5:0]);
+        fw3_q <= i_arr_we && (i_arr_addr == nx3_q[5:0]);
+        f_data_q <= i_arr_data;
+        th0_q <= th0_d;
+        th1_q <= th1_d;
+        th2_q <= th2_d;
     end
 
     // chord ROM: registered read (stage R), no reset
@@ -432,7 +518,7 @@ module pso (
     end
 
     always @(posedge i_clk) begin
-        if (i_rst || !cfg_ok || !i_enable) begin
+        if (rst_trk) begin
             // tracking state (pso::reset_track)
             run_q <= 1'b0;
             ps_q <= 1'b0;
@@ -480,9 +566,10 @@ module pso (
             rem_q <= {W_REM{1'b0}};
             dist_q <= {W_REM{1'b0}};
             idx_q <= 7'd0;
-            nx_q <= 7'd0;
-            nx2_q <= 7'd0;
-            nx3_q <= 7'd0;
+            adv_q <= 1'b0;
+            nx_q <= i_rst ? 7'd0 : nx_0;
+            nx2_q <= i_rst ? 7'd0 : nx2_0;
+            nx3_q <= i_rst ? 7'd0 : nx3_0;
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             since_q <= {W_GAP{1'b1}};
@@ -499,7 +586,7 @@ module pso (
             run_q <= 1'b1;
             ps_q <= ps_e;
             arr_en_q <= arr_en_e;
-            arr_wrap_q <= run_q ? arr_wrap_q : i_arr_wrap;
+            arr_wrap_q <= run_q ? arr_wrap_q : f_arr_wrap_q;
             mask_q <= mask_e;
             len_q <= len_e;
             // A
@@ -509,10 +596,10 @@ module pso (
             a_rev_q <= rev;
             a_kclose_q <= kclose;
             a_pulse_q <= ps_pulse;
-            a_wen_q <= i_win_en;
+            a_wen_q <= f_win_en_q;
             a_wp_q <= wp;
-            a_wlo_q <= i_win_low;
-            a_whi_q <= i_win_high;
+            a_wlo_q <= f_win_low_q;
+            a_whi_q <= f_win_high_q;
             a_v_q <= 1'b1;
             a_s_q <= s_d;
             ph_q <= ph_d;
@@ -520,9 +607,9 @@ module pso (
             if (sp_load) begin
                 sp_k_q <= 5'd1;
                 sp_full_q <= 1'b1;
-                sp_mnz_q <= (i_min_period != 16'd0);
+                sp_mnz_q <= (f_min_period_q != 16'd0);
                 sp_inc_q <= inc;
-                sp_m_q <= i_min_period;
+                sp_m_q <= f_min_period_q;
                 sp_thr_q <= thr0;
                 sp_hi_q <= {W_SPHI{1'b0}};
                 sp_lo_q <= {W_GAP{1'b0}};
@@ -553,11 +640,8 @@ module pso (
             rem_q <= rem_d;
             dist_q <= dist_d;
             idx_q <= idx_d;
-            if (!run_q) begin
-                nx_q <= nx_0;
-                nx2_q <= nx2_0;
-                nx3_q <= nx3_0;
-            end else if (adv) begin
+            adv_q <= adv;
+            if (adv) begin
                 nx_q <= nx2_q;
                 nx2_q <= nx3_q;
                 nx3_q <= nx4;
@@ -579,7 +663,7 @@ module pso (
 
     // counters and sticky flags: kept while enable = 0, cleared by an invalid configuration
     always @(posedge i_clk) begin
-        if (i_rst || !cfg_ok) begin
+        if (rst_cfg) begin
             fire_cnt_q <= {W_FCNT{1'b0}};
             ovl_cnt_q <= {W_OVL{1'b0}};
             overlap_st_q <= 1'b0;
@@ -587,20 +671,20 @@ module pso (
             spacing_st_q <= 1'b0;
             freq_st_q <= 1'b0;
             cfg_err_q <= !i_rst;
-        end else if (!i_enable) begin
+        end else if (!f_enable_q) begin
             ovl_cnt_q <= ovl_base;
-            overlap_st_q <= overlap_st_q && !i_clear;
-            rate_over_st_q <= rate_over_st_q && !i_clear;
-            spacing_st_q <= spacing_st_q && !i_clear;
-            freq_st_q <= freq_st_q && !i_clear;
+            overlap_st_q <= overlap_st_q && !f_clear_q;
+            rate_over_st_q <= rate_over_st_q && !f_clear_q;
+            spacing_st_q <= spacing_st_q && !f_clear_q;
+            freq_st_q <= freq_st_q && !f_clear_q;
             cfg_err_q <= 1'b0;
         end else begin
             fire_cnt_q <= fire_cnt_d;
             ovl_cnt_q <= ovl_d;
-            overlap_st_q <= (overlap_st_q && !i_clear) || overlap;
-            rate_over_st_q <= (rate_over_st_q && !i_clear) || rate_over;
-            spacing_st_q <= (spacing_st_q && !i_clear) || spacing_err;
-            freq_st_q <= (freq_st_q && !i_clear) || freq_err;
+            overlap_st_q <= (overlap_st_q && !f_clear_q) || overlap;
+            rate_over_st_q <= (rate_over_st_q && !f_clear_q) || rate_over;
+            spacing_st_q <= (spacing_st_q && !f_clear_q) || spacing_err;
+            freq_st_q <= (freq_st_q && !f_clear_q) || freq_err;
             cfg_err_q <= 1'b0;
         end
     end

@@ -363,9 +363,11 @@ BLOCKS = [
     dict(
         block="pso",
         module="pso",
-        dut="pso (position-synchronised output: chord tracking window with the chord ROM, fire in "
-            "call t + 3 with remainder carry, pulse, window, array RAM in three copies with write "
-            "forwarding, part-speed generator with the 24 MHz clamp, sequenced spacing check); every "
+        dut="pso (position-synchronised output: register stage (values in force one call after "
+            "they are presented, the configuration check registered), chord tracking window with the "
+            "chord ROM, fire in call t + 3 with remainder carry, pulse, window, array RAM in four "
+            "copies with prefetched, write-forwarded thresholds, part-speed generator with the 24 MHz "
+            "clamp, sequenced spacing check); every "
             "input is a column (the golden set: one scenario in four parts; the stress set: every "
             "register moved, array writes while running, invalid configurations, enable drops).",
         fields=[

@@ -215,6 +215,11 @@ err_stats run_ideal(const lxt::pso_path& path, const double off[3], int k, uint6
     err_stats st;
     const long long calls = static_cast<long long>(path.duration()) + 10;
     const double thr = static_cast<double>(dist) / static_cast<double>(kQ);
+    {   // the registers are presented one call before the motion (REG_LAT: in force from its
+        // first call)
+        const golden::pso_in idle;
+        st.exact = lxt::pso_compare(h.step(lxt::pso_to_hls(idle), hr), g.step(idle, r)).empty();
+    }
     for (long long t = 0; t < calls; ++t) {
         golden::pso_in in;
         smp.advance(static_cast<double>(t + 1), in.step);
@@ -354,8 +359,9 @@ golden::pso_in steps(int a, int b, int c) {
 }
 
 void test_directed(tbu::result& res) {
-    // remainder carry: 1 count per call on x, distance 2.5 counts: fire k after count ceil(2.5 k),
-    // i.e. the step of call ceil(2.5k) - 1 fires in call ceil(2.5k) + 2 (FIRE_LAT 3)
+    // remainder carry: 1 count per call on x, distance 2.5 counts: fire k after count ceil(2.5 k);
+    // the registers presented in call 0 are in force from call 1 (REG_LAT), so the step of call 0
+    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + 3 (FIRE_LAT 3)
     {
         pair_run p{{}, {}, &res, "carry"};
         golden::pso_regs r;
@@ -369,12 +375,14 @@ void test_directed(tbu::result& res) {
             if (p.step(steps(1, 0, 0), r).fire) fires.push_back(t);
         bool ok = fires.size() == 78;
         for (size_t k = 1; ok && k <= fires.size(); ++k)
-            ok = fires[k - 1] == static_cast<long long>(std::ceil(2.5 * static_cast<double>(k))) + lx::pso_cfg::FIRE_LAT - 1;
+            ok = fires[k - 1] == static_cast<long long>(std::ceil(2.5 * static_cast<double>(k))) + lx::pso_cfg::FIRE_LAT - 1 +
+                                     lx::pso_cfg::REG_LAT;
         res.check(ok, "remainder carry: fires not at ceil(2.5 k) (" + std::to_string(fires.size()) + " fires)");
     }
     // K = 1: per-call magnitudes; a synchronous diagonal (x and y step together) advances sqrt2
     // per call, a 3D one sqrt3: distance 10 counts is reached after ceil(10/sqrt2) = 8,
-    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 = 2 calls later
+    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 = 2 calls later (plus REG_LAT: the run starts
+    // in call 1)
     for (int dims = 2; dims <= 3; ++dims) {
         pair_run p{{}, {}, &res, "K=1 diagonal"};
         golden::pso_regs r;
@@ -385,7 +393,7 @@ void test_directed(tbu::result& res) {
         long long first = -1;
         for (int t = 0; t < 40 && first < 0; ++t)
             if (p.step(steps(1, -1, dims == 3 ? 1 : 0), r).fire) first = t;
-        const long long want = (dims == 2 ? 8 : 6) + lx::pso_cfg::FIRE_LAT - 1;
+        const long long want = (dims == 2 ? 8 : 6) + lx::pso_cfg::FIRE_LAT - 1 + lx::pso_cfg::REG_LAT;
         res.check(first == want, "K=1 " + std::to_string(dims) + "D diagonal: first fire at call " + std::to_string(first) +
                                      ", want " + std::to_string(want));
     }
@@ -415,8 +423,9 @@ void test_directed(tbu::result& res) {
             last = p.step(steps(1, 0, 0), r);
             if (last.fire) fires.push_back(t);
         }
-        // position after call t is t+1; fire k is FIRE_LAT calls after the step that reaches D_k
-        const std::vector<long long> want = {6, 12, 15, 42};
+        // the run starts in call 1 (REG_LAT), so the tracked position after call t is t; fire k is
+        // FIRE_LAT calls after the step that reaches D_k
+        const std::vector<long long> want = {7, 13, 16, 43};
         res.check(fires == want && last.arr_done, "array: fires at listed distances wrong (" +
                                                       std::to_string(fires.size()) + " fires)");
     }
@@ -452,7 +461,8 @@ void test_directed(tbu::result& res) {
                   "window: fires " + std::to_string(fires) + " emits " + std::to_string(emits));
     }
     // pulse width and overlap: distance 2 counts at 1 count/call (a fire every 2 calls from call
-    // 4), pulse width 5: every emit after the first overlaps; fire_cnt still counts each one
+    // 5: the run starts in call 1, REG_LAT), pulse width 5: every emit after the first overlaps;
+    // fire_cnt still counts each one
     {
         pair_run p{{}, {}, &res, "overlap"};
         golden::pso_regs r;
@@ -463,7 +473,8 @@ void test_directed(tbu::result& res) {
         r.min_period = 3;
         golden::pso::out o;
         int emits = 0, high = 0;
-        for (int t = 0; t < 23; ++t) {
+        const int n_calls = 23 + lx::pso_cfg::REG_LAT;
+        for (int t = 0; t < n_calls; ++t) {
             o = p.step(steps(1, 0, 0), r);
             emits += o.emit ? 1 : 0;
             high += o.pulse ? 1 : 0;
@@ -471,12 +482,12 @@ void test_directed(tbu::result& res) {
         res.check(emits == 10 && o.fire_cnt == 10 && o.overlap_cnt == 9 && o.overlap_st && o.freq_st,
                   "overlap: emits " + std::to_string(emits) + " fire_cnt " + std::to_string(o.fire_cnt) + " overlaps " +
                       std::to_string(o.overlap_cnt));
-        res.check(high == 23 - 4, "overlap: pulse level high for " + std::to_string(high) + " calls");
+        res.check(high == n_calls - 4 - lx::pso_cfg::REG_LAT, "overlap: pulse level high for " + std::to_string(high) + " calls");
         // width 1 and distance 2: no overlap, pulses 1 call each
         pair_run q{{}, {}, &res, "no overlap"};
         r.pulse_w = 1;
         r.min_period = 2;
-        for (int t = 0; t < 23; ++t) o = q.step(steps(1, 0, 0), r);
+        for (int t = 0; t < n_calls; ++t) o = q.step(steps(1, 0, 0), r);
         res.check(o.fire_cnt == 10 && o.overlap_cnt == 0 && !o.overlap_st && !o.freq_st, "no overlap: flags set");
     }
     // part-speed: a command above 24 MHz is clamped (pulse rate <= 24 MHz) and flagged;
@@ -501,21 +512,22 @@ void test_directed(tbu::result& res) {
                   "part-speed 20 MHz: " + std::to_string(o.ps_count) + " pulses in 1 ms");
         res.check(std::fabs(golden::pso_max_feed(12800) - 1875.0) < 1e-9, "max feed 24 MHz / 12800 counts/mm");
         // minimum spacing: 1000 mm/s with a 100 kHz laser = 10 um = 128 counts; firing at 100
-        // counts is flagged (at the first result, run call 17), at 130 counts not
+        // counts is flagged (at the first result, run call 17 = call 18), at 130 counts not
         const double feed = 1000, laser = 100e3;
         res.check(std::fabs(golden::pso_min_spacing(feed, laser) - 0.01) < 1e-12, "min spacing formula");
         r.min_period = golden::pso_min_period_clocks(laser);
         in.ps_inc = golden::pso_rate_increment(12800, feed, nullptr);
         pair_run a{{}, {}, &res, "spacing flagged"};
         r.fire_dist = 100 * kQ;
-        for (int t = 0; t < lx::pso_cfg::SP_LAT + 1; ++t) o = a.step(in, r);
+        for (int t = 0; t < lx::pso_cfg::SP_LAT + 1 + lx::pso_cfg::REG_LAT; ++t) o = a.step(in, r);
         res.check(o.spacing_st, "min spacing: 100 counts at 1000 mm/s, 100 kHz not flagged");
         pair_run b{{}, {}, &res, "spacing ok"};
         r.fire_dist = 130 * kQ;
         for (int t = 0; t < 100000; ++t) o = b.step(in, r);
         res.check(!o.spacing_st && !o.freq_st && o.fire_cnt > 0, "min spacing: 130 counts flagged or no fire");
     }
-    // bad configurations: each one raises cfg_err and no pulse leaves
+    // bad configurations: each one raises cfg_err (from call 1: call 0 works with the reset values,
+    // REG_LAT) and no pulse leaves
     {
         struct bad {
             const char* what;
@@ -561,20 +573,22 @@ void test_directed(tbu::result& res) {
             bool err = true, any = false;
             for (int t = 0; t < 50; ++t) {
                 const golden::pso::out o = p.step(steps(1, 1, 1), r);
-                err = err && o.cfg_err;
+                if (t >= lx::pso_cfg::REG_LAT) err = err && o.cfg_err;
                 any = any || o.pulse || o.fire;
             }
             res.check(err && !any, std::string("bad configuration not rejected: ") + b.what);
         }
         // a legal array entry makes the same configuration good; a later bad write rejects it
+        // (each checked in the call after it is presented, REG_LAT)
         pair_run p{{}, {}, &res, "array entry write"};
         golden::pso_regs r;
         r.arr_en = true;
         r.arr_len = 1;
         r.arr_we = true;
         r.arr_data = 2 * kQ;
-        res.check(!p.step(golden::pso_in{}, r).cfg_err, "array entry of 2 counts rejected");
+        res.check(!p.step(golden::pso_in{}, r).cfg_err, "reset values in force rejected");
         r.arr_data = 1 * kQ;
+        res.check(!p.step(golden::pso_in{}, r).cfg_err, "array entry of 2 counts rejected");
         res.check(p.step(golden::pso_in{}, r).cfg_err, "array entry of 1 count accepted");
     }
 }

@@ -910,7 +910,8 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
 // per call on every axis: fires in consecutive calls at small distances; reversals), enable
 // drops of 1..3 calls, clears, live distance changes, array writes while running (to the entry
-// of the next fire and the one after it, too: the RAM forwarding of the RTL; one segment in 3
+// of the next fire and the three after it, too: the prefetch and RAM forwarding of the RTL,
+// whose four read copies cover idx .. next^3(idx); one segment in 3
 // writes there in half of its calls). The first 120
 // calls are directed: an array run in part-speed with a spacing check, dropped for one call at
 // idx != 0 while entry 0 is rewritten, then restarted (the first call of a run samples entry 0
@@ -1025,7 +1026,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
             }
             if (r.chance(hammer ? 2 : 50)) {  // a write while running: often the entry of the next fire or the one after
                 x.arr_we = true;
-                x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 2)) % 64 : r.range(0, 63));
+                x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 3)) % 64 : r.range(0, 63));
                 x.arr_data = r.chance(30) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
                              : hammer    ? C::MIN_DIST + (r.u() & 0x1ffffffffULL)
                                          : draw_dist();

@@ -2,11 +2,12 @@
 // tb_pso.v — vector testbench of rtl_ref/pso.v.
 // Spec: block pso of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
-// DUT: pso (position-synchronised output: chord tracking window with the chord ROM, fire in call t
-// + 3 with remainder carry, pulse, window, array RAM in three copies with write forwarding, part-
-// speed generator with the 24 MHz clamp, sequenced spacing check); every input is a column (the
-// golden set: one scenario in four parts; the stress set: every register moved, array writes while
-// running, invalid configurations, enable drops).
+// DUT: pso (position-synchronised output: register stage (values in force one call after they are
+// presented, the configuration check registered), chord tracking window with the chord ROM, fire in
+// call t + 3 with remainder carry, pulse, window, array RAM in four copies with prefetched, write-
+// forwarded thresholds, part-speed generator with the 24 MHz clamp, sequenced spacing check); every
+// input is a column (the golden set: one scenario in four parts; the stress set: every register
+// moved, array writes while running, invalid configurations, enable drops).
 // Reads one vector file in the format of docs/VECTORS.md: pso.hex (golden vectors, `laserax
 // vectors`; CTest rtl_pso) or pso_stress.hex (rtl_stress_vectors, rtl_ref/tb/stress_vectors.cpp,
 // expected columns from hls/; CTest rtl_pso_stress); both have the field list below. For every row

@@ -427,6 +427,14 @@ int cmd_pso(const std::vector<std::string>& args, size_t first) {
     bool speed_ok = true;
     lx::pso::out_t last{};
     int prev_key[6] = {-1, -1, -1, -1, -1, -1};
+    {   // the registers are presented one call before the motion: they are in force from its
+        // first call (register stage, docs/PSO_COUNTERS.md §2.2)
+        const golden::pso_in idle;
+        const lx::pso::out_t h = hls.step(pso_to_hls(idle), hregs);
+        const golden::pso::out g = gold.step(idle, regs);
+        const std::string m = pso_compare(h, g);
+        if (!m.empty()) mismatch = "register call: " + m;
+    }
     for (long long t = 0; t < calls; ++t) {
         golden::pso_in in;
         speed_ok = smp.advance(static_cast<double>(t + 1), in.step) && speed_ok;
