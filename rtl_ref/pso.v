@@ -26,9 +26,11 @@
 //   B1  y = (r_rev ? part : 0) + chord (+1.0 for a generator pulse), x = r_kclose ? y : ..., and
 //       x - thr, y - thr for thr0 (the next fire's threshold if this call's B2 does not fire)
 //       and thr1 (if it does): fire_dist, or the array entries idx and next(idx).
-//   B2  fire = b_v && !done && rem + (y - thr) >= 0; rem' = rem + x (- thr): each result one add
-//       of the remainder and a register (the candidate picked by the registered fire of the last
-//       call). Array index, pulse timer, overlap / frequency flags.
+//   B2  fire = b_v && !done && rem + (y - thr) >= 0; rem' = rem + x (- thr). The remainder is
+//       two registers (rem1: the last call fired, rem0: it did not) picked by the registered fire
+//       of the last call, which also picks the candidate differences: each case is one add of two
+//       registers, the pick comes after the add, and the remainder's next values do not depend on
+//       this call's fire. Array index, pulse timer, overlap / frequency flags.
 // A step in call t fires in call t + 3.
 //
 // Array RAM (64 x 56): four copies (one read port each, the write port shared), read in call
@@ -216,7 +218,9 @@ module pso (
     reg                     b_inwin_q, b_v_q, b_fire1_q;
     reg [W_CHORD-1:0]       part_q;
     // stage B2
-    reg [W_REM-1:0]         rem_q, dist_q;
+    reg [W_REM-1:0]         rem1_q, rem0_q;   // the remainder: rem1 if the last call fired
+                                              //   (b_fire1), else rem0
+    reg [W_REM-1:0]         dist_q;
     reg [6:0]               idx_q;
     reg [6:0]               nx_q, nx2_q, nx3_q;   // next(idx), next(next(idx)), next^3(idx)
     reg                     done_q;
@@ -348,37 +352,60 @@ module pso (
     wire [W_REM-1:0]   xm1_d = r_kclose_q ? ym1_d : pm1;
 
     // ---- stage B2 ------------------------------------------------------------------------------
-    wire [W_REM-1:0] ym   = b_fire1_q ? b_ym1_q : b_ym0_q;
-    wire [W_REM-1:0] xm   = b_fire1_q ? b_xm1_q : b_xm0_q;
-    wire [W_REM-1:0] vm   = csel(rem_q, ym, 1'b0);           // value - thr
-    wire             fire = b_v_q && !done_q && !vm[W_REM-1];
-    wire [W_REM-1:0] rx   = csel(rem_q, xm, 1'b0);
-    wire [W_REM-1:0] r0   = csel(rem_q, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);
-    wire [W_REM-1:0] ry   = csel(rem_q, {{(W_REM-W_INCR){1'b0}}, b_y_q}, 1'b0);
-    wire [W_REM-1:0] rem_d  = done_q ? rem_q : fire ? rx : r0;
+    // The remainder is kept as two registers and the last call's fire (b_fire1) says which one
+    // holds it: rem1 = rem + xm of the last call (it fired), rem0 = rem + x (it did not). The
+    // candidate differences are picked by the same bit, so the value - thr of both cases is one
+    // add of two registers each (v1, v0), picked after the add; the remainder's next value does
+    // not wait for this call's fire (rem1' = rem + xm, rem0' = rem + x: b_fire1' = fire picks).
+    wire             f1   = b_fire1_q;
+    wire [W_REM-1:0] rem  = f1 ? rem1_q : rem0_q;
+    wire [W_REM-1:0] v1   = csel(rem1_q, b_ym1_q, 1'b0);      // value - thr if the last call fired
+    wire [W_REM-1:0] v0   = csel(rem0_q, b_ym0_q, 1'b0);      //   ... if it did not
+    wire             en1  = b_v_q && !done_q && f1;          // (registers only)
+    wire             en0  = b_v_q && !done_q && !f1;
+    wire             fire = (en1 && !v1[W_REM-1]) || (en0 && !v0[W_REM-1]);
+    wire [W_REM-1:0] vm   = f1 ? v1 : v0;                    // value - thr
+    wire [W_REM-1:0] rx1  = csel(rem1_q, b_xm1_q, 1'b0);
+    wire [W_REM-1:0] rx0  = csel(rem0_q, b_xm0_q, 1'b0);
+    wire [W_REM-1:0] rx   = f1 ? rx1 : rx0;                  // rem + xm
+    wire [W_REM-1:0] r0   = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);
+    wire [W_REM-1:0] ry   = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_y_q}, 1'b0);
+    wire [W_REM-1:0] rem1_d = rx;                            // used only if this call fires
+    wire [W_REM-1:0] rem0_d = done_q ? rem : r0;
     wire [W_REM-1:0] dist_d = done_q ? dist_q : fire ? vm : ry;
-    // the index moves to next(idx) (a register, as next(next(idx)) and next^3(idx): no add or
-    // compare after the fire decision); idx is the last entry iff next(idx) = 0
+    // Everything else that a fire changes is written as a select by the fire between values
+    // formed from registers (emit, overlap and frequency conditions, the counters' increments).
+    // The index moves to next(idx) (a register, as next(next(idx))
+    // and next^3(idx): no add or compare after the fire decision); idx is the last entry iff
+    // next(idx) = 0.
     wire             last   = (nx_q == 7'd0);
-    wire             adv    = fire && arr_en_q && !(last && !arr_wrap_q);
+    wire             adv_c  = arr_en_q && !(last && !arr_wrap_q);
+    wire             done_c = arr_en_q && last && !arr_wrap_q;
+    wire             adv    = fire && adv_c;
     wire [6:0]       idx_d  = adv ? nx_q : idx_q;
-    wire             done_d = done_q || (fire && arr_en_q && last && !arr_wrap_q);
+    wire             done_d = done_q || (fire && done_c);
     // a call that resets the tracking state: next(0), next^2(0), next^3(0) for the length
     // presented (in force in the next call, which may start a run and latch it)
     wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
     wire [6:0]       nx4    = next_idx(nx3_q, len_q);
+    // conditions of a fire (registers only): emit, overlap, frequency error
+    wire             ov_c   = b_inwin_q && (timer_q != 16'd0);
+    wire             fe_c   = b_inwin_q && (f_min_period_q != 16'd0) &&
+                              (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
     wire             emit   = fire && b_inwin_q;
-    wire             overlap  = emit && (timer_q != 16'd0);
-    wire             freq_err = emit && (f_min_period_q != 16'd0) &&
-                                (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
-    wire [W_PW-1:0]  timer_d  = emit ? f_pulse_w_q : (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;
+    wire             overlap  = fire && ov_c;
+    wire             freq_err = fire && fe_c;
+    wire [W_PW-1:0]  timer_n  = (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;   // no emit
+    wire [W_PW-1:0]  timer_d  = emit ? f_pulse_w_q : timer_n;
+    wire             pulse_d  = emit ? (f_pulse_w_q != 16'd0) : (timer_n != 16'd0);
     wire [W_GAP-1:0] since_d  = emit ? 16'd0 : (since_q != 16'hffff) ? since_q + 16'd1 : since_q;
     wire [W_FCNT-1:0] fire_cnt_d = emit ? fire_cnt_q + 32'd1 : fire_cnt_q;
     // clear acts first, an event of this call sets its flag again
     wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
-    wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
+    wire [W_OVL-1:0] ovl_ov   = (ov_c && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
+    wire [W_OVL-1:0] ovl_d    = fire ? ovl_ov : ovl_base;
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
@@ -563,7 +590,8 @@ module pso (
             b_v_q <= 1'b0;
             b_fire1_q <= 1'b0;
             part_q <= {W_CHORD{1'b0}};
-            rem_q <= {W_REM{1'b0}};
+            rem1_q <= {W_REM{1'b0}};
+            rem0_q <= {W_REM{1'b0}};
             dist_q <= {W_REM{1'b0}};
             idx_q <= 7'd0;
             adv_q <= 1'b0;
@@ -637,7 +665,8 @@ module pso (
             b_fire1_q <= fire;
             if (!done_q) part_q <= (r_kclose_q || !r_v_q) ? {W_CHORD{1'b0}} : r_chord_q;
             // B2
-            rem_q <= rem_d;
+            rem1_q <= rem1_d;
+            rem0_q <= rem0_d;
             dist_q <= dist_d;
             idx_q <= idx_d;
             adv_q <= adv;
@@ -651,7 +680,7 @@ module pso (
             since_q <= since_d;
             fire_q <= fire;
             emit_q <= emit;
-            pulse_q <= (timer_d != 16'd0);
+            pulse_q <= pulse_d;
             in_win_q <= b_inwin_q;
             overlap_q <= overlap;
             rate_over_q <= rate_over;
