@@ -145,6 +145,29 @@ module encoder_counter (
         end
     endfunction
 
+    // the counter moves (cnt + 1, - 1, - 2: b a constant) as a three-part carry-select add (11,
+    // 11, 10 bits): the longest carry chain is 11 bits; the upper part's carry-in is one LUT of
+    // the lower and middle carries (with a constant b one of the middle carries is constant);
+    // written for W_CNT = 32
+    function [W_CNT-1:0] csel3;
+        input [W_CNT-1:0] a, b;
+        reg [11:0] lo;
+        reg [11:0] m0;     // [11]: carry out with carry-in 0
+        reg [12:0] m1;     // {a, 1} + {b, 1}: carry-in 1; [12] carry out
+        reg [9:0]  h0;
+        reg [10:0] h1;
+        reg        cm;
+        begin
+            lo = {1'b0, a[10:0]} + {1'b0, b[10:0]};
+            m0 = {1'b0, a[21:11]} + {1'b0, b[21:11]};
+            m1 = {1'b0, a[21:11], 1'b1} + {1'b0, b[21:11], 1'b1};
+            h0 = a[31:22] + b[31:22];
+            h1 = {a[31:22], 1'b1} + {b[31:22], 1'b1};
+            cm = lo[11] ? m1[12] : m0[11];
+            csel3 = {cm ? h1[10:1] : h0, lo[11] ? m1[11:1] : m0[10:0], lo[10:0]};
+        end
+    endfunction
+
     // the same for the W_CORR-bit add of the position (20 + 20 bits)
     localparam integer LC = W_CORR / 2;
     function [W_CORR-1:0] csel_add40;
@@ -172,15 +195,15 @@ module encoder_counter (
     wire pend0_d = (i_rst_req0 && i_rst_on_trig) || (pend0_q && !i_trig);
     wire pend1_d = (i_rst_req1 && i_rst_on_trig) || (pend1_q && !i_trig);
 
-    // cnt': the three moves cnt + 1, cnt - 1, cnt - 2 are carry-select adds of the register
-    // alone; the value without a move (reset 0, preset load_val or cnt) and a 2-bit code are
+    // cnt': the three moves cnt + 1, cnt - 1, cnt - 2 are three-part carry-select adds of the
+    // register alone; the value without a move (reset 0, preset load_val or cnt) and a 2-bit code are
     // formed beside them from the inputs, and one 4:1 select follows
-    wire [W_ACC-1:0] p0 = csel_add({1'b0, cnt0_q}, {W_ACC{1'b0}} + 33'd1);
-    wire [W_ACC-1:0] n0 = csel_add({1'b0, cnt0_q}, {W_ACC{1'b1}});          // - 1
-    wire [W_ACC-1:0] t0 = csel_add({1'b0, cnt0_q}, {{(W_ACC-1){1'b1}}, 1'b0}); // - 2
-    wire [W_ACC-1:0] p1 = csel_add({1'b0, cnt1_q}, {W_ACC{1'b0}} + 33'd1);
-    wire [W_ACC-1:0] n1 = csel_add({1'b0, cnt1_q}, {W_ACC{1'b1}});
-    wire [W_ACC-1:0] t1 = csel_add({1'b0, cnt1_q}, {{(W_ACC-1){1'b1}}, 1'b0});
+    wire [W_CNT-1:0] p0 = csel3(cnt0_q, 32'd1);
+    wire [W_CNT-1:0] n0 = csel3(cnt0_q, 32'hffffffff);          // - 1
+    wire [W_CNT-1:0] t0 = csel3(cnt0_q, 32'hfffffffe);          // - 2
+    wire [W_CNT-1:0] p1 = csel3(cnt1_q, 32'd1);
+    wire [W_CNT-1:0] n1 = csel3(cnt1_q, 32'hffffffff);
+    wire [W_CNT-1:0] t1 = csel3(cnt1_q, 32'hfffffffe);
     wire [W_CNT-1:0] e0 = do_rst0 ? {W_CNT{1'b0}} : i_load0 ? i_load_val0 : cnt0_q;
     wire [W_CNT-1:0] e1 = do_rst1 ? {W_CNT{1'b0}} : i_load1 ? i_load_val1 : cnt1_q;
     wire             mv0 = !do_rst0 && !i_load0;   // the step applies
@@ -197,8 +220,8 @@ module encoder_counter (
                    (t & {W_CNT{code == 2'b10}}) | (n & {W_CNT{code == 2'b11}});
         end
     endfunction
-    wire [W_CNT-1:0] cnt0_d = sel4(code0, e0, p0[W_CNT-1:0], t0[W_CNT-1:0], n0[W_CNT-1:0]);
-    wire [W_CNT-1:0] cnt1_d = sel4(code1, e1, p1[W_CNT-1:0], t1[W_CNT-1:0], n1[W_CNT-1:0]);
+    wire [W_CNT-1:0] cnt0_d = sel4(code0, e0, p0, t0, n0);
+    wire [W_CNT-1:0] cnt1_d = sel4(code1, e1, p1, t1, n1);
     // (do_rst ? 0 : sum, as a mask: a LUT after the chain, not a second synchronous reset net
     // behind the configuration check)
     wire [W_INC-1:0] ph0_d  = ph0_sum[W_INC-1:0] & {W_INC{!do_rst0}};
