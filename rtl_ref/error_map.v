@@ -3,13 +3,14 @@
 // A correction table over equally spaced positions, linear interpolation between points, the
 // correction delivered as whole output counts (corr) and as the change since the previous call
 // (delta). Two banks of TBL_DEPTH = 1024 x 24-bit words with their own geometry (origin,
-// spacing_log2 k, n_points); each bank is two RAMs of 512 x 24 bits, the even and the odd words
-// (tbl0e/tbl0o, tbl1e/tbl1o: the four arrays of hls/error_map.h), so the two points T[i], T[i+1]
-// of an interval are one read of each RAM of the selected bank. The write port always writes the
-// bank that is not selected in that call, delayed by three registers (w1..w3) so that it is done in
-// the same clock as that call's reads: each RAM sees one access per clock (read or write) and a
-// reload can never mix tables. iCE40: each RAM is three SB_RAM40_4K (512 x 8), 12 in all; the
-// RAMs start at 0 (initial contents), as the C++ tables.
+// spacing_log2 k, n_points); the even and the odd words are two RAMs of 2 x 512 x 24 bits (tble,
+// tblo: the bank is the top address bit; the four arrays tbl<b>e / tbl<b>o of hls/error_map.h), so
+// the two points T[i], T[i+1] of an interval are one read of each RAM, in the selected bank. The
+// write port always writes the bank that is not selected in that call, delayed by three registers
+// (w1..w3) so that it is done in the same clock as that call's reads: a RAM's read port (selected
+// bank) and write port (other bank) never meet at one address, and a reload can never mix tables.
+// iCE40: each RAM is six SB_RAM40_4K (1024 x 4), 12 in all; the RAMs start at 0 (initial
+// contents), as the C++ tables.
 //
 // The inputs are sampled once every S_MAP = 32 calls (phase counter ph, 0 after reset: the calls
 // with ph = 0); stages A .. D run every call (one rising edge = one call of error_map::step(),
@@ -19,8 +20,8 @@
 //   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
 //   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; the RAM addresses (i+1)/2 (even)
 //      and i/2 (odd) registered
-//   R  registered RAM reads of the selected bank; the write of w3 (other bank)
-//   D  bank multiplexer, d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
+//   R  registered RAM reads (selected bank: the address's top bit); the write of w3 (other bank)
+//   D  d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
 //   M  ph = 5: load m_hi = 0, m_v = d_v, m_diff = d_o - d_e (25 bits), m_e = d_e + 128, flags;
 //      ph = 6 .. 26: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
 //      m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
@@ -82,32 +83,29 @@ module error_map (
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
-    // ---- table RAMs (not reset): even and odd words of each bank -----------------------------
-    // A RAM is read only while its bank is selected and written only while it is not (the write
-    // port is delayed to the clock of the reads, see above): a read and a write never meet in one
-    // RAM in one clock. no_rw_check tells Yosys so; without it, it adds an address comparator and
-    // a bypass multiplexer for a collision that cannot happen (measured: 2 ns of the read-address path).
-    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0e [0:TBL_DEPTH/2-1];
-    (* no_rw_check *) reg signed [W_CORR-1:0] tbl0o [0:TBL_DEPTH/2-1];
-    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1e [0:TBL_DEPTH/2-1];
-    (* no_rw_check *) reg signed [W_CORR-1:0] tbl1o [0:TBL_DEPTH/2-1];
+    // ---- table RAMs (not reset): even and odd words, both banks in one RAM each ------------------
+    // tble[{b, j}] = T_b[2j], tblo[{b, j}] = T_b[2j + 1]: the bank is the top address bit, so the
+    // read port (selected bank) and the write port (the other bank, delayed to the clock of the
+    // reads) of one RAM never meet at one address, and the words of the selected bank come out of
+    // the RAM without a bank multiplexer. no_rw_check tells Yosys so; without it, it adds an
+    // address comparator and a bypass multiplexer for a collision that cannot happen (measured:
+    // 2 ns of the read-address path).
+    (* no_rw_check *) reg signed [W_CORR-1:0] tble [0:TBL_DEPTH-1];
+    (* no_rw_check *) reg signed [W_CORR-1:0] tblo [0:TBL_DEPTH-1];
     // Power-up contents 0, as the C++ tables (block RAM initial contents on the iCE40). At the
     // held end of a table (i = n - 1, u = 0) the word of the other RAM is read but multiplied by
     // 0 (or cancelled, ERROR_MAP.md §4); it may lie beyond the loaded words, so it must not be X.
 `ifndef FORMAL
     integer ii;
     initial begin
-        for (ii = 0; ii < TBL_DEPTH / 2; ii = ii + 1) begin
-            tbl0e[ii] = {W_CORR{1'b0}};
-            tbl0o[ii] = {W_CORR{1'b0}};
-            tbl1e[ii] = {W_CORR{1'b0}};
-            tbl1o[ii] = {W_CORR{1'b0}};
+        for (ii = 0; ii < TBL_DEPTH; ii = ii + 1) begin
+            tble[ii] = {W_CORR{1'b0}};
+            tblo[ii] = {W_CORR{1'b0}};
         end
     end
 `endif
 
     // ---- stage A: geometry of the selected bank, registered subtract -------------------------
-    wire signed [37:0]        g_origin = i_bank_sel ? i_origin1 : i_origin0;
     wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
     wire        [W_N-1:0]     g_n      = i_bank_sel ? i_n1 : i_n0;
     // geometry check of each bank as plain logic (no carry chains), then the bank multiplexer:
@@ -128,14 +126,17 @@ module error_map (
     reg        [W_ADDR-1:0] w1_addr, w2_addr, w3_addr;
     reg signed [W_CORR-1:0] w1_data, w2_data, w3_data;
 
-    // p - origin as a carry-select subtract: the low 20 bits and both candidates of the high 19
-    // bits (borrow 0 / 1) side by side, then the select (two 20-bit carry chains instead of one of 39)
+    // p - origin = p + ~origin + 1 as a carry-select add: the low 20 bits and both candidates of
+    // the high 19 bits (carry 0 / 1) side by side, then the select (two 20-bit carry chains instead
+    // of one of 39). ~origin of the selected bank: the bank multiplexer's LUT inverts for free (an
+    // inverted operand of a carry chain is one more LUT per bit on the iCE40)
     localparam integer W_LO = 20;
-    wire [W_LO:0]           off_lo  = {1'b0, i_p[W_LO-1:0]} - {1'b0, g_origin[W_LO-1:0]};  // [W_LO]: borrow
+    wire [37:0]             ng_origin = i_bank_sel ? ~i_origin1 : ~i_origin0;
+    wire [W_LO:0]           off_lo  = {1'b0, i_p[W_LO-1:0]} + {1'b0, ng_origin[W_LO-1:0]} + {{W_LO{1'b0}}, 1'b1};  // [W_LO]: no borrow
     wire [W_OFF-W_LO-1:0]   p_hi    = {i_p[37], i_p[37:W_LO]};
-    wire [W_OFF-W_LO-1:0]   o_hi    = {g_origin[37], g_origin[37:W_LO]};
-    wire [W_OFF-W_LO-1:0]   off_hi0 = p_hi - o_hi;
-    wire [W_OFF-W_LO-1:0]   off_hi1 = p_hi + ~o_hi;   // p_hi - o_hi - 1
+    wire [W_OFF-W_LO-1:0]   no_hi   = {ng_origin[37], ng_origin[37:W_LO]};
+    wire [W_OFF-W_LO-1:0]   off_hi0 = p_hi + no_hi;                            // p_hi - o_hi - 1
+    wire [W_OFF-W_LO-1:0]   off_hi1 = p_hi + no_hi + {{(W_OFF-W_LO-1){1'b0}}, 1'b1};  // p_hi - o_hi
     always @(posedge i_clk) begin
         a_off  <= {off_lo[W_LO] ? off_hi1 : off_hi0, off_lo[W_LO-1:0]};
         // with an invalid geometry the sample is inactive (a_act = 0) and k, last are not used:
@@ -234,55 +235,34 @@ module error_map (
         end
     end
 
-    // ---- stage R: one registered read of each RAM of the selected bank, the delayed write ------
-    reg signed [W_CORR-1:0] rd0e, rd0o, rd1e, rd1o;   // registered RAM outputs
+    // ---- stage R: one registered read of each RAM (selected bank), the delayed write ----------
+    reg signed [W_CORR-1:0] rd_e, rd_o;   // registered RAM outputs
 `ifdef FORMAL
     // formal: the table contents are free (the properties below hold for any table); every read
     // returns an arbitrary word
-    (* anyseq *) wire signed [W_CORR-1:0] f_rd0e, f_rd0o, f_rd1e, f_rd1o;
+    (* anyseq *) wire signed [W_CORR-1:0] f_rd_e, f_rd_o;
     always @(posedge i_clk) begin
-        if (!c_bank) begin
-            rd0e <= f_rd0e;
-            rd0o <= f_rd0o;
-        end
-        if (c_bank) begin
-            rd1e <= f_rd1e;
-            rd1o <= f_rd1o;
-        end
+        rd_e <= f_rd_e;
+        rd_o <= f_rd_o;
     end
 `else
     always @(posedge i_clk) begin
-        if (!c_bank) begin
-            rd0e <= tbl0e[c_ea];
-            rd0o <= tbl0o[c_oa];
-        end
+        rd_e <= tble[{c_bank, c_ea}];
+        rd_o <= tblo[{c_bank, c_oa}];
     end
     always @(posedge i_clk) begin
-        if (c_bank) begin
-            rd1e <= tbl1e[c_ea];
-            rd1o <= tbl1o[c_oa];
-        end
+        if (w3_we && !w3_addr[0]) tble[{w3_bank, w3_addr[W_ADDR-1:1]}] <= w3_data;
     end
     always @(posedge i_clk) begin
-        if (w3_we && !w3_bank && !w3_addr[0]) tbl0e[w3_addr[W_ADDR-1:1]] <= w3_data;
-    end
-    always @(posedge i_clk) begin
-        if (w3_we && !w3_bank && w3_addr[0]) tbl0o[w3_addr[W_ADDR-1:1]] <= w3_data;
-    end
-    always @(posedge i_clk) begin
-        if (w3_we && w3_bank && !w3_addr[0]) tbl1e[w3_addr[W_ADDR-1:1]] <= w3_data;
-    end
-    always @(posedge i_clk) begin
-        if (w3_we && w3_bank && w3_addr[0]) tbl1o[w3_addr[W_ADDR-1:1]] <= w3_data;
+        if (w3_we && w3_addr[0]) tblo[{w3_bank, w3_addr[W_ADDR-1:1]}] <= w3_data;
     end
 `endif
 
-    reg              r_lsb, r_bank, r_act, r_inr, r_err;
+    reg              r_lsb, r_act, r_inr, r_err;
     reg [W_FRAC-1:0] r_u;
     always @(posedge i_clk) begin
         r_lsb  <= c_lsb;
         r_u    <= c_u;
-        r_bank <= c_bank;
         r_inr  <= c_inr;
         if (i_rst) begin
             r_act <= 1'b0;
@@ -293,16 +273,19 @@ module error_map (
         end
     end
 
-    // ---- stage D: bank multiplexer, orientation (the difference is formed by the M load) ------
-    wire signed [W_CORR-1:0] we_m = r_bank ? rd1e : rd0e;
-    wire signed [W_CORR-1:0] wo_m = r_bank ? rd1o : rd0o;
+    // ---- stage D: the words of the selected bank, orientation (the difference is formed by the M
+    // load). v = lsb ? 2^20 - u : u as one adder: (u ^ {lsb}) + lsb, 20 bits and the carry into
+    // bit 20
+    wire signed [W_CORR-1:0] we_m = rd_e;
+    wire signed [W_CORR-1:0] wo_m = rd_o;
+    wire        [W_V-1:0]    v_d  = {1'b0, r_u ^ {W_FRAC{r_lsb}}} + {{(W_V-1){1'b0}}, r_lsb};
     reg signed [W_CORR-1:0] d_e, d_o;
     reg        [W_V-1:0]    d_v;
     reg                     d_act, d_inr, d_err;
     always @(posedge i_clk) begin
         d_e    <= we_m;
         d_o    <= wo_m;
-        d_v    <= r_lsb ? ({1'b1, {W_FRAC{1'b0}}} - {1'b0, r_u}) : {1'b0, r_u};
+        d_v    <= v_d;
         d_inr  <= r_inr;
         if (i_rst) begin
             d_act <= 1'b0;
