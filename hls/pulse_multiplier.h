@@ -8,15 +8,15 @@
 //        re-base sequencer.
 // A ratio / offset change (seen by a registered compare) starts a re-base in the next idle call:
 // steps count at the target ratio from the call after the start, a serial shift-and-add
-// multiplier (one bit of N0 per call, 39-bit adder) forms N0 * dR over 32 calls, X = T + dOFF and
-// T_new = X + P follow in 18-bit quarters, and T is replaced K_REBASE = 40 calls after the start,
+// multiplier (one bit of N0 per call, 39-bit adder) forms N0 * dR over 32 calls, X = T + OFF' -
+// OFF_old (as ~(~S + OFF_old), S = T + OFF') and T_new = X + P follow in 18-bit quarters, and T is replaced K_REBASE = 40 calls after the start,
 // from when V = N * R' + OFF' exactly again (the re-base theorem, DESIGN §4.3).
 // Output pipeline: stage 2 hi += inc + c, carry of lo + T_lo; stage 3 comp_int = hi + T_hi + c2;
 // stage 4 comp and delta = comp_int - comp. comp/delta of call t are those of the step of call
 // t - L_MUL (L_MUL = 3).
 //
 // Widths (pulse_multiplier_cfg): N 32, R 37 unsigned, dR 38 signed (two halves), acc/T/P 70,
-// lo 32, hi 38, serial partial product 39, dOFF 65 (sign-extended to 70), dOFF and the T
+// lo 32, hi 38, serial partial product 39, S and X 70 (the offsets sign-extended), the T
 // additions in 18-bit quarters.
 #ifndef LASERAX_HLS_PULSE_MULTIPLIER_H
 #define LASERAX_HLS_PULSE_MULTIPLIER_H
@@ -45,10 +45,10 @@ struct pulse_multiplier_cfg {
     static constexpr int MUL_STEPS = W_RAW;                   // 32 serial multiply calls
     // sequencer call numbers (cnt = calls since the start)
     static constexpr int C_DR0 = 1, C_DR1 = 2;                // dR halves (N0 taken in C_DR0)
-    static constexpr int C_DOFF0 = 1;                         // 1..4: dOFF = OFF' - OFF_old, by quarters
+    static constexpr int C_S0 = 1;                            // 1..4: S = T + OFF' (kept inverted), by quarters
     static constexpr int C_MUL0 = C_DR1 + 2;                  // 4: first multiply call (the RTL
                                                               // registers its addend in call 3)
-    static constexpr int C_X0 = C_DOFF0 + 1;                  // 2..5: X = T + dOFF, by quarters
+    static constexpr int C_X0 = C_S0 + 1;                     // 2..5: X = ~(~S + OFF_old), by quarters
     static constexpr int C_ADD0 = C_MUL0 + MUL_STEPS;         // 36..39: T_new = X + P, by quarters
     static constexpr int C_ADD3 = C_ADD0 + N_TQ - 1;          // 39
     static constexpr int W_CNT = clog2p1(K_REBASE);           // 6
@@ -73,7 +73,7 @@ static_assert(pulse_multiplier_cfg::W_OFFSET < pulse_multiplier_cfg::W_RAW + pul
 static_assert(pulse_multiplier_cfg::W_HI == pulse_multiplier_cfg::W_POS, "comp is the integer part");
 static_assert(pulse_multiplier_cfg::C_ADD3 < pulse_multiplier_cfg::K_REBASE, "T_new ready before it is applied");
 static_assert(pulse_multiplier_cfg::C_X0 + pulse_multiplier_cfg::N_TQ <= pulse_multiplier_cfg::C_ADD0,
-              "X = T + dOFF done before X + P starts");
+              "X = T + OFF' - OFF_old done before X + P starts");
 
 class pulse_multiplier {
 public:
@@ -110,8 +110,8 @@ public:
         r_old_ = 0;
         drc_ = 0;
         off_old_ = 0;
-        doff_ = 0;
-        dcy_ = 0;
+        ns_ = 0;
+        scy_ = 0;
         x_ = 0;
         y_ = 0;
         acy_ = 0;
@@ -226,16 +226,17 @@ private:
         inc_wp_ = cfg::inc_t(r_int - r_all);
     }
 
-    // Quarter q of a + b + cin (18 bits; cin is c0 for q = 0, else the carry out of quarter q - 1,
-    // registered in cy) into dst.
+    // Quarter q of a + b (18 bits; the carry in is 0 for q = 0, else the carry out of quarter
+    // q - 1, registered in cy) into dst, inverted (~sum) with inv.
     uint<cfg::W_ACC> add_quarter(uint<cfg::W_ACC> dst, uint<cfg::W_ACC> a, uint<cfg::W_ACC> b, int q,
-                                 cfg::carry_t& cy, cfg::carry_t c0 = 0) {
+                                 cfg::carry_t& cy, bool inv = false) {
         const int sh = q * cfg::W_TQ;
         const uint<cfg::W_TQ + 1> sum =
-            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? c0 : cy);
+            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? cfg::carry_t(0) : cy);
         cy = cfg::carry_t(sum >> cfg::W_TQ);
+        const cfg::tq_t r = inv ? cfg::tq_t(~cfg::tq_t(sum)) : cfg::tq_t(sum);
         const uint<cfg::W_ACC> mask = uint<cfg::W_ACC>(cfg::tq_t(~cfg::tq_t(0))) << sh;
-        return (dst & ~mask) | ((uint<cfg::W_ACC>(cfg::tq_t(sum)) << sh) & mask);
+        return (dst & ~mask) | ((uint<cfg::W_ACC>(r) << sh) & mask);
     }
 
     static cfg::carry_t carry32(cfg::lo_t a, cfg::lo_t b) {
@@ -263,10 +264,13 @@ private:
             dr_ = cfg::dratio_t((uint<cfg::W_DRATIO>(h) << cfg::W_DRL) |
                                 uint<cfg::W_DRATIO>(cfg::drl_t(uint<cfg::W_DRATIO>(dr_))));
         }
-        // dOFF = OFF' - OFF_old (sign-extended to W_ACC: OFF' + ~OFF_old + 1) by quarters, each a
-        // call ahead of the X quarter that reads it
-        if (cnt >= cfg::C_DOFF0 && cnt < cfg::C_DOFF0 + cfg::N_TQ)
-            doff_ = add_quarter(doff_, uacc_t(acc_t(off_tgt_)), ~uacc_t(acc_t(off_old_)), cnt - cfg::C_DOFF0, dcy_, 1);
+        // S = T + OFF' (OFF' sign-extended to W_ACC) by quarters, kept inverted, each a call ahead
+        // of the X quarter that reads it: X = ~(~S + OFF_old) = T + OFF' - OFF_old (~a = -a - 1),
+        // so no operand is inverted in front of an adder (in the RTL an inverted operand of a carry
+        // chain costs a LUT per bit; the inversion of a sum is free)
+        const uacc_t t_x = (uacc_t(t_hi_) << cfg::R_FRAC) | uacc_t(t_lo_);
+        if (cnt >= cfg::C_S0 && cnt < cfg::C_S0 + cfg::N_TQ)
+            ns_ = add_quarter(ns_, t_x, uacc_t(acc_t(off_tgt_)), cnt - cfg::C_S0, scy_, true);
         // serial signed multiply P = N0 * dR: bit i of N0 per call, the sign bit subtracts
         if (cnt >= cfg::C_MUL0 && cnt < cfg::C_MUL0 + cfg::MUL_STEPS) {
             const int i = cnt - cfg::C_MUL0;
@@ -278,11 +282,11 @@ private:
             pl_ = cfg::lo_t((pl_ >> 1) | (cfg::lo_t(sum & 1) << (cfg::R_FRAC - 1)));
             pp_ = cfg::pp_t(sum >> 1);  // arithmetic shift
         }
-        const uacc_t t_x = (uacc_t(t_hi_) << cfg::R_FRAC) | uacc_t(t_lo_);
         const uacc_t p_x = (uacc_t(pp_) << cfg::R_FRAC) | uacc_t(pl_);
-        // X = T + dOFF (calls C_X0..), then T_new = X + P (calls C_ADD0..), one 18-bit quarter
-        // per call with a registered carry
-        if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ) x_ = add_quarter(x_, t_x, doff_, cnt - cfg::C_X0, acy_);
+        // X = ~(~S + OFF_old) (calls C_X0..), then T_new = X + P (calls C_ADD0..), one 18-bit
+        // quarter per call with a registered carry
+        if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ)
+            x_ = add_quarter(x_, ns_, uacc_t(acc_t(off_old_)), cnt - cfg::C_X0, acy_, true);
         if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3) y_ = add_quarter(y_, x_, p_x, cnt - cfg::C_ADD0, acy_);
         if (cnt == cfg::K_REBASE) {
             const uacc_t tn = y_;
@@ -321,9 +325,9 @@ private:
     cfg::pp_t pp_;
     cfg::lo_t pl_;
     offset_t off_old_;
-    uint<cfg::W_ACC> doff_;  // OFF' - OFF_old, sign-extended (built a quarter per call)
-    cfg::carry_t dcy_;
-    uint<cfg::W_ACC> x_, y_;  // T + dOFF, then T_new (built a quarter per call)
+    uint<cfg::W_ACC> ns_;  // ~S, S = T + OFF' (built a quarter per call)
+    cfg::carry_t scy_;
+    uint<cfg::W_ACC> x_, y_;  // T + OFF' - OFF_old, then T_new (built a quarter per call)
     cfg::carry_t acy_;
 };
 

@@ -13,7 +13,8 @@
 // A ratio / offset change is seen by a registered 101-bit compare (pend); the next idle call
 // starts a re-base: the target pair is loaded (steps from then on count at the new ratio) and the
 // old one kept; from registers, in the calls after: N0 = N (call 1), dR = R' - R in two halves
-// (calls 1, 2), dOFF = OFF' - OFF and X = T + dOFF in 18-bit quarters (calls 1..4, 2..5), a
+// (calls 1, 2), S = T + OFF' (kept inverted) and X = ~(~S + OFF_old) = T + OFF' - OFF_old in
+// 18-bit quarters (calls 1..4, 2..5), a
 // serial shift-and-add multiplier P = N0 * dR (calls 4..35: 39-bit adder, addend registered a
 // call ahead), T_new = X + P in quarters (calls 36..39), and T = T_new K_REBASE = 40 calls after
 // the start.
@@ -47,10 +48,10 @@ module pulse_multiplier (
     localparam integer W_INC    = W_HI + 1;              // 39
     localparam integer K_REBASE = 40;
     localparam integer C_DR0    = 1, C_DR1 = 2;          // the two dR halves (N0 taken in C_DR0)
-    localparam integer C_DOFF0  = 1;                     // 1..4: dOFF = OFF' - OFF_old, by quarters
+    localparam integer C_S0     = 1;                     // 1..4: S = T + OFF', by quarters
     localparam integer C_MUL0   = 4, MUL_STEPS = W_RAW;  // call 3 registers the first addend
     localparam integer C_ADD0   = C_MUL0 + MUL_STEPS;    // 36..39: T_new = X + P
-    localparam integer C_X0     = C_DOFF0 + 1;           // 2..5: X = T + dOFF, a quarter behind
+    localparam integer C_X0     = C_S0 + 1;              // 2..5: X = ~(~S + OFF_old), a quarter behind
     localparam integer W_CNT    = 6;
 
     // ---- registers ----------------------------------------------------------------------------
@@ -76,15 +77,15 @@ module pulse_multiplier (
     reg                       busy_q, pend_q;
     reg        [W_CNT-1:0]    cnt_q;
     reg                       f_dr0_q, f_dr1_q, f_pre0_q, f_mul_q, f_mul_pre_q;  // cnt decoded
-    reg        [3:0]          f_x_q, f_y_q;   // quarter of X = T + dOFF / of T_new = X + P
+    reg        [3:0]          f_x_q, f_y_q;   // quarter of X = T + OFF' - OFF_old / of T_new = X + P
     reg                       f_last_q;
     reg signed [W_DRATIO-1:0] dr_q;
     reg        [W_RATIO-1:0]  r_old_q;     // the target ratio before the start
     reg                       drc_q;       // carry of the low dR half
     reg signed [W_OFFSET-1:0] off_old_q;
-    reg        [W_ACC-1:0]    doff_q;      // OFF' - OFF_old, sign-extended
-    reg        [2:0]          dc_q;        // carry out of each dOFF quarter
-    reg        [3:0]          f_d_q;       // quarter of dOFF
+    reg        [W_ACC-1:0]    ns_q;        // ~S, S = T + OFF' (OFF' sign-extended)
+    reg        [2:0]          sc_q;        // carry out of each quarter of S
+    reg        [3:0]          f_s_q;       // quarter of S
     reg        [W_ACC-1:0]    x_q, y_q;
     reg        [2:0]          xc_q, yc_q;  // carry out of each quarter, its own flip-flop
 
@@ -106,11 +107,8 @@ module pulse_multiplier (
     // ---- stage 1: the step at the target ratio before this call ----------------------------------
     wire step_pos = !i_step[1] && i_step[0];
     wire step_neg = i_step[1];
-    // N + step (wraps), carry-select over two 16-bit halves
-    wire [16:0]             n_sum_l  = {1'b0, n_q[15:0]} + {1'b0, {14{i_step[1]}}, i_step};
-    wire [15:0]             n_sum_h0 = n_q[31:16] + {16{i_step[1]}};          // + sign extension
-    wire [15:0]             n_sum_h1 = n_q[31:16] + {16{i_step[1]}} + 16'd1;
-    wire signed [W_RAW-1:0] n_next = {n_sum_l[16] ? n_sum_h1 : n_sum_h0, n_sum_l[15:0]};
+    // N + step (wraps): one 32-bit chain from the register
+    wire signed [W_RAW-1:0] n_next = n_q + {{(W_RAW-2){i_step[1]}}, i_step};
     // N wraps when it steps past an end: the end flags are registers (nmax, nmin), so the wrap is
     // one LUT from the step. Their next values are equalities of n_q with the constants that the
     // step of this call takes to an end (n + step, the step -2 included), selected by the step.
@@ -156,7 +154,7 @@ module pulse_multiplier (
     wire pend_d = !start && ((i_ratio != r_use_q) || (i_comp_offset != off_tgt_q));
     wire             busy_d = start || (busy_q && !last);
     wire [W_CNT-1:0] cnt_d  = start ? {{(W_CNT-1){1'b0}}, 1'b1} : (busy_q && !last) ? cnt_q + 1'b1 : {W_CNT{1'b0}};
-    // dR = R_tgt - R_old (38 bits) from registers, in two halves (calls C_DOFF0, C_DOFF1), each
+    // dR = R_tgt - R_old (38 bits) from registers, in two halves (calls C_DR0, C_DR1), each
     // one plain chain with a registered carry
     localparam integer W_DRL = 20;
     wire [W_DRL:0]            dr_lo = {1'b0, r_use_q[W_DRL-1:0]} + {1'b0, ~r_old_q[W_DRL-1:0]} + 1'b1;
@@ -170,22 +168,24 @@ module pulse_multiplier (
         .i_clk(i_clk), .i_rst(i_rst), .i_clr(start), .i_load(busy_q && f_dr0_q), .i_a(n_q),
         .i_pre(busy_q && f_pre0_q), .i_step(busy_q && f_mul_q), .i_sign_nx(f_mul_pre_q), .i_b(dr_q),
         .o_p(p_x));
-    // dOFF = OFF_tgt - OFF_old (sign-extended to 70 bits: OFF_tgt + ~OFF_old + 1) by 18-bit
-    // quarters (calls 1..4), each quarter a call ahead of the X quarter that reads it
+    // X = T + OFF' - OFF_old (OFF' and OFF_old sign-extended to 70 bits) without an inverted
+    // operand in front of a carry chain (which costs one LUT per bit on the iCE40: the carry
+    // logic needs the inverted bit as a net), by ~a = -a - 1: S = T + OFF' (calls 1..4), stored
+    // inverted (the sum LUTs invert for free), then X = ~(~S + OFF_old) (calls 2..5), each one
+    // 18-bit quarter per call with a registered carry, the S quarter a call ahead of the X quarter
+    // that reads it; then T_new = X + P (calls 36..39). Every quarter is its own adder with its
+    // operands straight from flip-flops.
+    wire [W_ACC-1:0] t_x       = {t_hi_q, t_lo_q};
     wire [W_ACC-1:0] off_new_x = {{(W_ACC-W_OFFSET){off_tgt_q[W_OFFSET-1]}}, off_tgt_q};
-    wire [W_ACC-1:0] off_nld_x = ~{{(W_ACC-W_OFFSET){off_old_q[W_OFFSET-1]}}, off_old_q};
-    wire [W_TQ:0]    ds0 = {1'b0, off_new_x[17:0]}  + {1'b0, off_nld_x[17:0]} + {{W_TQ{1'b0}}, 1'b1};
-    wire [W_TQ:0]    ds1 = {1'b0, off_new_x[35:18]} + {1'b0, off_nld_x[35:18]} + {{W_TQ{1'b0}}, dc_q[0]};
-    wire [W_TQ:0]    ds2 = {1'b0, off_new_x[53:36]} + {1'b0, off_nld_x[53:36]} + {{W_TQ{1'b0}}, dc_q[1]};
-    wire [15:0]      ds3 = off_new_x[69:54] + off_nld_x[69:54] + {15'd0, dc_q[2]};
-    // X = T + dOFF (calls 2..5), then T_new = X + P (calls 36..39): one 18-bit quarter per call,
-    // each quarter its own adder (operands straight from flip-flops), carry registered
-    wire [W_ACC-1:0] t_x = {t_hi_q, t_lo_q};
-    wire [W_ACC-1:0] d_x = doff_q;
-    wire [W_TQ:0]    xs0 = {1'b0, t_x[17:0]}  + {1'b0, d_x[17:0]};
-    wire [W_TQ:0]    xs1 = {1'b0, t_x[35:18]} + {1'b0, d_x[35:18]} + {{W_TQ{1'b0}}, xc_q[0]};
-    wire [W_TQ:0]    xs2 = {1'b0, t_x[53:36]} + {1'b0, d_x[53:36]} + {{W_TQ{1'b0}}, xc_q[1]};
-    wire [15:0]      xs3 = t_x[69:54] + d_x[69:54] + {15'd0, xc_q[2]};
+    wire [W_ACC-1:0] off_old_x = {{(W_ACC-W_OFFSET){off_old_q[W_OFFSET-1]}}, off_old_q};
+    wire [W_TQ:0]    ss0 = {1'b0, t_x[17:0]}  + {1'b0, off_new_x[17:0]};
+    wire [W_TQ:0]    ss1 = {1'b0, t_x[35:18]} + {1'b0, off_new_x[35:18]} + {{W_TQ{1'b0}}, sc_q[0]};
+    wire [W_TQ:0]    ss2 = {1'b0, t_x[53:36]} + {1'b0, off_new_x[53:36]} + {{W_TQ{1'b0}}, sc_q[1]};
+    wire [15:0]      ss3 = t_x[69:54] + off_new_x[69:54] + {15'd0, sc_q[2]};
+    wire [W_TQ:0]    xs0 = {1'b0, ns_q[17:0]}  + {1'b0, off_old_x[17:0]};
+    wire [W_TQ:0]    xs1 = {1'b0, ns_q[35:18]} + {1'b0, off_old_x[35:18]} + {{W_TQ{1'b0}}, xc_q[0]};
+    wire [W_TQ:0]    xs2 = {1'b0, ns_q[53:36]} + {1'b0, off_old_x[53:36]} + {{W_TQ{1'b0}}, xc_q[1]};
+    wire [15:0]      xs3 = ns_q[69:54] + off_old_x[69:54] + {15'd0, xc_q[2]};
     wire [W_TQ:0]    ys0 = {1'b0, x_q[17:0]}  + {1'b0, p_x[17:0]};
     wire [W_TQ:0]    ys1 = {1'b0, x_q[35:18]} + {1'b0, p_x[35:18]} + {{W_TQ{1'b0}}, yc_q[0]};
     wire [W_TQ:0]    ys2 = {1'b0, x_q[53:36]} + {1'b0, p_x[53:36]} + {{W_TQ{1'b0}}, yc_q[1]};
@@ -200,7 +200,7 @@ module pulse_multiplier (
             busy_q <= 1'b0; pend_q <= 1'b0; cnt_q <= 0;
             f_dr0_q <= 1'b0; f_dr1_q <= 1'b0; f_mul_q <= 1'b0; f_mul_pre_q <= 1'b0; f_pre0_q <= 1'b0;
             f_x_q <= 4'd0; f_y_q <= 4'd0; f_last_q <= 1'b0; dr_q <= 0; r_old_q <= 0; drc_q <= 1'b0;
-            off_old_q <= 0; doff_q <= 0; dc_q <= 3'd0; f_d_q <= 4'd0;
+            off_old_q <= 0; ns_q <= 0; sc_q <= 3'd0; f_s_q <= 4'd0;
             x_q <= 0; y_q <= 0; xc_q <= 3'd0; yc_q <= 3'd0;
         end else begin
             // stage 4, 3, 2
@@ -219,19 +219,19 @@ module pulse_multiplier (
             inc_q <= inc_d;
             // running re-base
             if (busy_q) begin
-                if (f_d_q[0]) begin doff_q[17:0]  <= ds0[W_TQ-1:0]; dc_q[0] <= ds0[W_TQ]; end
-                if (f_d_q[1]) begin doff_q[35:18] <= ds1[W_TQ-1:0]; dc_q[1] <= ds1[W_TQ]; end
-                if (f_d_q[2]) begin doff_q[53:36] <= ds2[W_TQ-1:0]; dc_q[2] <= ds2[W_TQ]; end
-                if (f_d_q[3])       doff_q[69:54] <= ds3;
+                if (f_s_q[0]) begin ns_q[17:0]  <= ~ss0[W_TQ-1:0]; sc_q[0] <= ss0[W_TQ]; end
+                if (f_s_q[1]) begin ns_q[35:18] <= ~ss1[W_TQ-1:0]; sc_q[1] <= ss1[W_TQ]; end
+                if (f_s_q[2]) begin ns_q[53:36] <= ~ss2[W_TQ-1:0]; sc_q[2] <= ss2[W_TQ]; end
+                if (f_s_q[3])       ns_q[69:54] <= ~ss3;
                 if (f_dr0_q) begin  // the call after the start (N0 = N(s) is the register N now)
                     dr_q[W_DRL-1:0] <= dr_lo[W_DRL-1:0];
                     drc_q           <= dr_lo[W_DRL];
                 end
                 if (f_dr1_q) dr_q[W_DRATIO-1:W_DRL] <= dr_hi;
-                if (f_x_q[0]) begin x_q[17:0]  <= xs0[W_TQ-1:0]; xc_q[0] <= xs0[W_TQ]; end
-                if (f_x_q[1]) begin x_q[35:18] <= xs1[W_TQ-1:0]; xc_q[1] <= xs1[W_TQ]; end
-                if (f_x_q[2]) begin x_q[53:36] <= xs2[W_TQ-1:0]; xc_q[2] <= xs2[W_TQ]; end
-                if (f_x_q[3])       x_q[69:54] <= xs3;
+                if (f_x_q[0]) begin x_q[17:0]  <= ~xs0[W_TQ-1:0]; xc_q[0] <= xs0[W_TQ]; end
+                if (f_x_q[1]) begin x_q[35:18] <= ~xs1[W_TQ-1:0]; xc_q[1] <= xs1[W_TQ]; end
+                if (f_x_q[2]) begin x_q[53:36] <= ~xs2[W_TQ-1:0]; xc_q[2] <= xs2[W_TQ]; end
+                if (f_x_q[3])       x_q[69:54] <= ~xs3;
                 if (f_y_q[0]) begin y_q[17:0]  <= ys0[W_TQ-1:0]; yc_q[0] <= ys0[W_TQ]; end
                 if (f_y_q[1]) begin y_q[35:18] <= ys1[W_TQ-1:0]; yc_q[1] <= ys1[W_TQ]; end
                 if (f_y_q[2]) begin y_q[53:36] <= ys2[W_TQ-1:0]; yc_q[2] <= ys2[W_TQ]; end
@@ -245,10 +245,10 @@ module pulse_multiplier (
             cnt_q        <= cnt_d;
             f_dr0_q      <= busy_d && cnt_d == C_DR0;
             f_dr1_q      <= busy_d && cnt_d == C_DR1;
-            f_d_q[0]     <= busy_d && cnt_d == C_DOFF0;
-            f_d_q[1]     <= busy_d && cnt_d == C_DOFF0 + 1;
-            f_d_q[2]     <= busy_d && cnt_d == C_DOFF0 + 2;
-            f_d_q[3]     <= busy_d && cnt_d == C_DOFF0 + 3;
+            f_s_q[0]     <= busy_d && cnt_d == C_S0;
+            f_s_q[1]     <= busy_d && cnt_d == C_S0 + 1;
+            f_s_q[2]     <= busy_d && cnt_d == C_S0 + 2;
+            f_s_q[3]     <= busy_d && cnt_d == C_S0 + 3;
             f_pre0_q     <= busy_d && cnt_d == C_MUL0 - 1;
             f_mul_q      <= busy_d && cnt_d >= C_MUL0 && cnt_d < C_MUL0 + MUL_STEPS;
             f_mul_pre_q  <= busy_d && cnt_d == C_MUL0 + MUL_STEPS - 2;  // next step is the sign bit
@@ -266,7 +266,10 @@ module pulse_multiplier (
                 r_old_q   <= r_use_q;
                 off_old_q <= off_tgt_q;
                 r_use_q   <= i_ratio;
-                wrap_pos_q <= add39_cs(in_int_x, ~in_all_x, 1'b1);   // R_int - R
+                // R_int - R = ~(R + ~R_int): only the 5 bits of R_int are inverted in front of
+                // the chains (an inverted operand costs a LUT per bit), the result's inversion
+                // is the output LUTs'
+                wrap_pos_q <= ~add39_cs(in_all_x, ~in_int_x, 1'b0);
                 off_tgt_q <= i_comp_offset;
             end
             pend_q <= pend_d;
@@ -325,16 +328,19 @@ module pulse_multiplier (
     wire signed [W_OFFSET:0]   f_bdo = $signed({off_tgt_q[W_OFFSET-1], off_tgt_q}) -
                                        $signed({f_boo[W_OFFSET-1], f_boo});
     wire [W_ACC-1:0] f_bdoff = {{(W_ACC-W_OFFSET-1){f_bdo[W_OFFSET]}}, f_bdo};
-    wire [W_ACC-1:0] f_xs  = f_t + f_bdoff;                   // X = T + dOFF
+    wire [W_ACC-1:0] f_xs  = f_t + f_bdoff;                   // X = T + OFF' - OFF_old
     wire [W_ACC-1:0] f_ys  = f_xs + f_px;
-    // carries out of the low 18, 36, 54 bits of T + dOFF
-    wire [18:0]      f_xc0 = {1'b0, f_t[17:0]} + {1'b0, f_bdoff[17:0]};
-    wire [36:0]      f_xc1 = {1'b0, f_t[35:0]} + {1'b0, f_bdoff[35:0]};
-    wire [54:0]      f_xc2 = {1'b0, f_t[53:0]} + {1'b0, f_bdoff[53:0]};
-    wire [W_ACC-1:0] f_dsum = off_new_x + off_nld_x + 1'b1;    // dOFF and the carries of its quarters
-    wire [18:0]      f_dc0 = {1'b0, off_new_x[17:0]} + {1'b0, off_nld_x[17:0]} + 19'd1;
-    wire [36:0]      f_dc1 = {1'b0, off_new_x[35:0]} + {1'b0, off_nld_x[35:0]} + 37'd1;
-    wire [54:0]      f_dc2 = {1'b0, off_new_x[53:0]} + {1'b0, off_nld_x[53:0]} + 55'd1;
+    // S = T + OFF' and the carries out of its low 18, 36, 54 bits
+    wire [W_ACC-1:0] f_ss  = f_t + off_new_x;
+    wire [18:0]      f_sc0 = {1'b0, f_t[17:0]} + {1'b0, off_new_x[17:0]};
+    wire [36:0]      f_sc1 = {1'b0, f_t[35:0]} + {1'b0, off_new_x[35:0]};
+    wire [54:0]      f_sc2 = {1'b0, f_t[53:0]} + {1'b0, off_new_x[53:0]};
+    wire [W_ACC-1:0] f_ns  = ~f_ss;
+    // ~(~S + OFF_old) is X (~a = -a - 1), and the carries of ~S + OFF_old
+    wire [W_ACC-1:0] f_xalt = ~(f_ns + off_old_x);
+    wire [18:0]      f_xc0 = {1'b0, f_ns[17:0]} + {1'b0, off_old_x[17:0]};
+    wire [36:0]      f_xc1 = {1'b0, f_ns[35:0]} + {1'b0, off_old_x[35:0]};
+    wire [54:0]      f_xc2 = {1'b0, f_ns[53:0]} + {1'b0, off_old_x[53:0]};
     wire [W_ACC-1:0] f_px  = p_x;
     always @(posedge i_clk) begin
         if (f_start && !i_rst) begin
@@ -402,8 +408,8 @@ module pulse_multiplier (
             if (!busy_q) assert(cnt_q == {W_CNT{1'b0}});
             assert(f_dr0_q == (busy_q && cnt_q == C_DR0) && f_pre0_q == (busy_q && cnt_q == C_MUL0 - 1));
             assert(f_dr1_q == (busy_q && cnt_q == C_DR1));
-            assert(f_d_q == {busy_q && cnt_q == C_DOFF0 + 3, busy_q && cnt_q == C_DOFF0 + 2,
-                             busy_q && cnt_q == C_DOFF0 + 1, busy_q && cnt_q == C_DOFF0});
+            assert(f_s_q == {busy_q && cnt_q == C_S0 + 3, busy_q && cnt_q == C_S0 + 2,
+                             busy_q && cnt_q == C_S0 + 1, busy_q && cnt_q == C_S0});
             assert(f_mul_q == (busy_q && cnt_q >= C_MUL0 && cnt_q < C_MUL0 + MUL_STEPS));
             assert(f_mul_pre_q == (busy_q && cnt_q == C_MUL0 + MUL_STEPS - 2));
             assert(f_x_q == {busy_q && cnt_q == C_X0 + 3, busy_q && cnt_q == C_X0 + 2,
@@ -417,13 +423,13 @@ module pulse_multiplier (
                 if (cnt_q >= 2) assert(dr_q[W_DRL-1:0] == f_bdr[W_DRL-1:0] && drc_q == dr_lo[W_DRL]);
                 if (cnt_q >= 3) assert(dr_q == f_bdr);
                 assert(off_old_q == f_boo);
-                // dOFF = OFF' - OFF_old, one quarter per call
-                assert(f_dsum == f_bdoff);
-                if (cnt_q >= C_DOFF0 + 1) assert(doff_q[17:0] == f_bdoff[17:0] && dc_q[0] == f_dc0[18]);
-                if (cnt_q >= C_DOFF0 + 2) assert(doff_q[35:0] == f_bdoff[35:0] && dc_q[1] == f_dc1[36]);
-                if (cnt_q >= C_DOFF0 + 3) assert(doff_q[53:0] == f_bdoff[53:0] && dc_q[2] == f_dc2[54]);
-                if (cnt_q >= C_DOFF0 + 4) assert(doff_q == f_bdoff);
-                // X = T + dOFF, one quarter per call
+                // S = T + OFF' (kept inverted), one quarter per call; ~(~S + OFF_old) = X
+                assert(f_xalt == f_xs);
+                if (cnt_q >= C_S0 + 1) assert(ns_q[17:0] == f_ns[17:0] && sc_q[0] == f_sc0[18]);
+                if (cnt_q >= C_S0 + 2) assert(ns_q[35:0] == f_ns[35:0] && sc_q[1] == f_sc1[36]);
+                if (cnt_q >= C_S0 + 3) assert(ns_q[53:0] == f_ns[53:0] && sc_q[2] == f_sc2[54]);
+                if (cnt_q >= C_S0 + 4) assert(ns_q == f_ns);
+                // X = T + OFF' - OFF_old, one quarter per call
                 if (cnt_q >= C_X0 + 1) assert(x_q[17:0] == f_xs[17:0] && xc_q[0] == f_xc0[18]);
                 if (cnt_q >= C_X0 + 2) assert(x_q[35:0] == f_xs[35:0] && xc_q[1] == f_xc1[36]);
                 if (cnt_q >= C_X0 + 3) assert(x_q[53:0] == f_xs[53:0] && xc_q[2] == f_xc2[54]);

@@ -154,7 +154,7 @@ BLOCKS = [
                 preset_t   = {{6{i_comp_offset[63]}}, i_comp_offset};  // applied above
                 preset_sum = preset_acc + preset_t;
                 dut.busy_q = 1'b0; dut.pend_q = 1'b0; dut.cnt_q = 0;
-                dut.f_dr0_q = 1'b0; dut.f_dr1_q = 1'b0; dut.f_d_q = 4'd0; dut.f_mul_q = 1'b0; dut.f_mul_pre_q = 1'b0; dut.f_pre0_q = 1'b0;
+                dut.f_dr0_q = 1'b0; dut.f_dr1_q = 1'b0; dut.f_s_q = 4'd0; dut.f_mul_q = 1'b0; dut.f_mul_pre_q = 1'b0; dut.f_pre0_q = 1'b0;
                 dut.f_x_q = 4'd0; dut.f_y_q = 4'd0; dut.f_last_q = 1'b0;
                 dut.c_q = 1'b0; dut.inc_q = 0;
                 dut.n_q       = @preset_n@;
