@@ -7,7 +7,8 @@
 //   emit     = (timer == 0 && e_prev == 0 && B != 0) ? sgn(B) : 0   (registers before the edge)
 //   B'       = B + delta + add - emit   (add: the error-map delta, a second addend, so that no
 //              adder precedes the pacer in the top: the sum is formed in the carry-save layer)
-//   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0);  e_prev' = emit
+//   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0);  e_prev' = emit  (the register holds
+//              timer + 1: an emitted count loads M, no decrement of M before the register)
 //   taps: paced = P(t-2), backlog = B(t-2); ovs = |B(t-4)| > thr(t-1) (pulse); ovs_st cleared by
 //   clear, set by ovs (event wins)
 // Hardware form (no carry chain over 23 bits): X = B + e_prev = (hi + cq) * 2^20 + lo with a
@@ -63,7 +64,7 @@ module output_pacer (
     reg signed [W_HI-1:0]  hi_q;
     reg signed [W_CQ-1:0]  cq_q;
     reg signed [1:0]       e_prev_q;   // emitted count of the previous call (= o_pstep)
-    reg        [W_PACE-1:0] timer_q;
+    reg        [W_PACE-1:0] tm_q;       // timer + 1 (mod 2^16: 0 stands for 65536)
     reg signed [W_HI-1:0]  a_hi_q;     // backlog tap, stage A: B(t-1) halves and carry
     reg        [L-1:0]     a_lo_q;
     reg signed [1:0]       a_cy_q;
@@ -137,13 +138,17 @@ module output_pacer (
 `endif
 
     // ---- timer -------------------------------------------------------------------------------
+    // Kept as tm = timer + 1 (mod 2^16, 0 standing for 65536), so an emitted count loads M itself
+    // (M = 0: 65536, timer 65535) and no decrement of M precedes the register:
+    // tm' = emit ? M : max(tm - 1, 1); timer == 0 is tm == 1.
     // tz' = (timer' == 0 && e_prev' == 0): after an emitted count e_prev' != 0, so 0 (whatever M
-    // loads the timer); otherwise e_prev' = 0 and timer' = max(timer - 1, 0) is 0 iff timer <= 1.
-    // So the emit decision needs no test of e_prev (it only mattered for the illegal M = 1).
-    wire              tz_d    = !emit_nz && (timer_q[W_PACE-1:1] == {(W_PACE-1){1'b0}});
-    wire [W_PACE-1:0] timer_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}
-                              : (timer_q != {W_PACE{1'b0}}) ? timer_q - {{(W_PACE-1){1'b0}}, 1'b1}
-                              : {W_PACE{1'b0}};
+    // loads the timer); otherwise e_prev' = 0 and timer' = max(timer - 1, 0) is 0 iff timer <= 1,
+    // i.e. tm is 1 or 2. So the emit decision needs no test of e_prev (it only mattered for the
+    // illegal M = 1).
+    wire              tz_d = !emit_nz && (tm_q[W_PACE-1:2] == {(W_PACE-2){1'b0}}) && (tm_q[1] ^ tm_q[0]);
+    wire [W_PACE-1:0] tm_d = emit_nz ? i_pace_m
+                           : (tm_q != {{(W_PACE-1){1'b0}}, 1'b1}) ? tm_q - {{(W_PACE-1){1'b0}}, 1'b1}
+                           : {{(W_PACE-1){1'b0}}, 1'b1};
 
     // ---- taps (off the loop) -----------------------------------------------------------------
     wire signed [W_HI-1:0] a_hi_d = hi_q + {{(W_HI-W_CQ){cq_q[W_CQ-1]}}, cq_q};
@@ -211,7 +216,7 @@ module output_pacer (
             hi_q     <= {W_HI{1'b0}};
             cq_q     <= {W_CQ{1'b0}};
             e_prev_q <= 2'sd0;
-            timer_q  <= {W_PACE{1'b0}};
+            tm_q     <= {{(W_PACE-1){1'b0}}, 1'b1};
             a_hi_q   <= {W_HI{1'b0}};
             a_lo_q   <= {L{1'b0}};
             a_cy_q   <= 2'sd0;
@@ -255,7 +260,7 @@ module output_pacer (
             cq_q     <= t_sum[W_T-1:L];
             hi_q     <= h_sum;
             e_prev_q <= emit;
-            timer_q  <= timer_d;
+            tm_q     <= tm_d;
             a_hi_q   <= a_hi_d;
             a_lo_q   <= al[L-1:0];
             a_cy_q   <= al[L+1:L];
@@ -311,6 +316,9 @@ module output_pacer (
     wire [W_PHI-1:0]     f_ph   = p_hi_q + {{(W_PHI-2){p_cy_q[1]}}, p_cy_q};
     wire [W_POS-1:0]     f_pint = {f_ph, p_lo_q};     // modulo 2^W_POS
     wire [W_BACKLOG:0] f_bmag = f_btap[FW-1] ? -f_btap[W_BACKLOG:0] : f_btap[W_BACKLOG:0];
+    // the timer the register tm stands for (timer == 0 is tm == 1), and the timer of the gap left
+    wire               f_tz    = tm_q == {{(W_PACE-1){1'b0}}, 1'b1};
+    wire [W_PACE:0]    f_timer = (f_since >= {1'b0, f_m}) ? {(W_PACE+1){1'b0}} : (f_m - f_since[W_PACE:0]);
     assign f_o_c0 = f_bnow + f_pc;
     assign f_o_c1 = f_b1 + f_pc1;
     assign f_o_c2 = f_b2 + f_pc2;
@@ -374,10 +382,9 @@ module output_pacer (
             if (emit_nz) assert(f_since >= 2);
             // the count has the sign of the backlog, and a count leaves whenever it may
             if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
-            if (timer_q == {W_PACE{1'b0}} && e_prev_q == 2'sd0 && f_bnow != 0) assert(emit_nz);
-            // helper invariant (induction): the timer is what is left of the gap
-            assert(timer_q == ((f_since >= {1'b0, f_m}) ? {W_PACE{1'b0}}
-                                                         : (f_m - f_since[W_PACE:0])));
+            if (f_tz && e_prev_q == 2'sd0 && f_bnow != 0) assert(emit_nz);
+            // helper invariant (induction): the timer (tm - 1) is what is left of the gap
+            assert(!f_timer[W_PACE] && tm_q == f_timer[W_PACE-1:0] + 1'b1);
             if (!f_rst_p) assert(e_prev_q == 2'sd0 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
         end
 `endif
@@ -396,7 +403,7 @@ module output_pacer (
             assert(he_q == (hi_q[3:0] == 4'he));
             assert(lz_q == {lo_q[19:16] == 4'h0, lo_q[15:12] == 4'h0, lo_q[11:8] == 4'h0,
                             lo_q[7:4] == 4'h0, lo_q[3:0] == 4'h0});
-            assert(tz_q == (timer_q == {W_PACE{1'b0}} && e_prev_q == 2'sd0));
+            assert(tz_q == (f_tz && e_prev_q == 2'sd0));
             assert(e_pos_q == (e_prev_q == 2'sd1));
             // counts and tap carries are -1, 0 or +1, the backlog carry -1 .. +2 (helper invariant)
             assert(e_prev_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 && f_e1 != -2'sd2);
