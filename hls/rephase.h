@@ -162,7 +162,6 @@ public:
         const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
         const bool first = first_;
         dnew_ = false;
-        first_ = false;
         const pos_t a_prev = a_;
         const bool fwd_prev = fwd_;
         const bool rise = sw && !sw_prev_ && sw_seen_;
