@@ -152,6 +152,7 @@ MUTATIONS=(
   "pm_mul_sign|pulse_multiplier.v|pulse_multiplier_mul|s/!a_q\[1\] ? {W_PP{1'b0}} : i_sign_nx ? ~b_x : b_x;/!a_q[1] ? {W_PP{1'b0}} : b_x;/"
   "pm_mul_cin|pulse_multiplier.v|pulse_multiplier_mul|s/cin_q    <= a_q\[1\] \& i_sign_nx;/cin_q    <= 1'b0;/"
   "pm_tnew_carry|pulse_multiplier.v|pulse_multiplier_seq|s/ys3 = x_q\[69:54\] + p_x\[69:54\] + {15'd0, yc_q\[2\]};/ys3 = x_q[69:54] + p_x[69:54];/"
+  "op_pstep_nx_rst|output_pacer.v|output_pacer|s/assign o_pstep_nx = i_rst ? 2'sd0 : emit;/assign o_pstep_nx = emit;/"
   "op_paced_tap|output_pacer.v|output_pacer|s/+ {{LP{e_prev_q\[1\]}}, e_prev_q}/+ {{(LP+1){1'b0}}, e_prev_q[0]}/"
   "rep_b_bwd|rephase.v|rephase|s/wire signed \[W_POS-1:0\] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};/wire signed [W_POS-1:0] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}});/"
   "rep_z|rephase.v|rephase|s/z_d     = bs_q + (p4_x ^/z_d     = bs_q + (mark_len_x ^/"
