@@ -19,9 +19,9 @@
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
 // Every path is one carry chain of at most 38 bits from registers only (a + dir*P, adj + lsgn,
-// the points at homing), or of at most 19 bits (the low half of a position counter stepped by
-// pstep / ostep: pos_step) or 14 bits followed by a few LUT levels; no 38-bit compare, no adder
-// in series with another, and the late pstep enters no 38-bit chain.
+// the mark counter u + s, the points at homing), or of at most 19 bits (the low half of a
+// position counter stepped by pstep / ostep: pos_step) or 14 bits followed by a few LUT levels;
+// no 38-bit compare, no adder in series with another, and the late pstep enters no 38-bit chain.
 // Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 15 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
@@ -378,7 +378,9 @@ module rephase (
         lsgn_d    = lsgn_n;
 
         // 6. reference mark
-        u_d    = homing ? {W_POS{1'b0}} : pos_step(u_q, s_pos ? 2'sd1 : s_neg ? -2'sd1 : 2'sd0);
+        // (a plain 38-bit up/down counter: its step s_pos / s_neg is a register, so the
+        // carry chain starts at flip-flops and needs no split)
+        u_d    = homing ? {W_POS{1'b0}} : u_q + {{(W_POS-1){s_neg}}, s_pos || s_neg};
         mark_d = homing || (in3 && in_rng);
     end
 
