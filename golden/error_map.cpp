@@ -13,8 +13,7 @@ error_map::error_map() {
 
 void error_map::reset() {
     phase_ = 0;
-    pending_ = out{};
-    due_ = -1;
+    pending_.clear();
     cur_ = out{};
     corr_ = 0;
 }
@@ -43,8 +42,11 @@ long double error_map::interp(const std::vector<int32_t>& tbl, const error_map_g
 error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
     // output of this call: the last published sample result (the one of call t - (kLat - 1)
     // is published in this call)
-    if (due_ == 0) cur_ = pending_;
-    if (due_ >= 0) --due_;
+    if (!pending_.empty() && pending_.front().first == 0) {
+        cur_ = pending_.front().second;
+        pending_.pop_front();
+    }
+    for (auto& w : pending_) --w.first;
     out o = cur_;
     o.delta = o.corr - corr_;
     corr_ = o.corr;
@@ -65,10 +67,7 @@ error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
         n.in_range = inr;
         n.clamped = !inr;
     }
-    if (sample) {
-        pending_ = n;
-        due_ = kLat - 2;  // published by call t + kLat - 1
-    }
+    if (sample) pending_.emplace_back(kLat - 2, n);  // published by call t + kLat - 1
 
     // Reading: the reads of a call see every write of the earlier calls; the write port of a
     // call acts after that call's reads and only on the bank not selected in the call.

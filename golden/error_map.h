@@ -9,7 +9,7 @@
 // (at x = o + (n-1) s the last point itself), evaluated in long double and rounded to
 // corr = floor(c + 1/2). Only the inputs of the sample calls are used: the first call after a
 // reset and every kPeriod-th after it (S_MAP = 32); the value of sample call t is returned by
-// calls t + kLat - 1 .. (L_MAP = 29, ERROR_MAP.md §6) until the next one is published, and
+// calls t + kLat - 1 .. (L_MAP = 50, ERROR_MAP.md §6) until the next one is published, and
 // before the first publication the outputs are 0 / inactive; it is 0 when that call was not active (map_en && homed && valid geometry of
 // the bank selected in that call). delta = corr(t) - corr(t-1).
 //
@@ -21,6 +21,8 @@
 // holds all of them exactly, so floorl gives the exact rounded value.
 #pragma once
 #include <cstdint>
+#include <deque>
+#include <utility>
 #include <vector>
 
 namespace golden {
@@ -44,7 +46,7 @@ class error_map {
 public:
     static constexpr int kDepth = 1024;  // points per bank (ERROR_MAP.md §2)
     static constexpr int kPeriod = 32;   // S_MAP: one sample call in kPeriod
-    static constexpr int kLat = 29;      // L_MAP: sample call t -> outputs of calls t + kLat - 1 ..
+    static constexpr int kLat = 50;      // L_MAP: sample call t -> outputs of calls t + kLat - 1 ..
     static constexpr int kFrac = 8;
 
     struct out {
@@ -67,8 +69,9 @@ public:
 private:
     std::vector<int32_t> tbl_[2];
     long phase_ = 0;           // calls since reset, modulo kPeriod
-    out pending_;              // result of the last sample call, not yet published
-    long due_ = -1;            // calls until pending_ is published (-1: nothing pending)
+    // results of sample calls not yet published, oldest first, each with the number of calls
+    // until its publication (kLat - 1 > kPeriod: up to two are waiting)
+    std::deque<std::pair<long, out>> pending_;
     out cur_;                  // published result
     int64_t corr_ = 0;  // corr returned by the previous call
 };

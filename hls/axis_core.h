@@ -236,7 +236,7 @@ private:
         const bool mark3 = rep_q3_.mark;
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
-        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 29 calls of map
+        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
         const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,

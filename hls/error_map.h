@@ -2,34 +2,41 @@
 // interpolation between points, the correction delivered as whole output counts to add or remove.
 //
 // docs/ERROR_MAP.md is the normative per-call description (§4: the inputs are sampled once every
-// S_MAP = 32 calls; stages A .. D run every call, one register stage per call, then a sequenced
-// shift-and-add multiplier; sized for an iCE40 HX8K clock of >= 120 MHz); in short:
+// S_MAP = 32 calls; one register stage per call along a fixed schedule, a serial shift and a
+// sequenced shift-and-add multiplier; sized for an iCE40 HX8K clock of >= 120 MHz); for the sample
+// call t (ph = 0), in short:
 //
-//   A  off = p - origin (registered 39-bit subtract), geometry check, k, last, flags
-//   B  i = floor(off / 2^k) mod TBL_DEPTH, u = (off mod 2^k) * 2^(20-k), off < 0, off beyond
-//      every address (no compare: field selects of the registered offset)
-//   C  clamp to [0, last] (10-bit compare), the addresses: even RAM (i+1)/2, odd RAM i/2
-//   R  the two reads of the selected bank (T[i] and T[i+1] always lie in different RAMs: one read
-//      per RAM), and the delayed write into the other bank
-//   D  bank multiplexer: e = even word, o = odd word; v = i odd ? 2^20 - u : u (no swap mux)
-//   M  (sample call t: calls t+5 .. t+26) load diff = o - e, v, e + 128; 21 steps of
-//      s = hi + (v bit j ? diff : 0), hi = s >> 1 (LSB first, 26-bit adder)
-//   G  (call t+27) corr = floor((2 hi + e + 128 + last bit shifted out) / 2^8)
-//      = floor((e 2^20 + diff v + 2^27) / 2^28), held until the next sample's G
-//   H  output registers: corr, delta = corr' - corr, flags (every call)
+//   A1 (t)      low 20 bits of off = p - origin and their carry, p and ~origin >> 20 registered,
+//               geometry check, k, last, flags
+//   A2 (t+1)    high 19 bits of off (one add of registers)
+//   S  (t+2 .. t+21) the offset shifted right one bit per call in the first k of these 20 calls,
+//               the bits shifted out entering u from the top: off >> k, u = (off mod 2^k) 2^(20-k)
+//   B  (t+22)   i = the low 10 bits, off beyond every address, off < 0, i >= last, i == last,
+//               (i + 1) / 2, u == 0 (compares of registers)
+//   C  (t+23)   clamp to [0, last] (multiplexers), the addresses: even RAM (i+1)/2, odd RAM i/2
+//   R  (t+24)   the two reads of the selected bank (T[i] and T[i+1] always lie in different RAMs:
+//               one read per RAM), and the delayed write into the other bank
+//   D  (t+25)   e = even word, o = odd word; v = i odd ? 2^20 - u : u (no swap mux)
+//   M  (t+26 .. t+47) load diff = o - e, v, e + 128; 21 steps of s = hi + (v bit j ? diff : 0),
+//               hi = s >> 1 (LSB first, 26-bit adder)
+//   G  (t+48)   corr = floor((2 hi + e + 128 + last bit shifted out) / 2^8)
+//               = floor((e 2^20 + diff v + 2^27) / 2^28), held until the next sample's G
+//   H  (every call) output registers: corr, delta = corr' - corr, flags
+// (the RTL runs B, C, R and D in every call; this model evaluates each in its call of the
+// schedule only, which gives the same outputs: M takes D's registers only at ph = PH_LOAD)
 //
 // Two banks, each two RAMs (even and odd words): the table write port always writes the bank that
-// is *not* selected by bank_sel in that call, delayed by three registers so that it is performed
-// in the same call as that call's reads (stage R) — into the other bank, so each RAM sees one access
-// per call (a read, or a write) and the reads of call t see exactly the writes of the calls before
-// t. Each bank has its own geometry (origin, spacing_log2, n_points); a flip of bank_sel switches
+// is *not* selected by bank_sel in that call, delayed by W_DLY = 24 calls so that it is performed
+// in the same call as the reads of a sample call (stage R) — into the other bank, so each RAM sees
+// one access per call (a read, or a write) and the reads of sample call t see exactly the writes of
+// the calls before t. Each bank has its own geometry (origin, spacing_log2, n_points); a flip of bank_sel switches
 // table and geometry together at one call boundary and a reload can never mix tables.
 //
 // Widths (derived in error_map_cfg): table words 24 bits signed Q15.8 counts, offset 39 signed,
 // u 20 unsigned, v 21, diff 25 signed, multiplier accumulator 26 signed, corr 17 signed, delta 18.
 // Sample period S_MAP = 32 calls (phase counter 0 after reset: the first call after a reset is a
-// sample call); latency L_MAP = 29 calls — the inputs of sample call t are reflected in the
-// corr/delta returned by call t+28 and held until call t+59.
+// sample call); latency L_MAP = 50 calls — the inputs of sample call t are reflected in the
+// corr/delta returned by call t+49 and held until call t+80.
 #ifndef LASERAX_HLS_ERROR_MAP_H
 #define LASERAX_HLS_ERROR_MAP_H
 
@@ -46,7 +53,7 @@ struct error_map_cfg {
     static constexpr int K_MAX = 20;
     static constexpr int N_BANKS = 2;
     static constexpr int S_MAP = 32;        // calls per sample (a power of two: wrapping counter)
-    static constexpr int L_MAP = 29;        // sample call t -> outputs of call t + L_MAP - 1
+    static constexpr int W_LO = 20;         // low half of the subtract (A1); A2 the rest
     // derived
     static constexpr int W_ADDR = clog2p1(TBL_DEPTH - 1);        // 10
     static constexpr int HALF_DEPTH = TBL_DEPTH / 2;             // 512 words per parity RAM
@@ -57,8 +64,16 @@ struct error_map_cfg {
     static constexpr int W_FRAC = K_MAX;                          // 20, u: frac in 2^-K_MAX units
     static constexpr int W_V = K_MAX + 1;                         // 21, v: 0 .. 2^K_MAX
     static constexpr int W_PHM = clog2p1(S_MAP - 1);              // 5, phase counter
-    static constexpr int PH_LOAD = 5;                             // stage D holds the sample
-    static constexpr int PH_G = PH_LOAD + 1 + W_V;                // 27: after the 21 steps
+    static constexpr int PH_S0 = 2;                               // first shift call (after A1, A2)
+    static constexpr int PH_B = PH_S0 + K_MAX;                    // 22: K_MAX shift calls, then B
+    static constexpr int PH_C = PH_B + 1;                         // 23
+    static constexpr int PH_R = PH_B + 2;                         // 24: the RAM reads
+    static constexpr int PH_D = PH_B + 3;                         // 25
+    static constexpr int PH_LOAD = PH_B + 4;                      // 26: stage D holds the sample
+    static constexpr int PH_G = (PH_LOAD + 1 + W_V) % S_MAP;      // 16: after the 21 steps
+    static constexpr int L_MAP = PH_LOAD + 1 + W_V + 2;           // 50: sample call t -> outputs
+                                                                  //   of call t + L_MAP - 1
+    static constexpr int W_DLY = PH_R;                            // 24: write of call t done in t + 24
     static constexpr int W_DIFF = W_CORR + 1;                     // 25, odd word - even word
     static constexpr int W_MHI = W_DIFF + 1;                      // 26, multiplier accumulator
     static constexpr int W_ME = W_CORR + 1;                       // 25, e + 2^(F-1)
@@ -66,10 +81,13 @@ struct error_map_cfg {
     static constexpr int W_C = W_CORR - F + 1;                    // 17, rounded correction
     static constexpr int W_CDELTA = W_C + 1;                      // 18, corr' - corr
     static_assert(TBL_DEPTH % 2 == 0 && (1 << W_ADDR) == TBL_DEPTH, "error_map: depth a power of two");
-    static_assert((S_MAP & (S_MAP - 1)) == 0 && PH_G + 1 == L_MAP - 1 && L_MAP - 1 < S_MAP,
-                  "error_map: one sample in flight, published before the next is sampled");
+    static_assert((S_MAP & (S_MAP - 1)) == 0 && PH_LOAD < S_MAP && 1 + W_V + 1 <= S_MAP &&
+                      (PH_G + 1) % S_MAP == (L_MAP - 1) % S_MAP,
+                  "error_map: each stage holds one sample at a time (shift done before the next A1, "
+                  "G before the next load)");
     static_assert(K_MAX + 1 == W_V, "error_map: G folds the 2^(K_MAX) term of v into m_hi's bit");
     static_assert(K_MAX + W_ADDR < W_OFF - 1, "error_map: the 'beyond every address' bound fits off_t");
+    static_assert(W_LO < W_OFF && W_OFF - W_LO == 19, "error_map: the subtract's halves");
 
     using word_t = sint<W_CORR>;
     using addr_t = uint<W_ADDR>;
@@ -77,6 +95,10 @@ struct error_map_cfg {
     using n_t = uint<W_N>;
     using k_t = uint<W_K>;
     using off_t = sint<W_OFF>;
+    using mag_t = uint<W_OFF - 1>;       // off's bits below the sign (shifted by S)
+    using lo_t = uint<W_LO>;
+    using hi_t = sint<W_OFF - W_LO>;
+    using wqi_t = uint<clog2p1(W_DLY)>;  // slot of the write delay line, 0 .. W_DLY - 1
     using frac_t = uint<W_FRAC>;
     using v_t = uint<W_V>;
     using diff_t = sint<W_DIFF>;
@@ -129,21 +151,22 @@ public:
             tbl1e_[a] = 0;
             tbl1o_[a] = 0;
         }
-        w1_ = wr_t{};
-        w2_ = wr_t{};
-        w3_ = wr_t{};
+        for (int k = 0; k < cfg::W_DLY; ++k) wq_[k] = wr_t{};
+        wi_ = 0;
+        nw_ = 0;
         reset();
     }
 
-    // Reset of the pipeline (not of the table RAM). The writes already in the write-port
-    // registers belong to running calls: they are performed, never dropped (ERROR_MAP.md §4).
+    // Reset of the pipeline (not of the table RAM). The writes already in the write port's delay
+    // line belong to running calls: they are performed, oldest first, never dropped
+    // (ERROR_MAP.md §4).
     void reset() {
-        write(w3_);
-        write(w2_);
-        write(w1_);
-        w1_ = wr_t{};
-        w2_ = wr_t{};
-        w3_ = wr_t{};
+        for (int k = 0; k < cfg::W_DLY; ++k) {
+            const unsigned slot = (wi_.to_uint() + unsigned(k)) % unsigned(cfg::W_DLY);
+            write(wq_[slot]);
+            wq_[slot] = wr_t{};
+        }
+        nw_ = 0;
         a_ = st_a{};
         b_ = st_b{};
         c_ = st_c{};
@@ -157,21 +180,20 @@ public:
     }
 
     out_t step(pos_t p, bool homed, const error_map_regs& r) {
+        const unsigned ph = ph_.to_uint();
         // ---- idle hold: a clock enable of the stages A .. H (not of the write port and ph) ----
         // With map_en = 0 and no active or erroneous sample anywhere in the stages (idle_), a
-        // full call would shift in values flagged inactive and return corr = delta = 0 with every
+        // full call would take in values flagged inactive and return corr = delta = 0 with every
         // flag false; the data fields of inactive stages are never read (every use of them is
         // gated by the act flag that travels with them, and the flags are recomputed from the
-        // call's inputs in stage A), so the stages may hold instead. Same outputs, fewer toggles.
+        // sample call's inputs in stage A1), so the stages may hold instead. Same outputs, fewer
+        // toggles.
         if (!r.map_en && idle_) {
-            // the write port holds too while no write is in flight or presented: its delay
-            // registers then all have we = 0, and their bank, address and data are read only
-            // with we = 1 (a clock enable; same writes, same outputs)
-            if (r.we || w1_.we || w2_.we || w3_.we) {
-                write(w3_);
-                shift_write_port(r);
-            }
-            ph_ = cfg::phm_t(ph_ + 1);  // wraps at S_MAP
+            // the write port holds too while no write is in flight or presented: its delay line
+            // then has we = 0 in every entry, whose other fields are read only with we = 1 (a
+            // clock enable; same writes, same outputs)
+            if (r.we || nw_ != 0) write_port(r);
+            ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
             return out_t{};
         }
         // ---- H: output registers ------------------------------------------------------------
@@ -185,101 +207,119 @@ public:
         corr_ = g_.corr;
 
         // ---- G (ph = PH_G): round the sample's product; held in every other call -----------
-        const unsigned ph = ph_.to_uint();
-        st_g g = g_;
         if (ph == cfg::PH_G) {
             const cfg::g_t x = cfg::g_t(m_.hi) * cfg::g_t(2) + cfg::g_t(m_.e) + cfg::g_t(m_.b ? 1 : 0);
-            g.corr = m_.fl.act ? cfg::corr_t(x >> cfg::F) : cfg::corr_t(0);
-            g.fl = m_.fl;
+            g_.corr = m_.fl.act ? cfg::corr_t(x >> cfg::F) : cfg::corr_t(0);
+            g_.fl = m_.fl;
         }
 
-        // ---- M: sequenced multiply diff * v, LSB first (load at PH_LOAD, 21 steps) ------------
-        st_m m = m_;
+        // ---- M: sequenced multiply diff * v, LSB first (load at PH_LOAD, 21 steps after it) ---
         if (ph == cfg::PH_LOAD) {
-            m.hi = 0;
-            m.b = false;
-            m.v = d_.v;
-            m.diff = cfg::diff_t(d_.o) - cfg::diff_t(d_.e);
-            m.e = cfg::me_t(d_.e) + cfg::me_t(1 << (cfg::F - 1));
-            m.fl = d_.fl;
-        } else if (ph > cfg::PH_LOAD && ph < cfg::PH_G) {
+            m_.hi = 0;
+            m_.b = false;
+            m_.v = d_.v;
+            m_.diff = cfg::diff_t(d_.o) - cfg::diff_t(d_.e);
+            m_.e = cfg::me_t(d_.e) + cfg::me_t(1 << (cfg::F - 1));
+            m_.fl = d_.fl;
+        } else if (((ph - cfg::PH_LOAD - 1u) & (cfg::S_MAP - 1)) < unsigned(cfg::W_V)) {
             const cfg::mhi_t sum = cfg::mhi_t(m_.hi) + ((m_.v & 1) != 0 ? cfg::mhi_t(m_.diff) : cfg::mhi_t(0));
-            m.hi = sum >> 1;
-            m.b = (sum & 1) != 0;
-            m.v = m_.v >> 1;
+            m_.hi = sum >> 1;
+            m_.b = (sum & 1) != 0;
+            m_.v = m_.v >> 1;
         }
 
-        // ---- D: difference of the two words, orientation of the interval ----------------------
-        st_d d;
-        d.e = rd_.we;
-        d.o = rd_.wo;
-        d.v = rd_.lsb ? cfg::v_t(cfg::v_t(1 << cfg::K_MAX) - cfg::v_t(rd_.u)) : cfg::v_t(rd_.u);
-        d.fl = rd_.fl;
-
-        // ---- R: the two reads (one per RAM of the selected bank), the delayed write ------------
-        st_r rd;
-        if (c_.bank) {
-            rd.we = tbl1e_[c_.ea.to_uint()];
-            rd.wo = tbl1o_[c_.oa.to_uint()];
-        } else {
-            rd.we = tbl0e_[c_.ea.to_uint()];
-            rd.wo = tbl0o_[c_.oa.to_uint()];
+        // ---- D (ph = PH_D): the two words, orientation of the interval -------------------------
+        if (ph == cfg::PH_D) {
+            d_.e = rd_.we;
+            d_.o = rd_.wo;
+            d_.v = rd_.lsb ? cfg::v_t(cfg::v_t(1 << cfg::K_MAX) - cfg::v_t(rd_.u)) : cfg::v_t(rd_.u);
+            d_.fl = rd_.fl;
         }
-        rd.u = c_.u;
-        rd.lsb = c_.lsb;
-        rd.fl = c_.fl;
-        write(w3_);  // the write of the same call as these reads: always the other bank
 
-        // ---- C: clamp, the two addresses (registered) --------------------------------------------
-        st_c c;
-        const bool above = !b_.neg && (b_.hi || b_.i >= b_.last);
-        const cfg::addr_t i = b_.neg ? cfg::addr_t(0) : (above ? b_.last : b_.i);
-        c.u = (b_.neg || above) ? cfg::frac_t(0) : b_.u;
-        c.lsb = (i & 1) != 0;
-        c.fl = b_.fl;
-        c.fl.inr = !b_.neg && (!above || (!b_.hi && b_.i == b_.last && b_.u == 0));
-        c.ea = cfg::haddr_t((uint<cfg::W_ADDR + 1>(i) + 1) >> 1);  // (i + 1) / 2, wraps at the end
-        c.oa = cfg::haddr_t(i >> 1);
-        c.bank = b_.bank;
+        // ---- R (ph = PH_R): the two reads (one per RAM of the selected bank) --------------------
+        if (ph == cfg::PH_R) {
+            if (c_.bank) {
+                rd_.we = tbl1e_[c_.ea.to_uint()];
+                rd_.wo = tbl1o_[c_.oa.to_uint()];
+            } else {
+                rd_.we = tbl0e_[c_.ea.to_uint()];
+                rd_.wo = tbl0o_[c_.oa.to_uint()];
+            }
+            rd_.u = c_.u;
+            rd_.lsb = c_.lsb;
+            rd_.fl = c_.fl;
+        }
+        // the write of call t - W_DLY, after the reads (always the other bank), then this call's
+        write_port(r);
 
-        // ---- B: split the registered offset (field selects by k, no compare) -------------------
-        st_b b;
-        const int kb = a_.k.to_int();
-        b.neg = a_.off < 0;
-        b.hi = a_.off >= (cfg::off_t(1) << (kb + cfg::W_ADDR));
-        b.i = cfg::addr_t(a_.off >> kb);
-        b.u = cfg::frac_t(cfg::frac_t(a_.off) << (cfg::K_MAX - kb));  // low k bits, left-aligned
-        b.last = a_.last;
-        b.bank = a_.bank;
-        b.fl = a_.fl;
+        // ---- C (ph = PH_C): clamp, the two addresses (multiplexers only) ------------------------
+        if (ph == cfg::PH_C) {
+            const bool above = !b_.neg && (b_.hi || b_.ge);
+            const cfg::addr_t i = b_.neg ? cfg::addr_t(0) : (above ? b_.last : b_.i);
+            c_.u = (b_.neg || above) ? cfg::frac_t(0) : b_.u;
+            c_.lsb = (i & 1) != 0;
+            c_.fl = b_.fl;
+            c_.fl.inr = !b_.neg && (!above || (!b_.hi && b_.eq && b_.u0));
+            c_.ea = b_.neg ? cfg::haddr_t(0) : (above ? b_.le : b_.ie);  // (i + 1) / 2, wraps at the end
+            c_.oa = cfg::haddr_t(i >> 1);
+            c_.bank = b_.bank;
+        }
 
-        // ---- A: this call's inputs: geometry of the selected bank, registered subtract ---------
-        st_a a;
-        const int bs = r.bank_sel ? 1 : 0;
-        const error_map_geom& gm = r.geom[bs];
-        const bool geom_ok = error_map_geom_ok(gm);
-        a.k = geom_ok ? gm.spacing_log2 : cfg::k_t(cfg::K_MIN);
-        a.last = geom_ok ? cfg::addr_t(gm.n_points - 1) : cfg::addr_t(0);
-        a.off = cfg::off_t(p) - cfg::off_t(gm.origin);
-        a.bank = r.bank_sel;
-        a.fl.act = r.map_en && homed && geom_ok;
-        a.fl.inr = false;
-        a.fl.err = r.map_en && !geom_ok;
+        // ---- B (ph = PH_B): the shifted offset's fields and their compares with last -----------
+        if (ph == cfg::PH_B) {
+            b_.neg = a_.neg;
+            b_.hi = (a_.mag >> cfg::W_ADDR) != 0;
+            b_.i = cfg::addr_t(a_.mag);
+            b_.u = a_.u;
+            b_.ge = b_.i >= a_.last;
+            b_.eq = b_.i == a_.last;
+            b_.u0 = a_.u == 0;
+            b_.ie = cfg::haddr_t((uint<cfg::W_ADDR + 1>(b_.i) + 1) >> 1);
+            b_.le = cfg::haddr_t((uint<cfg::W_ADDR + 1>(a_.last) + 1) >> 1);
+            b_.last = a_.last;
+            b_.bank = a_.bank;
+            b_.fl = a_.fl;
+        }
 
-        // ---- write port: first register (the write goes to the bank not selected now) ---------
-        shift_write_port(r);
+        // ---- S (ph = PH_S0 .. PH_B - 1): the offset right by one, in the first k of the calls ----
+        if (ph >= unsigned(cfg::PH_S0) && ph < unsigned(cfg::PH_B) && a_.kc != 0) {
+            a_.u = cfg::frac_t((a_.u >> 1) | (cfg::frac_t(a_.mag & 1) << (cfg::W_FRAC - 1)));
+            a_.mag = a_.mag >> 1;
+            a_.kc = cfg::k_t(a_.kc - 1);
+        }
 
-        a_ = a;
-        b_ = b;
-        c_ = c;
-        rd_ = rd;
-        d_ = d;
-        m_ = m;
-        g_ = g;
+        // ---- A2 (ph = 1): the high half of the subtract, from registers --------------------------
+        if (ph == 1) {
+            const cfg::hi_t hi = cfg::hi_t(a_.phi + a_.ohi + cfg::hi_t(a_.c ? 1 : 0));
+            a_.neg = hi < 0;
+            a_.mag = cfg::mag_t((cfg::mag_t(uint<cfg::W_OFF - cfg::W_LO>(hi)) << cfg::W_LO) | cfg::mag_t(a_.lo));
+        }
+
+        // ---- A1 (ph = 0, the sample call): its inputs, the low half of the subtract -------------
+        if (ph == 0) {
+            const int bs = r.bank_sel ? 1 : 0;
+            const error_map_geom& gm = r.geom[bs];
+            const bool geom_ok = error_map_geom_ok(gm);
+            a_.kc = geom_ok ? gm.spacing_log2 : cfg::k_t(cfg::K_MIN);
+            a_.last = geom_ok ? cfg::addr_t(gm.n_points - 1) : cfg::addr_t(0);
+            const pos_t no = pos_t(~gm.origin);  // p - origin = p + ~origin + 1
+            const uint<cfg::W_LO + 1> lo =
+                uint<cfg::W_LO + 1>(cfg::lo_t(p)) + uint<cfg::W_LO + 1>(cfg::lo_t(no)) + uint<cfg::W_LO + 1>(1);
+            a_.lo = cfg::lo_t(lo);
+            a_.c = (lo >> cfg::W_LO) != 0;
+            a_.phi = cfg::hi_t(p >> cfg::W_LO);
+            a_.ohi = cfg::hi_t(no >> cfg::W_LO);
+            a_.u = 0;
+            a_.bank = r.bank_sel;
+            a_.fl.act = r.map_en && homed && geom_ok;
+            a_.fl.inr = false;
+            a_.fl.err = r.map_en && !geom_ok;
+        }
+
         ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
-        idle_ = !(a.fl.act || a.fl.err || b.fl.act || b.fl.err || c.fl.act || c.fl.err || rd.fl.act || rd.fl.err ||
-                  d.fl.act || d.fl.err || m.fl.act || m.fl.err || g.fl.act || g.fl.err) &&
-                g.corr == 0 && corr_ == 0;
+        idle_ = !(a_.fl.act || a_.fl.err || b_.fl.act || b_.fl.err || c_.fl.act || c_.fl.err || rd_.fl.act ||
+                  rd_.fl.err || d_.fl.act || d_.fl.err || m_.fl.act || m_.fl.err || g_.fl.act || g_.fl.err) &&
+                g_.corr == 0 && corr_ == 0;
         return o;
     }
 
@@ -294,15 +334,21 @@ private:
         cfg::word_t data = 0;
     };
     struct st_a {
-        cfg::off_t off = 0;
-        cfg::k_t k = cfg::K_MIN;
+        cfg::lo_t lo = 0;  // A1: low half of the subtract and its carry
+        bool c = false;
+        cfg::hi_t phi = 0, ohi = 0;  // A1: p >> 20, ~origin >> 20
+        bool neg = false;          // A2: off < 0
+        cfg::mag_t mag = 0;        // A2: off below the sign; shifted right by S
+        cfg::frac_t u = 0;         // S: the bits shifted out, from the top
+        cfg::k_t kc = cfg::K_MIN;  // shifts still to do
         cfg::addr_t last = 0;
         bool bank = false;
         flags_t fl;
     };
     struct st_b {
-        bool neg = false, hi = false;
+        bool neg = false, hi = false, ge = false, eq = false, u0 = false;
         cfg::addr_t i = 0, last = 0;
+        cfg::haddr_t ie = 0, le = 0;  // (i + 1) / 2, (last + 1) / 2
         cfg::frac_t u = 0;
         bool bank = false;
         flags_t fl;
@@ -338,15 +384,18 @@ private:
         flags_t fl;
     };
 
-    // the write port's delay registers w1 -> w2 -> w3; w1 takes this call's write (to the bank
-    // not selected now)
-    void shift_write_port(const error_map_regs& r) {
-        w3_ = w2_;
-        w2_ = w1_;
-        w1_.we = r.we;
-        w1_.bank = !r.bank_sel;
-        w1_.addr = r.addr;
-        w1_.data = r.data;
+    // the write port's delay line (W_DLY calls): performs the write of call t - W_DLY, then takes
+    // this call's (to the bank not selected now) into the same slot
+    void write_port(const error_map_regs& r) {
+        wr_t& w = wq_[wi_.to_uint()];
+        write(w);
+        if (w.we) nw_ = cfg::wqi_t(nw_ - 1);
+        w.we = r.we;
+        w.bank = !r.bank_sel;
+        w.addr = r.addr;
+        w.data = r.data;
+        if (r.we) nw_ = cfg::wqi_t(nw_ + 1);
+        wi_ = wi_.to_uint() + 1 == unsigned(cfg::W_DLY) ? cfg::wqi_t(0) : cfg::wqi_t(wi_ + 1);
     }
 
     void write(const wr_t& w) {
@@ -373,7 +422,9 @@ private:
 #pragma HLS BIND_STORAGE variable = tbl1e_ type = ram_s2p impl = bram
     cfg::word_t tbl1o_[cfg::HALF_DEPTH];
 #pragma HLS BIND_STORAGE variable = tbl1o_ type = ram_s2p impl = bram
-    wr_t w1_, w2_, w3_;  // write port delayed to stage R
+    wr_t wq_[cfg::W_DLY];  // the write port's delay line (slot wi_: the write of W_DLY calls ago)
+    cfg::wqi_t wi_;
+    cfg::wqi_t nw_;  // entries of wq_ with we = 1
     st_a a_;
     st_b b_;
     st_c c_;

@@ -6,35 +6,41 @@
 // spacing_log2 k, n_points); the even and the odd words are two RAMs of 2 x 512 x 24 bits (tble,
 // tblo: the bank is the top address bit; the four arrays tbl<b>e / tbl<b>o of hls/error_map.h), so
 // the two points T[i], T[i+1] of an interval are one read of each RAM, in the selected bank. The
-// write port always writes the bank that is not selected in that call, delayed by three registers
-// (w1..w3) so that it is done in the same clock as that call's reads: a RAM's read port (selected
-// bank) and write port (other bank) never meet at one address, and a reload can never mix tables.
-// iCE40: each RAM is six SB_RAM40_4K (1024 x 4), 12 in all; the RAMs start at 0 (initial
-// contents), as the C++ tables.
+// write port always writes the bank that is not selected in that call, delayed by W_DLY = 24
+// calls (a first register, 22 calls in a 32 x 36 block RAM, its read register) so that it is done
+// in the clock of a sample's reads: a RAM's read port (selected bank) and write port (other bank)
+// never meet at one address, and a reload can never mix tables, even with two samples in flight.
+// iCE40: each table RAM is six SB_RAM40_4K (1024 x 4), 12 in all, the delay line three
+// (256 x 16); the table RAMs start at 0 (initial contents), as the C++ tables.
 //
 // The inputs are sampled once every S_MAP = 32 calls (phase counter ph, 0 after reset: the calls
-// with ph = 0); stages A .. D run every call (one rising edge = one call of error_map::step(),
-// stage X of call t at edge t + (X - A)), the multiplier takes the sample's operands from D:
-//   A  a_off = p - origin (39 bits, carry-select halves), geometry check, k, last, flags, bank;
-//      w1 = the write port
-//   B  b_neg, b_hi (off >= 2^(k+10)), b_i = off[k+9:k], b_u = off[k-1:0] left-aligned to 20 bits
-//   C  clamp (above = !neg && (hi || i >= last)), i, u, inr; the RAM addresses (i+1)/2 (even)
-//      and i/2 (odd) registered
-//   R  registered RAM reads (selected bank: the address's top bit); the write of w3 (other bank)
-//   D  d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
-//   M  ph = 5: load m_hi = 0, m_v = d_v, m_diff = d_o - d_e (25 bits), m_e = d_e + 128, flags;
-//      ph = 6 .. 26: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1, m_b = s[0],
-//      m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
-//   G  ph = 27: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
+// with ph = 0). One rising edge = one call of error_map::step(); for the sample call t (ph = 0):
+//   A1 (t)      a_off[19:0] = (p + ~origin + 1)[19:0], its carry, p and ~origin >> 20, geometry
+//               check, k (a_kc), last, flags, bank
+//   A2 (t+1)    a_off[38:20] = the high halves + carry (19 bits from registers)
+//   S  (t+2 .. t+21) while a_kc != 0: a_off[37:0] >>= 1, a_u = {a_off[0], a_u[19:1]}, a_kc -= 1
+//   B  (every edge; the sample's at t+22) b_neg, b_hi = |a_off[37:10], b_i = a_off[9:0], b_u,
+//               i >= last, i == last, (i + 1) / 2, (last + 1) / 2, u == 0: compares of registers
+//   C  (every edge) clamp (above = !neg && (hi || i >= last)), i, u, inr: multiplexers into the
+//               RAM addresses (i+1)/2 (even) and i/2 (odd)
+//   R  (every edge) registered RAM reads (selected bank: the address's top bit); the write of 24
+//               calls ago (other bank)
+//   D  (every edge) d_e = even word, d_o = odd word, d_v = i odd ? 2^20 - u : u
+//   M  ph = 26: load m_hi = 0, m_v = d_v, m_diff = d_o - d_e (25 bits), m_e = d_e + 128, flags;
+//      ph = 27 .. 31, 0 .. 15: s = m_hi + (m_v[0] ? m_diff : 0) (26 bits), m_hi = s >>> 1,
+//      m_b = s[0], m_v = m_v >> 1  (21 shift-and-add steps, LSB first)
+//   G  ph = 16: corr = act ? (2 m_hi + m_e + m_b) >>> 8 : 0   (= floor((e 2^20 + diff v + 2^27) / 2^28))
 //   H  every edge: output registers corr, delta = corr - corr_prev, active, in_range, cfg_err
-// Latency: the inputs of a sample call t are reflected in the outputs after edge t+28 (L_MAP = 29)
-// and held until edge t+59.
+// Latency: the inputs of a sample call t are reflected in the outputs after edge t+49 (L_MAP = 50)
+// and held until edge t+80.
 //
 // i_rst (synchronous, active high) is error_map::reset(): the pipeline's control and output
-// registers only, never the RAM. The data registers of the stages are not reset: their values are
+// registers only, never the RAMs. The data registers of the stages are not reset: their values are
 // only used while the stage's act flag (reset to 0) is 1. During a reset call the write port takes
-// no new write (the C++ step() is not called in the safe state) but the writes already in w1..w3
-// still reach the RAM (the C++ reset() performs them): a write of a running call is never lost.
+// no new write (the C++ step() is not called in the safe state) but the writes already in the
+// delay line still reach the RAM in their calls (its pointer is never reset; the C++ reset()
+// performs them at once, and no sample reads the table before they have landed): a write of a
+// running call is never lost.
 `timescale 1ns / 1ps
 `default_nettype none
 
@@ -78,8 +84,9 @@ module error_map (
     localparam integer W_ME      = 25;
     localparam integer W_G       = 27;
     localparam integer F         = 8;
-    localparam [4:0]   PH_LOAD   = 5'd5;
-    localparam [4:0]   PH_G      = 5'd27;
+    localparam [4:0]   PH_LOAD   = 5'd26;   // M's load: 26 calls after the sample call
+    localparam [4:0]   PH_G      = 5'd16;   // G: 48 calls after it (mod S_MAP = 32)
+    localparam integer N_STEP    = 21;      // W_V multiplier steps, calls 27 .. 47
     localparam integer W_C       = 17;
     localparam integer W_CDELTA  = 18;
 
@@ -105,7 +112,16 @@ module error_map (
     end
 `endif
 
-    // ---- stage A: geometry of the selected bank, registered subtract -------------------------
+    // ---- phase counter: ph = 0 marks a sample call ----------------------------------------------
+    reg [4:0] ph;
+    always @(posedge i_clk) begin
+        if (i_rst) ph <= 5'd0;
+        else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
+    end
+    wire ph0 = ph == 5'd0;            // A1: the sample call
+    wire ph1 = ph == 5'd1;            // A2
+
+    // ---- stage A1 (ph = 0): the sample call's inputs, the low half of the subtract -----------
     wire        [4:0]         g_k      = i_bank_sel ? i_k1 : i_k0;
     wire        [W_N-1:0]     g_n      = i_bank_sel ? i_n1 : i_n0;
     // geometry check of each bank as plain logic (no carry chains), then the bank multiplexer:
@@ -117,85 +133,73 @@ module error_map (
     wire                      geom_ok  = i_bank_sel ? (k1_ok && n1_ok) : (k0_ok && n0_ok);
     wire        [W_N-1:0]     n_m1     = g_n - 11'd1;
 
+    // p - origin = p + ~origin + 1 in two halves: the low W_LO bits here (one 20-bit chain, the
+    // carry registered), p and ~origin above them registered for A2. ~origin of the selected
+    // bank: the bank multiplexer's LUT inverts for free (an inverted operand of a carry chain is
+    // one more LUT per bit on the iCE40)
+    localparam integer W_LO = 20;
+    localparam integer W_HI = W_OFF - W_LO;   // 19
+    wire [37:0]       ng_origin = i_bank_sel ? ~i_origin1 : ~i_origin0;
+    wire [W_LO:0]     off_lo = {1'b0, i_p[W_LO-1:0]} + {1'b0, ng_origin[W_LO-1:0]} + {{W_LO{1'b0}}, 1'b1};
+    wire [W_HI-1:0]   off_hi = a_phi + a_ohi + {{(W_HI-1){1'b0}}, a_c};   // A2, from registers
+
+    // the offset register a_off: the low half written by A1, the high half by A2, then shifted
+    // right one bit per call by S (the sign bit a_off[38] stays); a_kc counts the shifts still to
+    // do (k of the sample; the RTL loads k unchecked: with an invalid geometry the sample is
+    // inactive and S may run on until the next A1, which reloads everything); the bits shifted
+    // out enter a_u from the top, so after k shifts a_u = (off mod 2^k) 2^(20-k)
     reg signed [W_OFF-1:0]  a_off;
-    reg        [4:0]        a_k;
+    reg        [W_HI-1:0]   a_phi, a_ohi;
+    reg                     a_c;
+    reg        [4:0]        a_kc;
+    reg        [W_FRAC-1:0] a_u;
     reg        [W_ADDR-1:0] a_last;
     reg                     a_bank, a_act, a_err;
-    // write port, delayed to stage R
-    reg                     w1_we, w1_bank, w2_we, w2_bank, w3_we, w3_bank;
-    reg        [W_ADDR-1:0] w1_addr, w2_addr, w3_addr;
-    reg signed [W_CORR-1:0] w1_data, w2_data, w3_data;
-
-    // p - origin = p + ~origin + 1 as a carry-select add: the low 20 bits and both candidates of
-    // the high 19 bits (carry 0 / 1) side by side, then the select (two 20-bit carry chains instead
-    // of one of 39). ~origin of the selected bank: the bank multiplexer's LUT inverts for free (an
-    // inverted operand of a carry chain is one more LUT per bit on the iCE40)
-    localparam integer W_LO = 20;
-    wire [37:0]             ng_origin = i_bank_sel ? ~i_origin1 : ~i_origin0;
-    wire [W_LO:0]           off_lo  = {1'b0, i_p[W_LO-1:0]} + {1'b0, ng_origin[W_LO-1:0]} + {{W_LO{1'b0}}, 1'b1};  // [W_LO]: no borrow
-    wire [W_OFF-W_LO-1:0]   p_hi    = {i_p[37], i_p[37:W_LO]};
-    wire [W_OFF-W_LO-1:0]   no_hi   = {ng_origin[37], ng_origin[37:W_LO]};
-    wire [W_OFF-W_LO-1:0]   off_hi0 = p_hi + no_hi;                            // p_hi - o_hi - 1
-    wire [W_OFF-W_LO-1:0]   off_hi1 = p_hi + no_hi + {{(W_OFF-W_LO-1){1'b0}}, 1'b1};  // p_hi - o_hi
+    wire                    sh = a_kc != 5'd0 && !ph0 && !ph1;   // S: calls 2 .. 21 of the sample
     always @(posedge i_clk) begin
-        a_off  <= {off_lo[W_LO] ? off_hi1 : off_hi0, off_lo[W_LO-1:0]};
-        // with an invalid geometry the sample is inactive (a_act = 0) and k, last are not used:
-        // they are taken raw here (the C++ model substitutes K_MIN / 0 to keep its shifts defined)
-        a_k    <= g_k;
-        a_last <= n_m1[W_ADDR-1:0];
-        a_bank <= i_bank_sel;
-        w1_bank <= !i_bank_sel;
-        w1_addr <= i_addr;
-        w1_data <= i_data;
-        w2_we   <= w1_we;
-        w2_bank <= w1_bank;
-        w2_addr <= w1_addr;
-        w2_data <= w1_data;
-        w3_we   <= w2_we;
-        w3_bank <= w2_bank;
-        w3_addr <= w2_addr;
-        w3_data <= w2_data;
+        if (ph0) begin
+            a_off[W_LO-1:0] <= off_lo[W_LO-1:0];
+            a_c    <= off_lo[W_LO];
+            a_phi  <= {i_p[37], i_p[37:W_LO]};
+            a_ohi  <= {ng_origin[37], ng_origin[37:W_LO]};
+            a_kc   <= g_k;
+            a_last <= n_m1[W_ADDR-1:0];
+            a_bank <= i_bank_sel;
+            a_u    <= {W_FRAC{1'b0}};
+        end else if (ph1) begin
+            a_off[W_OFF-1:W_LO] <= off_hi;
+        end else if (sh) begin
+            a_off <= {a_off[W_OFF-1], 1'b0, a_off[W_OFF-2:1]};
+            a_u   <= {a_off[0], a_u[W_FRAC-1:1]};
+            a_kc  <= a_kc - 5'd1;
+        end
         if (i_rst) begin
             a_act <= 1'b0;
             a_err <= 1'b0;
-            w1_we <= 1'b0;
-        end else begin
+        end else if (ph0) begin
             a_act <= i_map_en && i_homed && geom_ok;
             a_err <= i_map_en && !geom_ok;
-            w1_we <= i_we;
         end
     end
 
-    // ---- stage B: split the offset (field selects by k, no compare) --------------------------
-    // suffix OR of the offset's magnitude bits: sor[j] = |a_off[37:j]; b_hi = sor[k + 10]
-    wire [W_OFF-1:0] sor;
-    assign sor[W_OFF-1] = 1'b0;
-    genvar gj;
-    generate
-        for (gj = W_OFF - 2; gj >= 0; gj = gj - 1) begin : g_sor
-            assign sor[gj] = sor[gj+1] | a_off[gj];
-        end
-    endgenerate
-    wire [31:0]       sor_hi = {{(32-W_OFF+W_ADDR){1'b0}}, sor[W_OFF-1:W_ADDR]};  // [k] = |a_off[37:k+10]
-    // i = off[k+9:k] and u = off[k-1:0] << (20 - k) are the fields [29:20] and [19:0] of
-    // {off[29:0], 20 zeros} >> k (k <= K_MAX = 20 while active): one shifter for both fields
-    wire [W_ADDR+2*W_FRAC-1:0] off_w  = {a_off[W_ADDR+W_FRAC-1:0], {W_FRAC{1'b0}}};
-    wire [W_ADDR+2*W_FRAC-1:0] off_sw = off_w >> a_k;
-    wire [W_ADDR-1:0]          off_sh = off_sw[W_ADDR+W_FRAC-1:W_FRAC];
-    wire [W_FRAC-1:0]          u_sh   = off_sw[W_FRAC-1:0];
-    // even-RAM address (last + 1) / 2 of the clamp candidate last (that of i is formed in C)
-    wire [W_ADDR:0]   last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
-
-    reg                     b_neg, b_hi, b_bank, b_act, b_err;
-    reg        [W_ADDR-1:0] b_i, b_last;
-    reg        [W_HADDR-1:0] b_laste;             // (last + 1) / 2
-    reg        [W_FRAC-1:0] b_u;
+    // ---- stage B (every call; the sample's in call t+22): the shifted offset's fields, the
+    // compares with last, the even addresses, all from registers ---------------------------------
+    wire [W_ADDR:0] ai_p1   = {1'b0, a_off[W_ADDR-1:0]} + {{W_ADDR{1'b0}}, 1'b1};
+    wire [W_ADDR:0] last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
+    reg                      b_neg, b_hi, b_ge, b_eq, b_u0, b_bank, b_act, b_err;
+    reg        [W_ADDR-1:0]  b_i, b_last;
+    reg        [W_HADDR-1:0] b_ie, b_le;             // (i + 1) / 2, (last + 1) / 2
+    reg        [W_FRAC-1:0]  b_u;
     always @(posedge i_clk) begin
         b_neg  <= a_off[W_OFF-1];
-        b_hi   <= sor_hi[a_k];
-        b_i    <= off_sh[W_ADDR-1:0];
-        b_laste <= last_p1[W_HADDR:1];
-        b_u    <= u_sh;
+        b_hi   <= |a_off[W_OFF-2:W_ADDR];            // floor(off / 2^k) beyond every address
+        b_i    <= a_off[W_ADDR-1:0];
+        b_u    <= a_u;
+        b_ge   <= a_off[W_ADDR-1:0] >= a_last;
+        b_eq   <= a_off[W_ADDR-1:0] == a_last;
+        b_u0   <= a_u == {W_FRAC{1'b0}};
+        b_ie   <= ai_p1[W_HADDR:1];
+        b_le   <= last_p1[W_HADDR:1];
         b_last <= a_last;
         b_bank <= a_bank;
         if (i_rst) begin
@@ -207,13 +211,12 @@ module error_map (
         end
     end
 
-    // ---- stage C: clamp, the two RAM addresses (registered) --------------------------------------
-    wire                above  = !b_neg && (b_hi || b_i >= b_last);
+    // ---- stage C (every call): clamp (multiplexers only), the two RAM addresses (registered) ------
+    wire                above  = !b_neg && (b_hi || b_ge);
     wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? b_last : b_i;
     wire [W_FRAC-1:0]   cu     = (b_neg || above) ? {W_FRAC{1'b0}} : b_u;
-    wire                cinr   = !b_neg && (!above || (!b_hi && b_i == b_last && b_u == {W_FRAC{1'b0}}));
-    wire [W_ADDR:0]     bi_p1  = {1'b0, b_i} + {{W_ADDR{1'b0}}, 1'b1};   // beside the compare
-    wire [W_HADDR-1:0]  ea     = b_neg ? {W_HADDR{1'b0}} : above ? b_laste : bi_p1[W_HADDR:1];  // (i+1)/2
+    wire                cinr   = !b_neg && (!above || (!b_hi && b_eq && b_u0));
+    wire [W_HADDR-1:0]  ea     = b_neg ? {W_HADDR{1'b0}} : above ? b_le : b_ie;   // (i+1)/2
     wire [W_HADDR-1:0]  oa     = ci[W_ADDR-1:1];
 
     reg [W_HADDR-1:0] c_ea, c_oa;
@@ -235,7 +238,56 @@ module error_map (
         end
     end
 
-    // ---- stage R: one registered read of each RAM (selected bank), the delayed write ----------
+    // ---- write port: delayed by W_DLY = 24 calls, to the clock of a sample's reads ---------------
+    // w1 takes the call's write (to the bank not selected now; none in a reset call); a 32 x 36
+    // block RAM holds it for 22 calls (write pointer wp, free-running and never reset, so the
+    // writes in flight keep their calls across a reset; read pointer wp + 10 = wp - 22); the RAM's
+    // read register wd is the write of call t - 24 in call t, performed into the table RAM in the
+    // clock of stage R (read-first: the reads of that clock do not see it; other bank anyway).
+    localparam integer W_WR = 1 + 1 + W_ADDR + W_CORR;   // we, bank, addr, data
+    reg                     w1_we, w1_bank;
+    reg        [W_ADDR-1:0] w1_addr;
+    reg signed [W_CORR-1:0] w1_data;
+    reg        [4:0]        wp;
+    reg        [W_WR-1:0]   wd;
+    reg                     wv;      // wd holds a delay-line word (0 in the power-up clock)
+    always @(posedge i_clk) begin
+        w1_bank <= !i_bank_sel;
+        w1_addr <= i_addr;
+        w1_data <= i_data;
+        if (i_rst) w1_we <= 1'b0;
+        else       w1_we <= i_we;
+        wp <= wp + 5'd1;
+        wv <= 1'b1;
+    end
+    wire [4:0]        rp      = wp + 5'd10;   // read slot: written 22 calls ago (mod 32)
+    wire              wd_we   = wd[W_WR-1] && wv;
+    wire              wd_bank = wd[W_WR-2];
+    wire [W_ADDR-1:0] wd_addr = wd[W_CORR+W_ADDR-1:W_CORR];
+    wire [W_CORR-1:0] wd_data = wd[W_CORR-1:0];
+`ifndef FORMAL
+    (* no_rw_check *) reg [W_WR-1:0] wdl [0:31];
+    integer jj;
+    initial begin
+        // power-up values (FPGA flip-flops start at their configured value, 0): the never-reset
+        // write pointer, no write in w1 before the first reset, and wv, which keeps the RAM's read
+        // register (no initial value of its own: it is the block RAM's) from writing before it
+        // has read a word of the zeroed delay line
+        wp = 5'd0;
+        w1_we = 1'b0;
+        wv = 1'b0;
+        for (jj = 0; jj < 32; jj = jj + 1) wdl[jj] = {W_WR{1'b0}};
+    end
+    always @(posedge i_clk) begin
+        wdl[wp] <= {w1_we, w1_bank, w1_addr, w1_data};
+        wd      <= wdl[rp];
+    end
+`else
+    // formal: the write port reaches no property (the table RAMs are abstracted)
+    always @(posedge i_clk) wd <= {W_WR{1'b0}};
+`endif
+
+    // ---- stage R (every call): one registered read of each RAM (selected bank), the delayed write
     reg signed [W_CORR-1:0] rd_e, rd_o;   // registered RAM outputs
 `ifdef FORMAL
     // formal: the table contents are free (the properties below hold for any table); every read
@@ -251,10 +303,10 @@ module error_map (
         rd_o <= tblo[{c_bank, c_oa}];
     end
     always @(posedge i_clk) begin
-        if (w3_we && !w3_addr[0]) tble[{w3_bank, w3_addr[W_ADDR-1:1]}] <= w3_data;
+        if (wd_we && !wd_addr[0]) tble[{wd_bank, wd_addr[W_ADDR-1:1]}] <= wd_data;
     end
     always @(posedge i_clk) begin
-        if (w3_we && w3_addr[0]) tblo[{w3_bank, w3_addr[W_ADDR-1:1]}] <= w3_data;
+        if (wd_we && wd_addr[0]) tblo[{wd_bank, wd_addr[W_ADDR-1:1]}] <= wd_data;
     end
 `endif
 
@@ -296,13 +348,6 @@ module error_map (
         end
     end
 
-    // ---- phase counter: ph = 0 marks a sample call ----------------------------------------------
-    reg [4:0] ph;
-    always @(posedge i_clk) begin
-        if (i_rst) ph <= 5'd0;
-        else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
-    end
-
     // ---- M: sequenced multiply (d_o - d_e) * d_v, LSB first ------------------------------------------
     reg signed [W_MHI-1:0]  m_hi;
     reg                     m_b;
@@ -310,7 +355,8 @@ module error_map (
     reg signed [W_DIFF-1:0] m_diff;
     reg signed [W_ME-1:0]   m_e;
     reg                     m_act, m_inr, m_err;
-    wire                    m_step = ph > PH_LOAD && ph < PH_G;
+    wire [4:0]              m_j    = ph - (PH_LOAD + 5'd1);    // step index (mod 32)
+    wire                    m_step = m_j < N_STEP;
     wire signed [W_MHI-1:0] m_add  = m_v[0] ? {m_diff[W_DIFF-1], m_diff} : {W_MHI{1'b0}};
     wire signed [W_MHI-1:0] m_s    = m_hi + m_add;
     always @(posedge i_clk) begin
@@ -386,7 +432,7 @@ module error_map (
     //    exactly the correction; the delta form loses or adds nothing);
     // 2. corr changes at most once per S_MAP = 32 calls, in a fixed call of the phase (delta is
     //    non-zero only with ph == PH_G + 2);
-    // 3. a map switched off takes its correction back in full: after 64 calls in a row with
+    // 3. a map switched off takes its correction back in full: after 82 calls in a row with
     //    map_en == 0 or homed == 0, corr == 0, delta == 0 and active == 0 (with 1., the deltas
     //    have returned exactly what they added).
     reg                f_init;
@@ -394,6 +440,8 @@ module error_map (
     reg signed [23:0]  f_sum;                          // the deltas of the calls before this one
     reg [6:0]          f_off;                          // calls in a row with the map off, saturating
     wire               f_offn = !i_map_en || !i_homed;
+    wire [4:0]         f_sa = ph - 5'd1;               // calls since stage A1 (the sample call) - 1
+    wire [4:0]         f_sb = ph - 5'd2, f_sc3 = ph - 5'd3, f_sr = ph - 5'd4, f_sd = ph - 5'd5;
     wire [4:0]         f_sl = ph - (PH_LOAD + 5'd1);   // calls since M was loaded
     wire [4:0]         f_sg = ph - (PH_G + 5'd1);      // calls since stage G was loaded
     wire [4:0]         f_sc = ph - (PH_G + 5'd2);      // calls since corr took stage G's value
@@ -415,17 +463,18 @@ module error_map (
             if (ph != PH_G + 5'd1) assert(g_corr == corr_q);
             if (ph != PH_G + 5'd2) assert(delta_q == {W_CDELTA{1'b0}});
             // 3.
-            if (f_off >= 7'd64) assert(corr_q == {W_C{1'b0}} && delta_q == {W_CDELTA{1'b0}} && !active_oq);
-            // helper invariants: the activity pipeline behind the switched-off inputs
-            if (f_off >= 7'd1) assert(!a_act);
-            if (f_off >= 7'd2) assert(!b_act);
-            if (f_off >= 7'd3) assert(!c_act);
-            if (f_off >= 7'd4) assert(!r_act);
-            if (f_off >= 7'd5) assert(!d_act);
-            if (f_off >= 7'd6 + {2'b00, f_sl}) assert(!m_act);
-            if (f_off >= 7'd28 + {2'b00, f_sg}) assert(!g_act && g_corr == {W_C{1'b0}});
-            if (f_off >= 7'd29 + {2'b00, f_sc}) assert(corr_q == {W_C{1'b0}});
-            if (f_off >= 7'd61) assert(delta_q == {W_CDELTA{1'b0}} && !active_oq);
+            if (f_off >= 7'd82) assert(corr_q == {W_C{1'b0}} && delta_q == {W_CDELTA{1'b0}} && !active_oq);
+            // helper invariants: the activity pipeline behind the switched-off inputs (stage A1
+            // takes the flags in the sample call only; B, C, R, D copy them every call)
+            if (f_off >= 7'd1 + {2'b00, f_sa}) assert(!a_act);
+            if (f_off >= 7'd2 + {2'b00, f_sb}) assert(!b_act);
+            if (f_off >= 7'd3 + {2'b00, f_sc3}) assert(!c_act);
+            if (f_off >= 7'd4 + {2'b00, f_sr}) assert(!r_act);
+            if (f_off >= 7'd5 + {2'b00, f_sd}) assert(!d_act);
+            if (f_off >= 7'd27 + {2'b00, f_sl}) assert(!m_act);
+            if (f_off >= 7'd49 + {2'b00, f_sg}) assert(!g_act && g_corr == {W_C{1'b0}});
+            if (f_off >= 7'd50 + {2'b00, f_sc}) assert(corr_q == {W_C{1'b0}});
+            if (f_off >= 7'd82) assert(delta_q == {W_CDELTA{1'b0}} && !active_oq);
         end
     end
 `endif

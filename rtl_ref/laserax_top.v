@@ -325,7 +325,7 @@ module laserax_top #(
     wire [11:0]        rep_d;
 
     // error map: uncorrected comp and rephase homed status of the previous call (the blocks'
-    // output registers); a sample every 32 calls, 29 calls of latency (docs/ERROR_MAP.md §6)
+    // output registers); a sample every 32 calls, 50 calls of latency (docs/ERROR_MAP.md §6)
     wire signed [16:0] map_corr;
     wire signed [17:0] map_delta;
     wire               map_active, map_in_range, map_clamped, map_cfg_err;

@@ -285,7 +285,7 @@ BLOCKS = [
     dict(
         block="error_map",
         module="error_map",
-        dut="error_map (2 banks x 1024 x 24-bit table RAM as even/odd RAMs, a sample every 32 calls, 29-call latency); "
+        dut="error_map (2 banks x 1024 x 24-bit table RAM as even/odd RAMs, a sample every 32 calls, 50-call latency); "
             "the RAMs start at 0 as the C++ tables; both vector sets still write every word before a call "
             "that is active reads it (the golden set after the chain scenario's map: a directed tail "
             "with flips, both table ends, invalid geometries and every spacing).",

@@ -16,10 +16,11 @@
 //             and down, several tables (noise, extremes, exact half ties, ramp), several origins.
 // directed:   a flip never mixes banks (constant tables of different value, frac != 0); writes
 //             to the inactive bank never change the output; every invalid geometry gives cfg_err
-//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 29 calls
+//             and corr 0 (delta brings it back once), and recovery; latency is L_MAP = 50 calls
 //             from a sample call (one in S_MAP = 32; the outputs hold in between). Every call of
 //             every part is also checked against the direct formula of the last published sample.
 #include <cstdio>
+#include <deque>
 #include <random>
 #include <string>
 #include <vector>
@@ -32,7 +33,7 @@ namespace {
 
 constexpr int kDepth = 1024;  // ERROR_MAP.md §2
 constexpr int kPeriod = 32;   // ERROR_MAP.md §6: one sample call in kPeriod (the first after reset)
-constexpr int kLat = 29;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
+constexpr int kLat = 50;      // sample call t -> outputs of calls t + kLat - 1 .. (held until the next)
 constexpr int kNMax = 2047;   // largest value of the 11-bit n_points register
 static_assert(kDepth == lx::error_map_cfg::TBL_DEPTH && kDepth == golden::error_map::kDepth, "depth");
 static_assert(kLat == lx::error_map_cfg::L_MAP && kLat == golden::error_map::kLat, "latency");
@@ -115,17 +116,22 @@ void check_expect(tbu::result& res, const expect_t& e, const lx::error_map::out_
 
 // One hls model and one golden model driven with the same inputs; compares every output with
 // golden and with the published expectation of the sample schedule (ERROR_MAP.md §4, §6): the
-// inputs of the calls n * kPeriod after construction, each published kLat - 1 calls later.
+// inputs of the calls n * kPeriod after construction, each published kLat - 1 calls later (two
+// samples are in flight: kLat - 1 > kPeriod).
 struct dut {
+    struct pending_t {
+        long at;      // call index at which it becomes cur
+        expect_t e;   // the sample's expectation
+        int64_t p;    // the sample's position
+    };
     lx::error_map h;
     golden::error_map g;
     std::vector<int32_t> shadow[2];  // the tables as the test believes them to be
     int64_t sum_delta = 0;
     long calls = 0;             // calls since construction
     expect_t cur;               // what the outputs must be now
-    expect_t pend;              // the last sample's expectation, not yet published
-    long publish_at = -1;       // call index at which pend becomes cur
-    int64_t sample_p = 0;       // position of the last sample call
+    std::deque<pending_t> pend;  // samples taken, not yet published, oldest first
+    int64_t sample_p = 0;        // position of the sample call whose result is published
 
     dut() {
         shadow[0].assign(kDepth, 0);
@@ -151,15 +157,16 @@ struct dut {
         gr.addr = r.addr;
         hr.data = r.data;
         gr.data = r.data;
-        if (calls % kPeriod == 0) {  // a sample call: expectation from the tables before its write
-            pend = expected(shadow, p, homed, r);
-            publish_at = calls + kLat - 1;
-            sample_p = p;
-        }
+        if (calls % kPeriod == 0)  // a sample call: expectation from the tables before its write
+            pend.push_back(pending_t{calls + kLat - 1, expected(shadow, p, homed, r), p});
         const lx::error_map::out_t ho = h.step(p, homed, hr);
         const golden::error_map::out go = g.step(p, homed, gr);
         if (r.we) shadow[r.bank_sel ? 0 : 1][static_cast<size_t>(r.addr)] = r.data;
-        if (calls == publish_at) cur = pend;
+        if (!pend.empty() && calls == pend.front().at) {
+            cur = pend.front().e;
+            sample_p = pend.front().p;
+            pend.pop_front();
+        }
         check_expect(res, cur, ho, where, t);
         ++calls;
         sum_delta += ho.delta.to_int64();
@@ -316,7 +323,7 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long calls, c
             if (p > hi && v >= 0) { v = -(v == 0 ? 1 : v); ++cov.reversals; }
             if (p < lo && v <= 0) { v = (v == 0 ? 1 : -v); ++cov.reversals; }
 
-            const bool published = d.calls == d.publish_at;
+            const bool published = !d.pend.empty() && d.calls == d.pend.front().at;
             const lx::error_map::out_t o = d.step(res, p, homed, r, "random", t);
             const expect_t& pub = d.cur;  // checked against o by d.step
             ++cov.calls;
@@ -402,17 +409,15 @@ void test_directed(tbu::result& res) {
         // now bank 0 (B) is active and bank 1 holds A; flip every 5 calls while moving. Each
         // published value is that of the bank selected in its sample call.
         const int64_t wantA = floordiv(A + 128, 256), wantB = floordiv(B + 128, 256);
-        bool sample_sel = false;
-        long pub_at = -1;
+        std::deque<std::pair<long, bool>> samples;  // (publication call, bank_sel of the sample)
         int seenA = 0, seenB = 0;
         for (long t = 0; t < 4000; ++t) {
             if (t % 5 == 0) r.bank_sel = !r.bank_sel;
             const int64_t x = 1000 + 3 + 7 * t % 4000;
-            if (d.calls % kPeriod == 0) {
-                sample_sel = r.bank_sel;
-                pub_at = d.calls + kLat - 1;
-            }
-            const bool pub = d.calls == pub_at;
+            if (d.calls % kPeriod == 0) samples.emplace_back(d.calls + kLat - 1, r.bank_sel);
+            const bool pub = !samples.empty() && d.calls == samples.front().first;
+            const bool sample_sel = pub && samples.front().second;
+            if (pub) samples.pop_front();
             const lx::error_map::out_t o = d.step(res, x, true, r, "flip", t);
             if (pub) {
                 const int64_t want = sample_sel ? wantA : wantB;  // bank 1 holds A
@@ -458,7 +463,39 @@ void test_directed(tbu::result& res) {
         }
         r.we = false;
     }
-    // 3. invalid geometries: cfg_err, corr 0 (one delta back), recovery; none when disabled
+    // 3. a flip while samples are in flight, then at once a reload of the released bank: every
+    //    sample taken before the flip still publishes the old table (the write port's delay,
+    //    W_DLY = 24 calls, outlasts the reads of the samples in flight; a shorter one mixes)
+    for (int flip_at = 1; flip_at < kPeriod; flip_at += 3) {
+        dut d;
+        host_regs r;
+        const geom g{0, 5, 40};
+        r.g[0] = g;
+        const int32_t A = 700 * 256 + 11, B = -900 * 256 + 5;
+        load_and_flip(res, d, r, std::vector<int32_t>(40, A), g, 0, true);  // active: A
+        r.g[r.bank_sel ? 0 : 1] = g;
+        const int64_t x = 13 * 32 + 9;  // inside, frac != 0
+        while (d.calls % kPeriod != 0) d.step(res, x, true, r, "reload-align", d.calls);
+        for (int c = 0; c < kPeriod + kLat; ++c) d.step(res, x, true, r, "reload-settle", c);
+        while (d.calls % kPeriod != 0) d.step(res, x, true, r, "reload-align", d.calls);
+        const long sample = d.calls;  // a sample call on table A
+        for (int c = 0; c < flip_at; ++c) d.step(res, x, true, r, "reload-pre", c);
+        r.bank_sel = !r.bank_sel;  // flip: the A bank is released, written at once with B
+        for (int a = 0; a < 40; ++a) {
+            r.we = true;
+            r.addr = a;
+            r.data = B;
+            d.step(res, x, true, r, "reload-write", a);
+        }
+        r.we = false;
+        while (d.calls < sample + kLat - 1) d.step(res, x, true, r, "reload-wait", d.calls);
+        const lx::error_map::out_t o = d.step(res, x, true, r, "reload-pub", d.calls);
+        res.check(o.corr.to_int64() == floordiv(A + 128, 256),
+                  "reload after a flip in call " + std::to_string(flip_at) + " of the period: the sample of call " +
+                      std::to_string(sample) + " published " + std::to_string(o.corr.to_int64()) +
+                      " instead of table A's value");
+    }
+    // 4. invalid geometries: cfg_err, corr 0 (one delta back), recovery; none when disabled
     {
         const geom bad[] = {{0, 0, 16}, {0, 3, 16}, {0, 21, 16}, {0, 31, 16}, {0, 8, 0},
                             {0, 8, 1},  {0, 8, kDepth + 1}, {0, 8, kNMax}, {0, 2, 1500}};

@@ -527,8 +527,11 @@ vec_table dds_stress(rng_t& r, long long calls) {
 //   C  k = 4..20 in turn, alternating banks: a new geometry (n = 2, TBL_DEPTH or random) for the
 //      inactive bank, a few words into it, the flip, a sweep from below the table to both ends
 //      (exactly) and beyond, and back
+//   E  16 flips, each at another phase of the sample period, each followed at once by writes of
+//      new values into the words around the parked position in the bank the flip releases
 //   D  random: reloads of the inactive bank (random geometry, invalid 1 in 6; table kinds: smooth
-//      walk, full-range noise, alternating extremes, constant) followed by a flip, stray writes,
+//      walk, full-range noise, alternating extremes, constant) followed by a flip (1 in 3 of the
+//      next reloads start within 30 calls of it, into the bank just released), stray writes,
 //      motion at 0 .. 4 points per call with reversals, dwells and jumps (38-bit extremes
 //      included) over both table ends, map_en and homed toggles and pulses, changes of the
 //      selected bank's origin while active
@@ -689,6 +692,33 @@ vec_table error_map_stress(rng_t& r, long long calls) {
         sweep(r.range(20, 80));
         sweep(r.range(20, 80));
     }
+    // E: a flip, then at once a reload of the bank it releases, at the words the samples taken
+    //    before the flip still read (position parked inside that table; the flip in each phase
+    //    of the sample period in turn): the write port's delay must outlast those samples
+    h.r.map_en = true;
+    h.homed = true;
+    for (int j = 0; j < 16 && !done(); ++j) {
+        const int cb = h.r.bank_sel ? 1 : 0;  // the active bank, released by the flip below
+        const lx::error_map_geom& g = h.r.geom[cb];
+        if (!lx::error_map_geom_ok(g)) {
+            h.r.bank_sel = !h.r.bank_sel;  // C left a valid table in one of the banks
+            continue;
+        }
+        const int64_t o = g.origin.to_int64();
+        const int ks = static_cast<int>(g.spacing_log2.to_uint()), n = static_cast<int>(g.n_points.to_uint());
+        const int64_t i = r.range(0, n - 2);
+        go(o + (i << ks) + r.range(1, (int64_t{1} << ks) - 1), int64_t{1} << ks);
+        for (int c = 0; c < 90 && !done(); ++c) call();      // settled on the active table
+        for (int c = 0; c < 2 * j + (j % 3) && !done(); ++c) call();  // another phase each time
+        h.r.bank_sel = !h.r.bank_sel;
+        wq.clear();
+        wq_pos = 0;
+        for (int64_t a = i - 2; a <= i + 3; ++a)
+            if (a >= 0 && a < n) wq.push_back({static_cast<unsigned>(a), r.range(wmin, wmax)});
+        for (int c = 0; c < 100 && !done(); ++c) call();
+        h.r.bank_sel = !h.r.bank_sel;  // back to the reloaded table for the next round
+        for (int c = 0; c < 10 && !done(); ++c) call();
+    }
     // D: random operation
     skip_one_in = 4;
     long long idle = r.range(50, 400), seg_left = 0, dwell = 0;
@@ -707,7 +737,10 @@ vec_table error_map_stress(rng_t& r, long long calls) {
             idle = -r.range(1, 60);  // < 0: flip that many calls after the last word
         } else if (wq_pos >= wq.size() && idle < 0 && ++idle == 0) {
             h.r.bank_sel = !h.r.bank_sel;
-            idle = r.range(50, 700);
+            // the next reload: mostly much later, 1 in 3 within 30 calls, while the samples
+            // taken before the flip still have to read the bank it releases (the write port's
+            // delay must outlast them: ERROR_MAP.md §4)
+            idle = r.chance(3) ? r.range(1, 30) : r.range(50, 700);
             seg_left = 0;  // new motion towards the new table
         }
         if (r.chance(1500)) h.r.map_en = !h.r.map_en;

@@ -3,7 +3,7 @@
 // Spec: block error_map of BLOCKS in scripts/gen_rtl_tb.py; shared body: tb_common.vh.
 //
 // DUT: error_map (2 banks x 1024 x 24-bit table RAM as even/odd RAMs, a sample every 32 calls,
-// 29-call latency); the RAMs start at 0 as the C++ tables; both vector sets still write every word
+// 50-call latency); the RAMs start at 0 as the C++ tables; both vector sets still write every word
 // before a call that is active reads it (the golden set after the chain scenario's map: a directed
 // tail with flips, both table ends, invalid geometries and every spacing).
 // Reads one vector file in the format of docs/VECTORS.md: error_map.hex (golden vectors, `laserax
