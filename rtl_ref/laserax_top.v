@@ -301,6 +301,7 @@ module laserax_top #(
     wire signed [1:0]  dec_step;
     wire signed [31:0] dec_raw;
     wire               dec_illegal, dec_ovs, dec_illegal_st, dec_ovs_st, dec_lerr, dec_lerr_alarm;
+    wire               dec_lerr_nx;   // dec_lerr of the next call (rephase's look-ahead)
     wire               dec_glitch_st;
     wire [7:0]         dec_err_cnt;
     quad_decoder u_dec (
@@ -308,7 +309,7 @@ module laserax_top #(
         .i_glitch_n(r_glitch_n), .i_min_spacing(r_min_spacing), .i_clear(r_clear),
         .o_step(dec_step), .o_raw_count(dec_raw), .o_illegal(dec_illegal), .o_ovs(dec_ovs),
         .o_err_cnt(dec_err_cnt), .o_illegal_st(dec_illegal_st), .o_ovs_st(dec_ovs_st),
-        .o_lerr(dec_lerr), .o_lerr_alarm(dec_lerr_alarm), .o_glitch_st(dec_glitch_st));
+        .o_lerr(dec_lerr), .o_lerr_nx(dec_lerr_nx), .o_lerr_alarm(dec_lerr_alarm), .o_glitch_st(dec_glitch_st));
 
     // multiplier: consumes the decoder step of the previous call
     wire signed [37:0] mul_comp;
@@ -354,7 +355,8 @@ module laserax_top #(
     // look-ahead (its next pstep) for the registered count decode (DESIGN 4.5)
     rephase u_rep (
         .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_pstep_nx(pac_pstep_nx), .i_sw(swf_f), .i_sw_valid(swf_valid),
-        .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_period(r_period), .i_period_m1(r_period_m1),
+        .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_unhome_nx(dec_lerr_nx), .i_rehome_nx(i_rehome),
+        .i_period(r_period), .i_period_m1(r_period_m1),
         .i_period_m2(r_period_m2), .i_mark_len(r_mark_len),
         .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
         .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),

@@ -33,6 +33,8 @@ module quad_decoder (
     output wire                o_illegal_st,   // sticky
     output wire                o_ovs_st,       // sticky
     output wire                o_lerr,         // filtered laser error && primed
+    output wire                o_lerr_nx,      // look-ahead: the o_lerr of the next call (0 in a
+                                               // reset call; rephase registers it, DESIGN 4.5)
     output wire                o_lerr_alarm,   // sticky while lerr
     output wire                o_glitch_st     // sticky: the A or B filter suppressed a pulse
 );
@@ -194,6 +196,7 @@ module quad_decoder (
     assign o_illegal_st = illegal_st_q;
     assign o_ovs_st     = ovs_st_q;
     assign o_lerr       = lerr_q;
+    assign o_lerr_nx    = !i_rst && lerr_d;
     assign o_lerr_alarm = lerr_alarm_q;
     assign o_glitch_st  = glitch_st_q;
 
@@ -203,7 +206,7 @@ module quad_decoder (
     // saw in that call; the asserts compare the outputs of the call with an independent decode:
     // the filtered (A,B) pair as a position on the cycle 00 -> 10 -> 11 -> 01 (index 0..3), the
     // move is the index difference mod 4 (1: +1, 3: -1, 2: illegal, 0: none).
-    reg                    f_init, f_rst_p, f_en_p, f_clear_p, f_glitch_p;
+    reg                    f_init, f_rst_p, f_en_p, f_clear_p, f_glitch_p, f_lnx_p;
     reg [1:0]              f_move_p;
     reg signed [W_RAW-1:0] f_raw_p, f_ref;
     reg [W_ERRCNT-1:0]     f_err_p;
@@ -246,6 +249,7 @@ module quad_decoder (
         f_fe_p     <= fe_f_d;
         f_primed_p <= primed_q;
         f_alarm_p  <= lerr_alarm_q;
+        f_lnx_p    <= o_lerr_nx;
         f_ms_p     <= i_min_spacing;
         // the call is an edge closer than min_spacing (of the previous call)
         f_ovs_exp_p <= f_edge && (f_dist < {1'b0, f_ms_p});
@@ -307,6 +311,7 @@ module quad_decoder (
             assert(lerr_alarm_q == (lerr_q || (f_alarm_p && !(f_clear_p && !f_fe_p))));
         end
         if (f_init) begin
+            assert(lerr_q == f_lnx_p);   // the look-ahead is the next call's lerr (resets too)
             assert(illegal_st_q || !illegal_q);
             assert(ovs_st_q || !ovs_q);
             assert(lerr_alarm_q || !lerr_q);

@@ -39,6 +39,13 @@ module rephase (
     input  wire               i_sw_valid,  // its input_filter valid flag
     input  wire               i_rehome,    // register pulse: back to stage 1
     input  wire               i_unhome,    // laser error level: back to stage 1, no homing
+    // look-ahead: i_unhome and i_rehome of the next call, in every call (reset calls included);
+    // the decoder's o_lerr_nx and the top's presented rehome. The block reads registered copies
+    // (un_q, re_q) in place of i_unhome / i_rehome, so the decoder's register does not drive
+    // the enables here across the chip (DESIGN 4.5); i_unhome / i_rehome are then used only by
+    // the formal properties
+    input  wire               i_unhome_nx,
+    input  wire               i_rehome_nx,
     input  wire [12:0]        i_period,    // P (8..4096, multiple of 8)
     // P - 1 and P - 2 as 14-bit signed values ({1'b0, P} - 1, - 2), formed by the caller from the
     // same period value (the top: in its register stage, beside the period register), so no
@@ -97,6 +104,7 @@ module rephase (
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
     reg                    sp_q, sn_q;         // s_pos / s_neg of this call, from i_pstep_nx
+    reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
 
     // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
     // The low half adds s (a W_LO-bit chain); the high half takes hi + 1 / hi - 1 (chains of the
@@ -129,10 +137,10 @@ module rephase (
     wire                    pz       = i_pstep == 2'sd0;
     wire                    pfwd     = !i_pstep[1];     // pstep > 0 when pstep != 0
     wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
-    wire                    leave    = (i_unhome || i_rehome) && stage_q != 2'd1;
+    wire                    leave    = (un_q || re_q) && stage_q != 2'd1;
     wire                    in2      = stage_q == 2'd2 && !leave;
     wire                    in3      = stage_q == 2'd3 && !leave;
-    wire                    cap      = stage_q == 2'd1 && rise && !i_unhome;
+    wire                    cap      = stage_q == 2'd1 && rise && !un_q;
     // step in the homing direction: s_pos = pstep != 0 && (pstep > 0) == fwd, s_neg likewise,
     // registered in the previous call from i_pstep_nx and the next fwd (sp_q, sn_q)
     wire                    s_pos    = sp_q;
@@ -256,7 +264,7 @@ module rephase (
     wire                    dq_m   = stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
                                                                : (!fr && !t_q[W_BR-1]));
     (* keep *) wire lv;
-    assign lv = i_unhome || i_rehome;
+    assign lv = un_q || re_q;
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
     (* keep *) wire signed [1:0]       ls_cp, ls_cm;
     assign lag_cp = dq_p ? lag_p1 : lag_q;
@@ -471,6 +479,8 @@ module rephase (
         // reset call)
         sp_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == (i_rst || fwd_d));
         sn_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d));
+        un_q <= i_unhome_nx;
+        re_q <= i_rehome_nx;
     end
 
     assign o_ostep   = ostep_q;
@@ -501,6 +511,7 @@ module rephase (
     reg [W_P-1:0]     f_per;                 // P (no initial value: any, then kept)
     reg               f_pnz;                 // the previous call had a real count
     reg signed [1:0]  f_pnx;                 // i_pstep_nx of the previous call
+    reg               f_unx, f_rnx;          // i_unhome_nx / i_rehome_nx of the previous call
     reg               f_swp, f_sws;
     reg [1:0]         f_stage;
     reg               f_dlast, f_dir;        // direction of the last count, homing direction
@@ -590,6 +601,8 @@ module rephase (
     always @(posedge i_clk) begin
         f_per <= f_per;
         f_pnx <= i_pstep_nx;
+        f_unx <= i_unhome_nx;
+        f_rnx <= i_rehome_nx;
         if (i_rst) begin
             f_init  <= 1'b1;
             f_pnz   <= 1'b0;
@@ -663,11 +676,14 @@ module rephase (
         assume(i_period_m1 == $signed({1'b0, f_per}) - 14'sd1 && i_period_m2 == $signed({1'b0, f_per}) - 14'sd2);
         assume(f_per >= 13'd8 && f_per <= 13'd4096 && f_per[2:0] == 3'b000);
         assume(i_pstep != -2'sd2);
-        assume(!f_init || i_pstep == f_pnx);                  // the look-ahead input is exact
+        assume(!f_init || i_pstep == f_pnx);                  // the look-ahead inputs are exact
+        assume(!f_init || (i_unhome == f_unx && i_rehome == f_rnx));
         assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart
         assume(i_mark_len >= f_p4 && i_mark_len <= f_per);
 
         if (f_init) begin
+            // the registered level copies are this call's unhome / rehome
+            assert(un_q == i_unhome && re_q == i_rehome);
             // the registered count decode is that of this call's pstep against fwd
             assert(s_pos == (!pz && pfwd == fwd_q) && s_neg == (!pz && pfwd != fwd_q));
             // the paced stream, the stage machine and its inputs follow the text

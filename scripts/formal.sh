@@ -133,6 +133,7 @@ MUTATIONS=(
   "qd_ovs_spacing|quad_decoder.v|quad_decoder|s/close_inc = sp2_q < {1'b0, i_min_spacing};/close_inc = sp2_q <= {1'b0, i_min_spacing};/"
   "qd_lerr_alarm|quad_decoder.v|quad_decoder|s/if (lerr_d) lerr_alarm_d = 1'b1;/if (lerr_q) lerr_alarm_d = 1'b1;/"
   "qd_lerr_unprimed|quad_decoder.v|quad_decoder|s/lerr_d   = primed_q \&\& fe_f_d;/lerr_d   = fe_f_d;/"
+  "qd_lerr_nx_rst|quad_decoder.v|quad_decoder|s/assign o_lerr_nx    = !i_rst \&\& lerr_d;/assign o_lerr_nx    = lerr_d;/"
   "qd_pins_latency|input_filter.v|quad_decoder_pins|s/wire             rdy_inc = c2_q >= {1'b0, i_n};/wire             rdy_inc = c2_q > {1'b0, i_n};/"
   "op_gap|output_pacer.v|output_pacer|s/tm_d = emit_nz ? i_pace_m$/tm_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/"
   "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"

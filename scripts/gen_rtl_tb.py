@@ -126,6 +126,7 @@ BLOCKS = [
             OUT("lerr_alarm", 1),
             OUT("glitch_st", 1),
         ],
+        unused=[OUT("lerr_nx", 1)],   # look-ahead for rephase (proven: the next call's lerr)
     ),
     dict(
         block="pulse_multiplier",
@@ -238,11 +239,11 @@ BLOCKS = [
         ],
         # P - 1 and P - 2 of the period column (the top forms them in its register stage)
         unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2),
-                IN("pstep_nx", 2, S)],
+                IN("pstep_nx", 2, S), IN("unhome_nx", 1), IN("rehome_nx", 1)],
         extra=dict(
             decls="""\
-    // the look-ahead input pstep_nx is the pstep of the next call (DESIGN 4.5): the next row's
-    // pstep (row 0's during reset, 0 after the last row)
+    // the look-ahead inputs pstep_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
+    // 4.5): the next row's (row 0's during reset, 0 after the last row)
     reg [ROW_BITS-1:0] row_nx;
 """,
             apply="""\
@@ -250,10 +251,14 @@ BLOCKS = [
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
             i_pstep_nx = @next.pstep@;
+            i_unhome_nx = @next.unhome@;
+            i_rehome_nx = @next.rehome@;
 """,
             idle="""\
             row_nx = vec[0];
             i_pstep_nx = @next.pstep@;
+            i_unhome_nx = @next.unhome@;
+            i_rehome_nx = @next.rehome@;
 """),
     ),
     dict(

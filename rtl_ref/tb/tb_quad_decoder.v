@@ -62,6 +62,7 @@ module tb_quad_decoder;
     wire o_lerr;
     wire o_lerr_alarm;
     wire o_glitch_st;
+    wire o_lerr_nx;   // not in the vectors
 
     quad_decoder dut (
         .i_clk(i_clk),
@@ -81,7 +82,8 @@ module tb_quad_decoder;
         .o_ovs_st(o_ovs_st),
         .o_lerr(o_lerr),
         .o_lerr_alarm(o_lerr_alarm),
-        .o_glitch_st(o_glitch_st)
+        .o_glitch_st(o_glitch_st),
+        .o_lerr_nx(o_lerr_nx)
     );
 
     `include "tb_common.vh"

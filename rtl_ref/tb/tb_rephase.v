@@ -57,6 +57,8 @@ module tb_rephase;
     reg  [13:0] i_period_m1;   // idle (not in the vectors)
     reg  [13:0] i_period_m2;   // idle (not in the vectors)
     reg  [1:0] i_pstep_nx;   // idle (not in the vectors)
+    reg  i_unhome_nx;   // idle (not in the vectors)
+    reg  i_rehome_nx;   // idle (not in the vectors)
     wire [1:0] o_ostep;
     wire [37:0] o_out_pos;
     wire o_mark;
@@ -82,6 +84,8 @@ module tb_rephase;
         .i_period_m1(i_period_m1),
         .i_period_m2(i_period_m2),
         .i_pstep_nx(i_pstep_nx),
+        .i_unhome_nx(i_unhome_nx),
+        .i_rehome_nx(i_rehome_nx),
         .o_ostep(o_ostep),
         .o_out_pos(o_out_pos),
         .o_mark(o_mark),
@@ -97,8 +101,8 @@ module tb_rephase;
 
     `include "tb_common.vh"
 
-    // the look-ahead input pstep_nx is the pstep of the next call (DESIGN 4.5): the next row's
-    // pstep (row 0's during reset, 0 after the last row)
+    // the look-ahead inputs pstep_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
+    // 4.5): the next row's (row 0's during reset, 0 after the last row)
     reg [ROW_BITS-1:0] row_nx;
 
     task apply_inputs;
@@ -114,6 +118,8 @@ module tb_rephase;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
             i_pstep_nx = row_nx[317:316];
+            i_unhome_nx = row_nx[300:300];
+            i_rehome_nx = row_nx[304:304];
         end
     endtask
 
@@ -129,8 +135,12 @@ module tb_rephase;
             i_period_m1 = 14'd16383;
             i_period_m2 = 14'd16382;
             i_pstep_nx = 2'd0;
+            i_unhome_nx = 1'd0;
+            i_rehome_nx = 1'd0;
             row_nx = vec[0];
             i_pstep_nx = row_nx[317:316];
+            i_unhome_nx = row_nx[300:300];
+            i_rehome_nx = row_nx[304:304];
         end
     endtask
 
