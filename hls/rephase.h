@@ -26,7 +26,7 @@
 // counts >= 2 calls apart), so the output never moves more than one count per call.
 //
 // Widths: positions 38 signed (taps: paced, out_pos, adj, A, B, C, Z; the mark counter u),
-// d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 15 signed, stage 2.
+// d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 2 signed (-1..1), stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 // Block-level preconditions (axis_core guarantees both): P is constant while the block runs (a
 // change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1,
@@ -45,7 +45,7 @@ struct rephase_cfg {
     static constexpr int W_P = axis_widths::W_P;       // period and mark_len registers, L
     static constexpr int W_TR = axis_widths::W_P + 1;  // travel beyond A, -1..P, signed
     static constexpr int W_BR = axis_widths::W_P + 1;  // Bresenham t, v, k in [-P, P), signed
-    static constexpr int W_LAG = axis_widths::W_P + 2;  // adj_tgt - adj, signed
+    static constexpr int W_LAG = 2;  // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
     using ph_t = uint<W_PH>;
     using p_t = uint<W_P>;
     using tr_t = sint<W_TR>;

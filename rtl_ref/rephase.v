@@ -14,15 +14,14 @@
 //      stage 2, A = paced', d from w (P - w forward, w -/+ P/2 backward); stage 2: (num, t, v)
 //      step, tr < 0 -> stage 1, tr == P (flagged a call ahead: at_last) -> stage 3, B = bs (A +
 //      dir*P, formed in the calls before), C = B + dir*mark_len, Z = B + dir*P/4.
-//   5. ostep = pstep, or else sgn(lag) (lag = adj_tgt - adj: the pending extra counts; its sign
-//      is a register, lsgn).
+//   5. ostep = pstep, or else sgn(lag) (lag = adj_tgt - adj: the pending extra count, 2 bits).
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
 // Every path is one carry chain of at most 38 bits from registers only (a + dir*P, adj + lsgn,
 // the mark counter u + s, the points at homing), or of at most 19 bits (the low half of a
 // position counter stepped by pstep / ostep: pos_step) or 14 bits followed by a few LUT levels;
 // no 38-bit compare, no adder in series with another, and the late pstep enters no 38-bit chain.
-// Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 15 signed, stage 2.
+// Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 2 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
 `default_nettype none
@@ -73,7 +72,7 @@ module rephase (
     localparam integer W_PH  = 12;        // d, num, w: 0..P-1
     localparam integer W_TR  = W_P + 1;   // travel beyond A, signed
     localparam integer W_BR  = W_P + 1;   // Bresenham t, v, k, signed
-    localparam integer W_LAG = W_P + 2;   // adj_tgt - adj, signed
+    localparam integer W_LAG = 2;         // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
     localparam integer W_X   = W_P + 1;   // w moves and wraps
 
     // ---- registers ---------------------------------------------------------------------------
@@ -94,7 +93,6 @@ module rephase (
     reg [W_PH-1:0]         num_q, num_d;
     reg signed [W_BR-1:0]  t_q, t_d, v_q, v_d;
     reg signed [W_LAG-1:0] lag_q, lag_d;
-    reg signed [1:0]       lsgn_q, lsgn_d;     // sgn(lag): the extra count of an idle call
     reg [W_PH-1:0]         w_q, w_d;
     reg                    t1_q, z0_q, w_init_q;  // w == P - 1, w == 0
     reg signed [W_POS-1:0] u_q, u_d;
@@ -158,7 +156,9 @@ module rephase (
     // 3. w = (ph_out + P/8) mod P moves by ostep (-1..1): candidates from registers, the wrap
     //    taken from the registered flags t1 (w == P - 1) and z0 (w == 0); the flags of the next
     //    value come from equalities of w with P - 2, P, 1 and all ones (beside the candidates)
-    wire signed [1:0]     ostep_n = pz ? lsgn_q : i_pstep;
+    // sgn(lag) of the 2-bit lag: -2 (a wrap, only with a broken precondition) has the sign -1
+    wire signed [1:0]     lsgn    = {lag_q[1], lag_q[1] | lag_q[0]};
+    wire signed [1:0]     ostep_n = pz ? lsgn : i_pstep;
     wire                  eup  = ostep_n == 2'sd1;
     wire                  edn  = ostep_n == -2'sd1;
     wire [W_PH-1:0]       w0   = w_init_q ? w_q : p8;                          // ph = 0 after reset
@@ -237,25 +237,15 @@ module rephase (
     wire        in_rng = s_pos ? (u_m1 || (u_hz && u_lt)) :
                          s_neg ? (u_hz && u_ge1 && u_le1) : (u_hz && u_le);
 
-    // 5. the output step (ostep_n above)
-    wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn_q[1]}}, lsgn_q};
-    // lag' is one of lag - sgn(lag) (idle call), lag + 1, lag - 1 (an extra count with pstep = +1 /
-    // -1) or lag: the three sums are formed from registers and selected. Its sign (lsgn' = sgn(lag'))
-    // needs no compare after the adders: lsgn = sgn(lag) is a register, and sgn(lag') follows from
-    // it and the equalities lag == 1 / lag == -1 (lag - sgn(lag) is 0 iff |lag| <= 1, else of the
-    // sign of lag; lag + 1 is 0 iff lag == -1, else negative iff lag is; likewise lag - 1), so the
-    // late pstep only drives the last select: for each value of pstep the extra-count test (dq_nz
-    // with that pstep) is a function of registers, so lag' and lsgn' are formed per pstep value
-    // from registers (kept as nets: the mapper cannot pull pstep back into the trees) and pstep
-    // selects among the three.
-    wire signed [W_LAG-1:0] lag_ml = lag_q - {{(W_LAG-2){lsgn_q[1]}}, lsgn_q};
-    wire signed [W_LAG-1:0] lag_p1 = lag_q + 1;
-    wire signed [W_LAG-1:0] lag_m1 = lag_q - 1;
-    wire                    lag_e1 = lag_q == {{(W_LAG-1){1'b0}}, 1'b1};     // lag == 1
-    wire                    lag_em = lag_q == {W_LAG{1'b1}};                 // lag == -1
-    wire signed [1:0]       ls_ml  = (lag_e1 || lag_em) ? 2'sd0 : lsgn_q;
-    wire signed [1:0]       ls_p1  = lag_em ? 2'sd0 : lsgn_q[1] ? -2'sd1 : 2'sd1;
-    wire signed [1:0]       ls_m1  = lag_e1 ? 2'sd0 : (lsgn_q == 2'sd1) ? 2'sd1 : -2'sd1;
+    // 5. the output step (ostep_n above). lag' is lag - sgn(lag) (idle call), lag + 1 / lag - 1
+    // (an extra count with pstep = +1 / -1) or lag, in 2-bit arithmetic (-1..1 under the block
+    // precondition; a broken precondition wraps, as in hls); for each value of pstep the
+    // extra-count test (dq_nz with that pstep) is a function of registers, so the late pstep
+    // only drives the last select
+    wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn[1]}}, lsgn};
+    wire signed [W_LAG-1:0] lag_ml = lag_q - lsgn;
+    wire signed [W_LAG-1:0] lag_p1 = lag_q + 2'sd1;
+    wire signed [W_LAG-1:0] lag_m1 = lag_q - 2'sd1;
     // the extra-count test per pstep value without the leave term: a leave call (stage 2 and
     // unhome or rehome) adds no extra count, which the last select applies (lv), so the late
     // unhome level (the decoder's register, across the chip) meets lag' only in the last LUT
@@ -266,13 +256,9 @@ module rephase (
     (* keep *) wire lv;
     assign lv = un_q || re_q;
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
-    (* keep *) wire signed [1:0]       ls_cp, ls_cm;
     assign lag_cp = dq_p ? lag_p1 : lag_q;
     assign lag_cm = dq_m ? lag_m1 : lag_q;
-    assign ls_cp  = dq_p ? ls_p1 : lsgn_q;
-    assign ls_cm  = dq_m ? ls_m1 : lsgn_q;
     wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : lv ? lag_q : i_pstep[1] ? lag_cm : lag_cp;
-    wire signed [1:0]       lsgn_n = pz ? ls_ml : lv ? lsgn_q : i_pstep[1] ? ls_cm : ls_cp;
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
@@ -383,7 +369,6 @@ module rephase (
         out_pos_d = pos_step(out_pos_q, ostep_n);
         adj_d     = pz ? adj_q + lsgn_x : adj_q;
         lag_d     = lag_n;
-        lsgn_d    = lsgn_n;
 
         // 6. reference mark
         // (a plain 38-bit up/down counter: its step s_pos / s_neg is a register, so the
@@ -424,7 +409,6 @@ module rephase (
             t_q        <= {W_BR{1'b0}};
             v_q        <= {W_BR{1'b0}};
             lag_q      <= {W_LAG{1'b0}};
-            lsgn_q     <= 2'sd0;
             w_q        <= {W_PH{1'b0}};
             t1_q       <= 1'b0;
             z0_q       <= 1'b0;
@@ -461,7 +445,6 @@ module rephase (
             t_q        <= t_nx;
             v_q        <= v_d;
             lag_q      <= lag_d;
-            lsgn_q     <= lsgn_d;
             w_q        <= w_d;
             t1_q       <= t1_n;
             z0_q       <= z0_n;
@@ -696,7 +679,6 @@ module rephase (
             assert(out_pos_q == paced_q + adj_q);
             assert(ostep_q != -2'sd2);
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
-            assert(lsgn_q == lag_q[1:0]);
             // the per-pstep forms of the extra-count test are the test itself
             if (i_pstep == 2'sd1)  assert((dq_p && !lv) == dq_nz);
             if (i_pstep == -2'sd1) assert((dq_m && !lv) == dq_nz);
