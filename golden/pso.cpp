@@ -17,7 +17,7 @@ int sgn(int64_t v) { return (v > 0) - (v < 0); }
 
 }  // namespace
 
-pso::pso() : ram_(kArrDepth, 0) { reset(); }
+pso::pso() : ram_(kArrDepth, 0), ram_m2_(kArrDepth, 0) { reset(); }
 
 uint64_t pso::inc_max() { return static_cast<uint64_t>(floorl(kPulseHzMax * kQ / kClockHz)); }
 
@@ -65,7 +65,7 @@ void pso::reset_run() {
         est_hist_[k] = 0;
         inwin_hist_[k] = false;
     }
-    fd_prev_ = 0;
+    fd_m1_ = fd_m2_ = 0;
     sp_pending_ = false;
     ps_count_ = 0;
     idx_ = 0;
@@ -90,9 +90,11 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
     // register stage: this call works with the values presented in the previous call
     const pso_regs r = force_;
     force_ = presented;
-    // the array entry of the next fire as the RAM stands after the previous call (the decision
-    // of this call uses it; a write of this call acts from the next decision)
-    const uint64_t entry_before = ram_[static_cast<size_t>(idx_)];
+    // the array entry of the next fire as the RAM stood after the call before the previous one
+    // (the fire of this call uses it; a write of the previous call or of this one acts from a
+    // later fire)
+    const uint64_t entry_m2 = ram_m2_[static_cast<size_t>(idx_)];
+    ram_m2_ = ram_;  // the RAM after the previous call: "after call n-2" of the next call
     if (r.arr_we) ram_[static_cast<size_t>(r.arr_addr) % kArrDepth] = r.arr_data;
     out o;
     if (!config_ok(r)) {
@@ -115,14 +117,12 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
             arr_wrap_ = r.arr_wrap;
         }
         const int64_t t = t_;
-        // threshold of this call's decision: fire_dist of the previous call, or the entry before
-        // this call's write; thr_now: the threshold of the next fire as seen in this call (the
-        // spacing sample)
-        const long double thr = arr_en_ ? counts(entry_before) : counts(fd_prev_);
-        const long double thr_now = threshold(r);
-        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 3)
+        // threshold of this call's fire: fire_dist of the call before the previous one, or the
+        // entry as the RAM stood after it
+        const long double thr = arr_en_ ? counts(entry_m2) : counts(fd_m2_);
+        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 4)
 
-        // ---- firing decision on the estimate of call t - 3 ----
+        // ---- fire on the estimate of call t - 4 ----
         const bool was_done = done_;
         o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr;
         if (o.fire) {
@@ -155,6 +155,8 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
             if (ovl_cnt_ < 65535) ++ovl_cnt_;
         }
         if (o.freq_err) freq_st_ = true;
+        // the threshold of the next fire as seen in this call, after its fire (spacing sample)
+        const long double thr_now = threshold(r);
 
         // ---- this call's motion ----
         long double est;
@@ -209,7 +211,8 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
         }
         est_hist_[0] = est;
         inwin_hist_[0] = inwin;
-        fd_prev_ = r.fire_dist;
+        fd_m2_ = fd_m1_;
+        fd_m1_ = r.fire_dist;
         ++t_;
     }
     o.idx = idx_;

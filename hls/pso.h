@@ -2,7 +2,7 @@
 // firing comparator with remainder carry, pulse output of programmable width, a position window,
 // an array of firing distances and the part-speed pulse generator (24 MHz limit).
 //
-// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the four stages); in short:
+// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the five stages); in short:
 //
 //   stage A  (this call's inputs)  tracking window: per-axis signed travel D since the window
 //                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
@@ -11,13 +11,16 @@
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
-//   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (registered BRAM read).
-//   stage B1 (R of the last call)  increments x (into the remainder) and y (estimate step, open
-//                                  chord included), and x - thr, y - thr for both candidate
-//                                  thresholds (the next fire's, and the one after it).
-//   stage B2 (B1 of the last call) fire when rem + (y - thr) >= 0, rem' = rem + x (- thr): one
-//                                  add of the remainder per result; the candidate is picked by
-//                                  the registered fire of the last call. Pulse timer, flags.
+//   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (the BRAM's address
+//                                  register is A's s), increments x (into the remainder) and y
+//                                  (estimate step, open chord included).
+//   stage B1 (R of the last call)  x - thr, y - thr for both candidate thresholds (the next
+//                                  fire's, and the one after it).
+//   stage B2 (B1 of the last call) decide: fire when rem + (y - thr) >= 0, rem' = rem + x (- thr):
+//                                  one add of the remainder per result; the candidate is picked
+//                                  by the registered decision of the last call.
+//   stage B3 (B2 of the last call) apply the decision: fire / emit outputs, pulse timer, flags,
+//                                  counters, dist = rem + (y - x), index outputs.
 //
 // With K = 1 every step closes its window and the increment is the per-call magnitude
 // 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
@@ -27,8 +30,8 @@
 // remainder 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
 // (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
 // stage; the configuration check is formed on the presented values and registered).
-// Latency: a step at call t can fire at call t+3 (FIRE_LAT; the fire/emit/pulse
-// outputs of call t+3); rate_over is an output of the command's call; spacing_err of run call
+// Latency: a step at call t can fire at call t+4 (FIRE_LAT; the fire/emit/pulse
+// outputs of call t+4); rate_over is an output of the command's call; spacing_err of run call
 // 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
@@ -67,7 +70,7 @@ struct pso_cfg {
     static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
     static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
-    static constexpr int FIRE_LAT = 3;                               // calls from a step to its fire
+    static constexpr int FIRE_LAT = 4;                               // calls from a step to its fire
     static constexpr int REG_LAT = 1;                                // calls from presenting a register to its use
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
@@ -197,7 +200,7 @@ class pso {
 public:
     using cfg = pso_cfg;
     struct out_t {
-        bool fire = false;          // the tracked distance crossed the threshold (stage B)
+        bool fire = false;          // the tracked distance crossed the threshold (stage B3)
         bool emit = false;          // fire inside the window: a pulse starts
         bool pulse = false;         // output level (pulse_w calls from the emit)
         bool in_win = false;        // window condition used by this call's fire
@@ -275,42 +278,17 @@ public:
             arr_wrap_q_ = r.arr_wrap;
             run_q_ = true;
         }
-        // ---- stage B1 (from the R registers): increments and candidate differences ----
-        // thr0: the threshold of the next fire if this call's B2 does not fire; thr1 if it does
-        // (array: the entry after idx). The RAM is read after this call's write.
+        // ---- stage B1 thresholds (read before B2 moves the index) ----
+        // thr0: the threshold of the next decision if this call's B2 does not fire; thr1 if it
+        // does (array: the entry after idx). The RAM is read after this call's write.
         cfg::len_t nx = idx_ + 1;
         if (nx >= arr_len_q_) nx = 0;
         const cfg::dist_t thr0 = arr_en_q_ ? arr_[idx_.to_uint()] : r.fire_dist;
         const cfg::dist_t thr1 = arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
-        const uint64_t pr = r_rev_ ? part_.to_uint64() : 0;
-        const uint64_t one = r_pulse_ ? cfg::ONE : 0;
-        const cfg::incr_t y = pr + r_chord_.to_uint64() + one;  // three-input sum (carry-save + one add)
-        const cfg::incr_t x = r_kclose_ ? y : cfg::incr_t(pr + one);
-        const int64_t t0 = static_cast<int64_t>(thr0.to_uint64());
-        const int64_t t1 = static_cast<int64_t>(thr1.to_uint64());
-        const int64_t x_v = static_cast<int64_t>(x.to_uint64());
-        const int64_t y_v = static_cast<int64_t>(y.to_uint64());
-        const bool done_before = done_;
 
-        // ---- stage B2 (from the B1 registers): fire, remainder, array index, pulse ----
-        const int64_t rem_v = rem_.to_int64();
-        const int64_t ym = (b_fire1_ ? b_ym1_ : b_ym0_).to_int64();
-        const int64_t xm = (b_fire1_ ? b_xm1_ : b_xm0_).to_int64();
-        const int64_t v_m = rem_v + ym;  // value - thr
-        const bool fire = b_v_ && !done_ && v_m >= 0;
-        if (!done_) {
-            rem_ = fire ? rem_v + xm : rem_v + static_cast<int64_t>(b_x_.to_uint64());
-            dist_ = fire ? v_m : rem_v + static_cast<int64_t>(b_y_.to_uint64());
-        }
-        if (fire && arr_en_q_) {
-            if (idx_ + 1 >= arr_len_q_) {
-                if (arr_wrap_q_) idx_ = 0;
-                else done_ = true;
-            } else {
-                idx_ = idx_ + 1;
-            }
-        }
-        const bool emit = fire && b_inwin_;
+        // ---- stage B3 (from the B2 registers): apply the decision of the last call ----
+        const bool fire = c_fire_;
+        const bool emit = fire && c_inwin_;
         const bool overlap = emit && timer_ != 0;
         const bool freq_err = emit && r.min_period != 0 && since_ + 1 < r.min_period;
         if (emit) {
@@ -326,25 +304,53 @@ public:
             if (ovl_cnt_ != cfg::OVL_MAX) ovl_cnt_ = ovl_cnt_ + 1;
         }
         if (freq_err) freq_st_ = true;
-        const bool in_win_used = b_inwin_;
+        const bool in_win_used = c_inwin_;
+        // rem_ is the remainder after the last decision, c_dy_ its y - x (the chord it left open)
+        if (c_live_) dist_ = rem_ + cfg::rem_t(c_dy_.to_uint64());
+        idx_o_ = idx_;
+        done_o_ = done_;
 
-        // ---- B1 registers ----
-        if (!done_before) part_ = r_kclose_ ? cfg::chord_t(0) : r_chord_;
-        b_x_ = x;
-        b_y_ = y;
+        // ---- stage B2 (from the B1 registers): decide, remainder, array index ----
+        const int64_t rem_v = rem_.to_int64();
+        const int64_t ym = (b_fire1_ ? b_ym1_ : b_ym0_).to_int64();
+        const int64_t xm = (b_fire1_ ? b_xm1_ : b_xm0_).to_int64();
+        const bool dec = b_v_ && !done_ && rem_v + ym >= 0;  // value - thr >= 0
+        c_live_ = !done_;
+        c_fire_ = dec;
+        c_inwin_ = b_inwin_;
+        c_dy_ = b_dy_;
+        if (!done_) rem_ = dec ? rem_v + xm : rem_v + static_cast<int64_t>(b_x_.to_uint64());
+        if (dec && arr_en_q_) {
+            if (idx_ + 1 >= arr_len_q_) {
+                if (arr_wrap_q_) idx_ = 0;
+                else done_ = true;
+            } else {
+                idx_ = idx_ + 1;
+            }
+        }
+        b_fire1_ = dec;
+
+        // ---- stage B1 (from the R registers): candidate differences ----
+        const int64_t x_v = static_cast<int64_t>(r_x_.to_uint64());
+        const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
+        const int64_t t0 = static_cast<int64_t>(thr0.to_uint64());
+        const int64_t t1 = static_cast<int64_t>(thr1.to_uint64());
+        b_x_ = r_x_;
+        b_dy_ = part_;  // y - x of R's increments
         b_xm0_ = x_v - t0;
         b_ym0_ = y_v - t0;
         b_xm1_ = x_v - t1;
         b_ym1_ = y_v - t1;
         b_inwin_ = r_inwin_;
         b_v_ = r_v_;
-        b_fire1_ = fire;
 
-        // ---- stage R: chord ROM read (registered BRAM read at the address stage A wrote) ----
-        r_chord_ = pso_chord(a_s_);
-        r_rev_ = a_rev_;
-        r_kclose_ = a_kclose_;
-        r_pulse_ = a_pulse_;
+        // ---- stage R: chord ROM read at the address stage A wrote, increments ----
+        const uint64_t chord = pso_chord(a_s_).to_uint64();
+        const uint64_t pr = a_rev_ ? part_.to_uint64() : 0;
+        const uint64_t one = a_pulse_ ? cfg::ONE : 0;
+        r_y_ = pr + chord + one;  // (a generator pulse comes with chord 0 and pr 0)
+        r_x_ = a_kclose_ ? r_y_ : cfg::incr_t(pr + one);
+        part_ = a_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
         r_inwin_ = a_inwin_;
         r_v_ = a_v_;
 
@@ -420,7 +426,6 @@ public:
         o.fire = fire;
         o.emit = emit;
         o.in_win = in_win_used;
-        o.dist = dist_;
         o.overlap = overlap;
         o.rate_over = rate_over;
         o.spacing_err = spacing_err;
@@ -439,14 +444,13 @@ private:
         a_pulse_ = false;
         a_inwin_ = false;
         a_v_ = false;
-        r_chord_ = 0;
-        r_rev_ = false;
-        r_kclose_ = false;
-        r_pulse_ = false;
+        r_x_ = 0;
+        r_y_ = 0;
         r_inwin_ = false;
         r_v_ = false;
+        part_ = 0;
         b_x_ = 0;
-        b_y_ = 0;
+        b_dy_ = 0;
         b_xm0_ = 0;
         b_ym0_ = 0;
         b_xm1_ = 0;
@@ -455,10 +459,15 @@ private:
         b_v_ = false;
         b_fire1_ = false;
         rem_ = 0;
-        dist_ = 0;
-        part_ = 0;
         idx_ = 0;
         done_ = false;
+        c_fire_ = false;
+        c_inwin_ = false;
+        c_live_ = false;
+        c_dy_ = 0;
+        dist_ = 0;
+        idx_o_ = 0;
+        done_o_ = false;
         timer_ = 0;
         since_ = cfg::GAP_MAX;
         ph_ = 0;
@@ -480,8 +489,9 @@ private:
 
     void fill_status(out_t& o) const {
         o.pulse = timer_ != 0;
-        o.idx = idx_;
-        o.arr_done = done_;
+        o.dist = dist_;
+        o.idx = idx_o_;
+        o.arr_done = done_o_;
         o.fire_cnt = fire_cnt_;
         o.overlap_cnt = ovl_cnt_;
         o.overlap_st = overlap_st_;
@@ -513,17 +523,25 @@ private:
     cfg::sphi_t sp_hi_;
     cfg::gap_t sp_lo_;
     // stage R
-    cfg::chord_t r_chord_;
-    bool r_rev_, r_kclose_, r_pulse_, r_inwin_, r_v_;
+    cfg::incr_t r_x_, r_y_;
+    cfg::chord_t part_;  // chord of the open window (y - x of R's increments)
+    bool r_inwin_, r_v_;
     // stage B1
-    cfg::incr_t b_x_, b_y_;
+    cfg::incr_t b_x_;
+    cfg::chord_t b_dy_;
     cfg::rem_t b_xm0_, b_ym0_, b_xm1_, b_ym1_;
-    bool b_inwin_, b_v_, b_fire1_;
-    // stage B2
-    cfg::rem_t rem_, dist_;
-    cfg::chord_t part_;
+    bool b_inwin_, b_v_;
+    // stage B2 (the decision and the state it moves)
+    bool b_fire1_;  // decision of the last call (picks the candidates)
+    cfg::rem_t rem_;
     cfg::len_t idx_;
     bool done_;
+    bool c_fire_, c_inwin_, c_live_;
+    cfg::chord_t c_dy_;
+    // stage B3 (outputs)
+    cfg::rem_t dist_;
+    cfg::len_t idx_o_;
+    bool done_o_;
     cfg::pw_t timer_;
     cfg::gap_t since_;
     cfg::fcnt_t fire_cnt_;

@@ -19,19 +19,25 @@
 //
 // Stages (registers before the edge; §2.4):
 //   A   this call's steps: tracking window (travel D per axis, reversal / |D| >= K closes), ROM
-//       address s = sum D^2 -> a_s; part-speed phase accumulator (clamped to INC_MAX), pulse
-//       count; window condition -> a_inwin; minimum-spacing shift-add (sample every 17 calls).
+//       address s = sum D^2 (the address register of the ROM's block RAM: hls a_s); part-speed
+//       phase accumulator (clamped to INC_MAX), pulse count; window operands; minimum-spacing
+//       shift-add (sample every 17 calls).
 //   R   chord ROM (769 x 37 bits, filled at elaboration by the same digit-by-digit square root
-//       as hls/pso.h) read at a_s: its output register is r_chord.
-//   B1  y = (r_rev ? part : 0) + chord (+1.0 for a generator pulse), x = r_kclose ? y : ..., and
-//       x - thr, y - thr for thr0 (the next fire's threshold if this call's B2 does not fire)
-//       and thr1 (if it does): fire_dist, or the array entries idx and next(idx).
-//   B2  fire = b_v && !done && rem + (y - thr) >= 0; rem' = rem + x (- thr). The remainder is
-//       two registers (rem1: the last call fired, rem0: it did not) picked by the registered fire
-//       of the last call, which also picks the candidate differences: each case is one add of two
-//       registers, the pick comes after the add, and the remainder's next values do not depend on
-//       this call's fire. Array index, pulse timer, overlap / frequency flags.
-// A step in call t fires in call t + 3.
+//       as hls/pso.h): its data output feeds y = (a_rev ? part : 0) + chord (+1.0 for a
+//       generator pulse), x = a_kclose ? y : ...; part' = a_kclose ? 0 : chord; the window
+//       compares.
+//   B1  x - thr, y - thr for thr0 (the next decision's threshold if this call's B2 does not
+//       fire) and thr1 (if it does): fire_dist, or the array entries idx and next(idx).
+//   B2  decision dec = b_v && !done && rem + (y - thr) >= 0; rem' = rem + x (- thr). The
+//       remainder is two registers (rem1: the last call decided a fire, rem0: it did not) picked
+//       by the registered decision of the last call, which also picks the candidate
+//       differences: each case is one add of two registers, the pick comes after the add, and
+//       the remainder's next values do not depend on this call's decision. Array index. The
+//       decision goes into registers only (b_fire1, c_fire, the index move).
+//   B3  applies the decision of the last call (c_fire): fire / emit, pulse timer, overlap /
+//       frequency flags, counters, dist = rem + c_dy (rem after that decision, c_dy its y - x),
+//       the index and done outputs.
+// A step in call t fires in call t + 4.
 //
 // Array RAM (64 x 56): four copies (one read port each, the write port shared), read in call
 // t - 2 at idx, next(idx), next^2(idx), next^3(idx) of that call. Threshold prefetch: in call
@@ -198,32 +204,42 @@ module pso (
     reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
     reg                     a_wen_q;      // window of this call: enable, position, edges (the
     reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R)
-    reg [W_S-1:0]           a_s_q;
+    reg [W_CHORD-1:0]       rom_q;        // ROM data at the address s of the last call (block
+                                          //   RAM, not reset: masked by a_v)
     reg [W_INC-1:0]         ph_q;
     reg signed [W_POS-1:0]  ps_cnt_q;
     // spacing product
     reg [4:0]               sp_k_q;
-    reg                     sp_full_q, sp_mnz_q;
+    reg                     sp_en_q;      // a sample is held, its min_period != 0 and its
+                                          //   threshold < 2^48 (else the product is below it)
     reg [W_INC-1:0]         sp_inc_q;
     reg [W_GAP-1:0]         sp_m_q;       // min_period, shifted right once per step
-    reg [W_DIST-1:0]        sp_thr_q;
+    reg [W_PROD-1:0]        sp_thr_q;     // its threshold, low 48 bits
     reg [W_SPHI-1:0]        sp_hi_q;
     reg [W_GAP-1:0]         sp_lo_q;
     // stage R
-    reg [W_CHORD-1:0]       r_chord_q;    // ROM output register (not reset: masked by r_v)
-    reg                     r_rev_q, r_kclose_q, r_pulse_q, r_inwin_q, r_v_q;
+    reg [W_INCR-1:0]        r_x_q, r_y_q;
+    reg [W_CHORD-1:0]       part_q;       // chord of the open window (y - x)
+    reg                     r_inwin_q, r_v_q;
     // stage B1
-    reg [W_INCR-1:0]        b_x_q, b_y_q;
+    reg [W_INCR-1:0]        b_x_q;
+    reg [W_CHORD-1:0]       b_dy_q;
     reg [W_REM-1:0]         b_xm0_q, b_ym0_q, b_xm1_q, b_ym1_q;
-    reg                     b_inwin_q, b_v_q, b_fire1_q;
-    reg [W_CHORD-1:0]       part_q;
+    reg                     b_inwin_q, b_v_q;
     // stage B2
-    reg [W_REM-1:0]         rem1_q, rem0_q;   // the remainder: rem1 if the last call fired
-                                              //   (b_fire1), else rem0
-    reg [W_REM-1:0]         dist_q;
-    reg [6:0]               idx_q;
-    reg [6:0]               nx_q, nx2_q, nx3_q;   // next(idx), next(next(idx)), next^3(idx)
+    reg                     b_fire1_q;        // decision of the last call
+    reg                     e1_q, e0_q;       // b_v && !done && b_fire1, b_v && !done && !b_fire1
+    reg [W_REM-1:0]         rem1_q, rem0_q;   // the remainder: rem1 if the last call decided a
+                                              //   fire (b_fire1), else rem0
+    reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
+    reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q;   //   next, next^2, next^3 of it
     reg                     done_q;
+    reg                     c_fire_q, c_inwin_q, c_live_q;   // decision, its window, made while
+    reg [W_CHORD-1:0]       c_dy_q;                          //   not done; its y - x
+    // stage B3
+    reg [W_REM-1:0]         dist_q;
+    reg [6:0]               idx_o_q;
+    reg                     done_o_q;
     reg [W_PW-1:0]          timer_q;
     reg [W_GAP-1:0]         since_q;
     reg [W_FCNT-1:0]        fire_cnt_q;
@@ -287,6 +303,21 @@ module pso (
         end
     endfunction
 
+    // carry-select W_INCR-bit add (low 19 bits, upper 19 bits for carry 0 and 1)
+    localparam integer LY = W_INCR / 2;
+    function [W_INCR-1:0] csel19;
+        input [W_INCR-1:0] a, b;
+        reg [LY:0]          lo;
+        reg [W_INCR-LY-1:0] hi0;
+        reg [W_INCR-LY:0]   hi1;
+        begin
+            lo  = {1'b0, a[LY-1:0]} + {1'b0, b[LY-1:0]};
+            hi0 = a[W_INCR-1:LY] + b[W_INCR-1:LY];
+            hi1 = {a[W_INCR-1:LY], 1'b1} + {b[W_INCR-1:LY], 1'b1};
+            csel19 = {lo[LY] ? hi1[W_INCR-LY:1] : hi0, lo[LY-1:0]};
+        end
+    endfunction
+
     function [6:0] next_idx;   // next array index (0 after the last entry)
         input [6:0] i;
         input [6:0] len;
@@ -296,6 +327,15 @@ module pso (
             next_idx = (n >= {1'b0, len}) ? 7'd0 : n[6:0];
         end
     endfunction
+
+    // ---- array index ---------------------------------------------------------------------------
+    // The index of this call (after the decisions up to the last call) is idx_l: the registers
+    // idx_p .. nx3_p hold it before the last call's move and adv_q is that move, so a decision
+    // goes into one register (adv_q) and not into the index registers.
+    wire [6:0]       idx_l  = adv_q ? nx_p_q : idx_p_q;
+    wire [6:0]       nx_l   = adv_q ? nx2_p_q : nx_p_q;
+    wire [6:0]       nx2_l  = adv_q ? nx3_p_q : nx2_p_q;
+    wire [6:0]       nx3_l  = adv_q ? next_idx(nx3_p_q, len_q) : nx3_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
     // read data of the last call (addresses idx .. next^3(idx) of that call), the write presented
@@ -311,9 +351,9 @@ module pso (
     wire [W_DIST-1:0] g2 = adv_q ? e3 : e2;
     // the write presented in this call (in force in the next) forwarded; a call that resets the
     // tracking state prepares entry 0 for the first call of a run (idx = 0 then)
-    wire              pw0 = i_arr_we && (i_arr_addr == (rst_trk ? 6'd0 : idx_q[5:0]));
-    wire              pw1 = i_arr_we && (i_arr_addr == nx_q[5:0]);
-    wire              pw2 = i_arr_we && (i_arr_addr == nx2_q[5:0]);
+    wire              pw0 = i_arr_we && (i_arr_addr == (rst_trk ? 6'd0 : idx_l[5:0]));
+    wire              pw1 = i_arr_we && (i_arr_addr == nx_l[5:0]);
+    wire              pw2 = i_arr_we && (i_arr_addr == nx2_l[5:0]);
     wire [W_DIST-1:0] h0  = pw0 ? i_arr_data : rst_trk ? entry0_q : g0;
     wire [W_DIST-1:0] h1  = pw1 ? i_arr_data : g1;
     wire [W_DIST-1:0] h2  = pw2 ? i_arr_data : g2;
@@ -330,73 +370,56 @@ module pso (
     wire [W_DIST-1:0] thr0 = adv_q ? th1_q : th0_q;
     wire [W_DIST-1:0] thr1 = adv_q ? th2_q : th1_q;
 
-    // The ROM output is used unmasked: while r_v = 1 it is the chord of hls/ (the last two calls
-    // ran); while r_v = 0 (a run's first calls) b_x, b_y and part are stored as 0 and the
-    // differences are unused (b_v = 0: no fire, dist = rem + b_y).
-    // pr | cp and pr + cp: a generator pulse (1.0, bit 32) only comes with chord 0 and pr 0.
-    wire [W_REM-1:0]   pr  = {{(W_REM-W_CHORD){1'b0}}, r_rev_q ? part_q : {W_CHORD{1'b0}}};
-    wire [W_REM-1:0]   cp  = {{(W_REM-W_CHORD){1'b0}}, r_chord_q | {r_pulse_q, {D_FRAC{1'b0}}}};
-    wire [W_REM-1:0]   y58 = csel(pr, cp, 1'b0);                 // y = pr + chord + one
-    wire [W_INCR-1:0]  y   = y58[W_INCR-1:0];
-    wire [W_INCR-1:0]  x   = r_kclose_q ? y : (pr[W_INCR-1:0] | cp[W_INCR-1:0] & {W_INCR{r_pulse_q}});
-    // y - thr = pr + cp + ~thr + 1 (carry-save, then one carry-select add); x - thr is y - thr
-    // after a K close, else (pr + one) - thr
+    // y - thr = y + ~thr + 1, x - thr likewise (one carry-select add of two registers each)
     wire [W_REM-1:0]   nt0 = ~{2'b00, thr0};
     wire [W_REM-1:0]   nt1 = ~{2'b00, thr1};
-    wire [W_REM-1:0]   po  = pr | (cp & {W_REM{r_pulse_q}});          // pr + one
-    wire [W_REM-1:0]   ym0_d = csel(pr ^ cp ^ nt0, {((pr & cp) | (pr & nt0) | (cp & nt0)), 1'b0}, 1'b1);
-    wire [W_REM-1:0]   ym1_d = csel(pr ^ cp ^ nt1, {((pr & cp) | (pr & nt1) | (cp & nt1)), 1'b0}, 1'b1);
-    wire [W_REM-1:0]   pm0   = csel(po, nt0, 1'b1);
-    wire [W_REM-1:0]   pm1   = csel(po, nt1, 1'b1);
-    wire [W_REM-1:0]   xm0_d = r_kclose_q ? ym0_d : pm0;
-    wire [W_REM-1:0]   xm1_d = r_kclose_q ? ym1_d : pm1;
+    wire [W_REM-1:0]   y58 = {{(W_REM-W_INCR){1'b0}}, r_y_q};
+    wire [W_REM-1:0]   x58 = {{(W_REM-W_INCR){1'b0}}, r_x_q};
+    wire [W_REM-1:0]   ym0_d = csel(y58, nt0, 1'b1);
+    wire [W_REM-1:0]   ym1_d = csel(y58, nt1, 1'b1);
+    wire [W_REM-1:0]   xm0_d = csel(x58, nt0, 1'b1);
+    wire [W_REM-1:0]   xm1_d = csel(x58, nt1, 1'b1);
 
     // ---- stage B2 ------------------------------------------------------------------------------
-    // The remainder is kept as two registers and the last call's fire (b_fire1) says which one
-    // holds it: rem1 = rem + xm of the last call (it fired), rem0 = rem + x (it did not). The
+    // The remainder is kept as two registers and the last call's decision (b_fire1) says which
+    // one holds it: rem1 = rem + xm of the last call (it fired), rem0 = rem + x (it did not). The
     // candidate differences are picked by the same bit, so the value - thr of both cases is one
     // add of two registers each (v1, v0), picked after the add; the remainder's next value does
-    // not wait for this call's fire (rem1' = rem + xm, rem0' = rem + x: b_fire1' = fire picks).
+    // not wait for this call's decision (rem1' = rem + xm, rem0' = rem + x: b_fire1' = dec picks).
+    // hls freezes the remainder once the array is done; here it runs on (it is not seen: dist
+    // is only formed from a decision made while not done, c_live).
     wire             f1   = b_fire1_q;
     wire [W_REM-1:0] rem  = f1 ? rem1_q : rem0_q;
     wire [W_REM-1:0] v1   = csel(rem1_q, b_ym1_q, 1'b0);      // value - thr if the last call fired
     wire [W_REM-1:0] v0   = csel(rem0_q, b_ym0_q, 1'b0);      //   ... if it did not
-    wire             en1  = b_v_q && !done_q && f1;          // (registers only)
-    wire             en0  = b_v_q && !done_q && !f1;
-    wire             fire = (en1 && !v1[W_REM-1]) || (en0 && !v0[W_REM-1]);
-    wire [W_REM-1:0] vm   = f1 ? v1 : v0;                    // value - thr
+    // en1 = b_v && !done && f1 and en0 = b_v && !done && !f1 are registers (e1_q, e0_q, formed
+    // with the decision of the last call), so the decision is one gate after each sign
+    wire             dec  = (e1_q && !v1[W_REM-1]) || (e0_q && !v0[W_REM-1]);
     wire [W_REM-1:0] rx1  = csel(rem1_q, b_xm1_q, 1'b0);
     wire [W_REM-1:0] rx0  = csel(rem0_q, b_xm0_q, 1'b0);
-    wire [W_REM-1:0] rx   = f1 ? rx1 : rx0;                  // rem + xm
-    wire [W_REM-1:0] r0   = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);
-    wire [W_REM-1:0] ry   = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_y_q}, 1'b0);
-    wire [W_REM-1:0] rem1_d = rx;                            // used only if this call fires
-    wire [W_REM-1:0] rem0_d = done_q ? rem : r0;
-    wire [W_REM-1:0] dist_d = done_q ? dist_q : fire ? vm : ry;
-    // Everything else that a fire changes is written as a select by the fire between values
-    // formed from registers (emit, overlap and frequency conditions, the counters' increments).
-    // The index moves to next(idx) (a register, as next(next(idx))
-    // and next^3(idx): no add or compare after the fire decision); idx is the last entry iff
+    wire [W_REM-1:0] rem1_d = f1 ? rx1 : rx0;                // rem + xm: used only after a fire
+    wire [W_REM-1:0] rem0_d = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);   // rem + x
+    // The index moves to next(idx) (idx_l .. nx3_l above); idx is the last entry iff
     // next(idx) = 0.
-    wire             last   = (nx_q == 7'd0);
+    wire             last   = (nx_l == 7'd0);
     wire             adv_c  = arr_en_q && !(last && !arr_wrap_q);
     wire             done_c = arr_en_q && last && !arr_wrap_q;
-    wire             adv    = fire && adv_c;
-    wire [6:0]       idx_d  = adv ? nx_q : idx_q;
-    wire             done_d = done_q || (fire && done_c);
+    wire             adv    = dec && adv_c;
+    wire             done_d = done_q || (dec && done_c);
+    wire             e1_d   = dec && r_v_q && !done_q && !done_c;   // b_v' && !done' && dec
+    wire             e0_d   = !dec && r_v_q && !done_q;
     // a call that resets the tracking state: next(0), next^2(0), next^3(0) for the length
     // presented (in force in the next call, which may start a run and latch it)
     wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
-    wire [6:0]       nx4    = next_idx(nx3_q, len_q);
-    // conditions of a fire (registers only): emit, overlap, frequency error
-    wire             ov_c   = b_inwin_q && (timer_q != 16'd0);
-    wire             fe_c   = b_inwin_q && (f_min_period_q != 16'd0) &&
-                              (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
-    wire             emit   = fire && b_inwin_q;
-    wire             overlap  = fire && ov_c;
-    wire             freq_err = fire && fe_c;
+
+    // ---- stage B3: the decision of the last call (registers only) ------------------------------
+    wire             fire   = c_fire_q;
+    wire             emit   = fire && c_inwin_q;
+    wire             overlap  = emit && (timer_q != 16'd0);
+    wire             freq_err = emit && (f_min_period_q != 16'd0) &&
+                                (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
     wire [W_PW-1:0]  timer_n  = (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;   // no emit
     wire [W_PW-1:0]  timer_d  = emit ? f_pulse_w_q : timer_n;
     wire             pulse_d  = emit ? (f_pulse_w_q != 16'd0) : (timer_n != 16'd0);
@@ -404,8 +427,10 @@ module pso (
     wire [W_FCNT-1:0] fire_cnt_d = emit ? fire_cnt_q + 32'd1 : fire_cnt_q;
     // clear acts first, an event of this call sets its flag again
     wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
-    wire [W_OVL-1:0] ovl_ov   = (ov_c && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
-    wire [W_OVL-1:0] ovl_d    = fire ? ovl_ov : ovl_base;
+    wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
+    // distance after the fire: the remainder after that decision (b_fire1 = c_fire picks) plus
+    // the chord it left open (= rem + ym after a fire, rem + y otherwise)
+    wire [W_REM-1:0] dist_n   = csel(rem, {{(W_REM-W_CHORD){1'b0}}, c_dy_q}, 1'b0);
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
@@ -423,7 +448,11 @@ module pso (
     wire             sp_load   = ps_e && (sp_k_q == 5'd0);
     wire             sp_step   = ps_e && (sp_k_q != 5'd0);
     wire [W_PROD-1:0] sp_prod  = {sp_hi_q[W_INC-1:0], sp_lo_q};
-    wire             spacing_err = sp_load && sp_full_q && sp_mnz_q && ({8'd0, sp_prod} > sp_thr_q);
+    // sp_prod > sp_thr as two 24-bit halves (three short compares side by side)
+    wire             sp_hgt  = sp_prod[W_PROD-1:24] >  sp_thr_q[W_PROD-1:24];
+    wire             sp_hge  = sp_prod[W_PROD-1:24] >= sp_thr_q[W_PROD-1:24];
+    wire             sp_lgt  = sp_prod[23:0] > sp_thr_q[23:0];
+    wire             spacing_err = sp_load && sp_en_q && (sp_hgt || (sp_hge && sp_lgt));
     wire [W_SPHI-1:0] sp_sh    = sp_hi_q + (sp_m_q[0] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}});
 
     // ---- stage A: tracking window -------------------------------------------------------------
@@ -433,7 +462,6 @@ module pso (
     //   |Dn_i| = (rev ? 0 : |D_i|) + |d_i|, and its square = rev ? |d_i| : (|d_i| ? (|D_i| + 1)^2
     //            : |D_i|^2) (squares of the 4-bit register: LUTs)
     //   kclose = some |Dn_i| >= K (compares of the register with K, picked by rev and the move)
-    wire       k0 = (f_win_k_q == 5'd0);
     wire       k1 = (f_win_k_q <= 5'd1);
     wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
     wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
@@ -456,11 +484,13 @@ module pso (
             wire       ge1  = ({1'b0, a} + 5'd1 >= f_win_k_q);
             wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
             assign sqs[ax]  = mv[ax] ? (rev ? 9'd1 : sq1) : (rev ? 9'd0 : sq0);
-            assign kc[ax]   = mv[ax] ? (rev ? k1 : ge1) : (rev ? k0 : ge0);
+            assign kc[ax]   = mv[ax] ? ge1 : ge0;   // the close without a reversal
             assign ta_n[ax] = magn[3:0];
         end
     endgenerate
-    wire           kclose = |kc;
+    // after a reversal |Dn_i| = |d_i| <= 1: a close iff K <= 1 and an axis moves (K = 0 is an
+    // invalid configuration, never in force in a run); the decision last, on rev
+    wire           kclose = rev ? (k1 && (|mv)) : (|kc);
     wire [W_S-1:0] s_d    = {1'b0, sqs[0]} + {1'b0, sqs[1]} + {1'b0, sqs[2]};
     wire [11:0]    ta_d   = kclose ? 12'd0 : {ta_n[2], ta_n[1], ta_n[0]};
     wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
@@ -471,6 +501,17 @@ module pso (
     // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
     // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
     wire r_inwin_d = !a_wen_q || ((a_wlo_q <= a_wp_q) && (a_wp_q <= a_whi_q));
+
+    // ---- stage R: increments from the ROM data ------------------------------------------------
+    // rom_q is ROM[s] of the last call's stage A while a_v = 1 (the last call ran); while a_v = 0
+    // (a run's first call, or no run) y, x and part are stored as 0, as hls (a_s = 0 there).
+    // pr | cp and pr + cp: a generator pulse (1.0, bit 32) only comes with chord 0 and pr 0.
+    wire [W_INCR-1:0]  pr  = {1'b0, a_rev_q ? part_q : {W_CHORD{1'b0}}};
+    wire [W_INCR-1:0]  cp  = {1'b0, rom_q | {a_pulse_q, {D_FRAC{1'b0}}}};
+    wire [W_INCR-1:0]  y_d = csel19(pr, cp);                          // pr + chord + one
+    wire [W_INCR-1:0]  x_d = a_kclose_q ? y_d : (pr | (cp & {W_INCR{a_pulse_q}}));   // pr + one
+    wire [W_CHORD-1:0] part_d = a_kclose_q ? {W_CHORD{1'b0}} : rom_q;
+    wire               r_clr  = rst_trk || !a_v_q;
 
     // ---- register update -----------------------------------------------------------------------
     // register stage (reset values of pso_regs after i_rst), the check, the bad-entry map
@@ -525,23 +566,37 @@ module pso (
             arr2[i_arr_addr] <= i_arr_data;
             arr3[i_arr_addr] <= i_arr_data;
         end
-        rd0_q <= arr0[idx_q[5:0]];
-        rd1_q <= arr1[nx_q[5:0]];
-        rd2_q <= arr2[nx2_q[5:0]];
-        rd3_q <= arr3[nx3_q[5:0]];
-        fw0_q <= i_arr_we && (i_arr_addr == idx_q[5:0]);
-        fw1_q <= i_arr_we && (i_arr_addr == nx_q[5:0]);
-        fw2_q <= i_arr_we && (i_arr_addr == nx2_q[5:0]);
-        fw3_q <= i_arr_we && (i_arr_addr == nx3_q[5:0]);
+        rd0_q <= arr0[idx_l[5:0]];
+        rd1_q <= arr1[nx_l[5:0]];
+        rd2_q <= arr2[nx2_l[5:0]];
+        rd3_q <= arr3[nx3_l[5:0]];
+        fw0_q <= i_arr_we && (i_arr_addr == idx_l[5:0]);
+        fw1_q <= i_arr_we && (i_arr_addr == nx_l[5:0]);
+        fw2_q <= i_arr_we && (i_arr_addr == nx2_l[5:0]);
+        fw3_q <= i_arr_we && (i_arr_addr == nx3_l[5:0]);
         f_data_q <= i_arr_data;
         th0_q <= th0_d;
         th1_q <= th1_d;
         th2_q <= th2_d;
     end
 
-    // chord ROM: registered read (stage R), no reset
+    // chord ROM: the block RAM registers this call's address s (stage A), its data is used in
+    // the next call (stage R); no reset
     always @(posedge i_clk) begin
-        r_chord_q <= rom[a_s_q];
+        rom_q <= rom[s_d];
+    end
+
+    // stage R registers: cleared with the tracking state and in a call without ROM data
+    always @(posedge i_clk) begin
+        if (r_clr) begin
+            r_y_q <= {W_INCR{1'b0}};
+            r_x_q <= {W_INCR{1'b0}};
+            part_q <= {W_CHORD{1'b0}};
+        end else begin
+            r_y_q <= y_d;
+            r_x_q <= x_d;
+            part_q <= part_d;
+        end
     end
 
     always @(posedge i_clk) begin
@@ -564,24 +619,19 @@ module pso (
             a_wlo_q <= {W_POS{1'b0}};
             a_whi_q <= {W_POS{1'b0}};
             a_v_q <= 1'b0;
-            a_s_q <= {W_S{1'b0}};
             ph_q <= {W_INC{1'b0}};
             ps_cnt_q <= {W_POS{1'b0}};
             sp_k_q <= 5'd0;
-            sp_full_q <= 1'b0;
-            sp_mnz_q <= 1'b0;
+            sp_en_q <= 1'b0;
             sp_inc_q <= {W_INC{1'b0}};
             sp_m_q <= {W_GAP{1'b0}};
-            sp_thr_q <= {W_DIST{1'b0}};
+            sp_thr_q <= {W_PROD{1'b0}};
             sp_hi_q <= {W_SPHI{1'b0}};
             sp_lo_q <= {W_GAP{1'b0}};
-            r_rev_q <= 1'b0;
-            r_kclose_q <= 1'b0;
-            r_pulse_q <= 1'b0;
             r_inwin_q <= 1'b0;
             r_v_q <= 1'b0;
             b_x_q <= {W_INCR{1'b0}};
-            b_y_q <= {W_INCR{1'b0}};
+            b_dy_q <= {W_CHORD{1'b0}};
             b_xm0_q <= {W_REM{1'b0}};
             b_ym0_q <= {W_REM{1'b0}};
             b_xm1_q <= {W_REM{1'b0}};
@@ -589,15 +639,22 @@ module pso (
             b_inwin_q <= 1'b0;
             b_v_q <= 1'b0;
             b_fire1_q <= 1'b0;
-            part_q <= {W_CHORD{1'b0}};
+            e1_q <= 1'b0;
+            e0_q <= 1'b0;
             rem1_q <= {W_REM{1'b0}};
             rem0_q <= {W_REM{1'b0}};
+            c_fire_q <= 1'b0;
+            c_inwin_q <= 1'b0;
+            c_live_q <= 1'b0;
+            c_dy_q <= {W_CHORD{1'b0}};
             dist_q <= {W_REM{1'b0}};
-            idx_q <= 7'd0;
+            idx_o_q <= 7'd0;
+            done_o_q <= 1'b0;
+            idx_p_q <= 7'd0;
             adv_q <= 1'b0;
-            nx_q <= i_rst ? 7'd0 : nx_0;
-            nx2_q <= i_rst ? 7'd0 : nx2_0;
-            nx3_q <= i_rst ? 7'd0 : nx3_0;
+            nx_p_q <= i_rst ? 7'd0 : nx_0;
+            nx2_p_q <= i_rst ? 7'd0 : nx2_0;
+            nx3_p_q <= i_rst ? 7'd0 : nx3_0;
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             since_q <= {W_GAP{1'b1}};
@@ -629,16 +686,14 @@ module pso (
             a_wlo_q <= f_win_low_q;
             a_whi_q <= f_win_high_q;
             a_v_q <= 1'b1;
-            a_s_q <= s_d;
             ph_q <= ph_d;
             ps_cnt_q <= ps_cnt_d;
             if (sp_load) begin
                 sp_k_q <= 5'd1;
-                sp_full_q <= 1'b1;
-                sp_mnz_q <= (f_min_period_q != 16'd0);
+                sp_en_q <= (f_min_period_q != 16'd0) && (thr0[W_DIST-1:W_PROD] == 8'd0);
                 sp_inc_q <= inc;
                 sp_m_q <= f_min_period_q;
-                sp_thr_q <= thr0;
+                sp_thr_q <= thr0[W_PROD-1:0];
                 sp_hi_q <= {W_SPHI{1'b0}};
                 sp_lo_q <= {W_GAP{1'b0}};
             end else if (sp_step) begin
@@ -647,41 +702,44 @@ module pso (
                 sp_hi_q <= sp_sh >> 1;
                 sp_lo_q <= {sp_sh[0], sp_lo_q[W_GAP-1:1]};
             end
-            // R
-            r_rev_q <= a_rev_q;
-            r_kclose_q <= a_kclose_q;
-            r_pulse_q <= a_pulse_q;
+            // R (r_y, r_x, part: above)
             r_inwin_q <= a_v_q && r_inwin_d;
             r_v_q <= a_v_q;
             // B1
-            b_x_q <= r_v_q ? x : {W_INCR{1'b0}};
-            b_y_q <= r_v_q ? y : {W_INCR{1'b0}};
+            b_x_q <= r_x_q;
+            b_dy_q <= part_q;
             b_xm0_q <= xm0_d;
             b_ym0_q <= ym0_d;
             b_xm1_q <= xm1_d;
             b_ym1_q <= ym1_d;
             b_inwin_q <= r_inwin_q;
             b_v_q <= r_v_q;
-            b_fire1_q <= fire;
-            if (!done_q) part_q <= (r_kclose_q || !r_v_q) ? {W_CHORD{1'b0}} : r_chord_q;
             // B2
+            b_fire1_q <= dec;
+            e1_q <= e1_d;
+            e0_q <= e0_d;
             rem1_q <= rem1_d;
             rem0_q <= rem0_d;
-            dist_q <= dist_d;
-            idx_q <= idx_d;
+            c_fire_q <= dec;
+            c_inwin_q <= b_inwin_q;
+            c_live_q <= !done_q;
+            c_dy_q <= b_dy_q;
+            idx_p_q <= idx_l;
             adv_q <= adv;
-            if (adv) begin
-                nx_q <= nx2_q;
-                nx2_q <= nx3_q;
-                nx3_q <= nx4;
-            end
+            nx_p_q <= nx_l;
+            nx2_p_q <= nx2_l;
+            nx3_p_q <= nx3_l;
             done_q <= done_d;
+            // B3
+            if (c_live_q) dist_q <= dist_n;
+            idx_o_q <= idx_l;
+            done_o_q <= done_q;
             timer_q <= timer_d;
             since_q <= since_d;
             fire_q <= fire;
             emit_q <= emit;
             pulse_q <= pulse_d;
-            in_win_q <= b_inwin_q;
+            in_win_q <= c_inwin_q;
             overlap_q <= overlap;
             rate_over_q <= rate_over;
             spacing_err_q <= spacing_err;
@@ -723,8 +781,8 @@ module pso (
     assign o_pulse        = pulse_q;
     assign o_in_win       = in_win_q;
     assign o_dist         = dist_q;
-    assign o_idx          = idx_q;
-    assign o_arr_done     = done_q;
+    assign o_idx          = idx_o_q;
+    assign o_arr_done     = done_o_q;
     assign o_fire_cnt     = fire_cnt_q;
     assign o_overlap_cnt  = ovl_cnt_q;
     assign o_overlap      = overlap_q;

@@ -11,7 +11,7 @@
 // accuracy:  firing position against the ideal continuous path (point at k * distance of arc
 //            length), in nm, for K = 1, 4, 8, 16 on lines, arcs, reversals, polylines (2D and
 //            3D), printed as a table; regression bounds for the default K = 16 (beyond the
-//            FIRE_LAT = 3 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
+//            FIRE_LAT = 4 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
@@ -261,9 +261,9 @@ void test_accuracy(tbu::result& res, std::mt19937_64& rng) {
     const int ks[] = {1, 4, 8, 16};
     std::printf("[tb_pso] firing position error vs the ideal path (nm; 1 count = 78.125 nm; firing distance random\n"
                 "         20..200 counts; speeds 0.02..0.5 counts/clock = 0.16..3.9 m/s; position = axes when the pulse\n"
-                "         leaves; 'beyond 3 clk' = error minus the travel of the 3 clocks of latency; 'along' < 0: early)\n");
+                "         leaves; 'beyond 4 clk' = error minus the travel of the 4 clocks of latency; 'along' < 0: early)\n");
     std::printf("  %-13s %3s %6s %9s %8s %8s %9s %12s\n", "paths", "K", "fires", "max", "mean", "rms", "along",
-                "beyond 3 clk");
+                "beyond 4 clk");
     for (const shape& sh : shapes) {
         // the same paths for every K
         std::vector<lxt::pso_path> paths;
@@ -361,7 +361,7 @@ golden::pso_in steps(int a, int b, int c) {
 void test_directed(tbu::result& res) {
     // remainder carry: 1 count per call on x, distance 2.5 counts: fire k after count ceil(2.5 k);
     // the registers presented in call 0 are in force from call 1 (REG_LAT), so the step of call 0
-    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + 3 (FIRE_LAT 3)
+    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + 4 (FIRE_LAT 4)
     {
         pair_run p{{}, {}, &res, "carry"};
         golden::pso_regs r;
@@ -381,7 +381,7 @@ void test_directed(tbu::result& res) {
     }
     // K = 1: per-call magnitudes; a synchronous diagonal (x and y step together) advances sqrt2
     // per call, a 3D one sqrt3: distance 10 counts is reached after ceil(10/sqrt2) = 8,
-    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 = 2 calls later (plus REG_LAT: the run starts
+    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 = 3 calls later (plus REG_LAT: the run starts
     // in call 1)
     for (int dims = 2; dims <= 3; ++dims) {
         pair_run p{{}, {}, &res, "K=1 diagonal"};
@@ -424,8 +424,9 @@ void test_directed(tbu::result& res) {
             if (last.fire) fires.push_back(t);
         }
         // the run starts in call 1 (REG_LAT), so the tracked position after call t is t; fire k is
-        // FIRE_LAT calls after the step that reaches D_k
-        const std::vector<long long> want = {7, 13, 16, 43};
+        // FIRE_LAT calls after the step that reaches D_k (calls 4, 10, 13, 40)
+        constexpr long long L = lx::pso_cfg::FIRE_LAT;
+        const std::vector<long long> want = {4 + L, 10 + L, 13 + L, 40 + L};
         res.check(fires == want && last.arr_done, "array: fires at listed distances wrong (" +
                                                       std::to_string(fires.size()) + " fires)");
     }
@@ -457,12 +458,13 @@ void test_directed(tbu::result& res) {
             const int64_t wx = t >= lx::pso_cfg::FIRE_LAT ? xs[static_cast<size_t>(t - lx::pso_cfg::FIRE_LAT)] : 0;
             if (o.emit && (wx < 20 || wx > 39)) inside_only = false;
         }
-        res.check(fires == 48 && emits == 10 && inside_only,
+        // fire k in call 2k + FIRE_LAT (call 99 the last)
+        res.check(fires == (99 - lx::pso_cfg::FIRE_LAT) / 2 && emits == 10 && inside_only,
                   "window: fires " + std::to_string(fires) + " emits " + std::to_string(emits));
     }
     // pulse width and overlap: distance 2 counts at 1 count/call (a fire every 2 calls from call
-    // 5: the run starts in call 1, REG_LAT), pulse width 5: every emit after the first overlaps;
-    // fire_cnt still counts each one
+    // 2 + FIRE_LAT: the run starts in call 1, REG_LAT), pulse width 5: every emit after the
+    // first overlaps; fire_cnt still counts each one
     {
         pair_run p{{}, {}, &res, "overlap"};
         golden::pso_regs r;
@@ -473,7 +475,7 @@ void test_directed(tbu::result& res) {
         r.min_period = 3;
         golden::pso::out o;
         int emits = 0, high = 0;
-        const int n_calls = 23 + lx::pso_cfg::REG_LAT;
+        const int n_calls = 20 + lx::pso_cfg::FIRE_LAT + lx::pso_cfg::REG_LAT;  // 10 fires
         for (int t = 0; t < n_calls; ++t) {
             o = p.step(steps(1, 0, 0), r);
             emits += o.emit ? 1 : 0;
@@ -482,7 +484,7 @@ void test_directed(tbu::result& res) {
         res.check(emits == 10 && o.fire_cnt == 10 && o.overlap_cnt == 9 && o.overlap_st && o.freq_st,
                   "overlap: emits " + std::to_string(emits) + " fire_cnt " + std::to_string(o.fire_cnt) + " overlaps " +
                       std::to_string(o.overlap_cnt));
-        res.check(high == n_calls - 4 - lx::pso_cfg::REG_LAT, "overlap: pulse level high for " + std::to_string(high) + " calls");
+        res.check(high == n_calls - 2 - lx::pso_cfg::FIRE_LAT, "overlap: pulse level high for " + std::to_string(high) + " calls");
         // width 1 and distance 2: no overlap, pulses 1 call each
         pair_run q{{}, {}, &res, "no overlap"};
         r.pulse_w = 1;
