@@ -12,7 +12,7 @@
 //
 // Register stage (§2.2): the register inputs presented at an edge are in force at the next one
 // (f_* registers, the reset values after i_rst). The configuration check is formed on the
-// presented values (against the bad-entry map after their write) and registered (cfg_ok_q), so
+// presented values (against the bad-entry map after their write) and registered (ok_*_q), so
 // the reset of the state is a register plus one gate. The array RAM is written at the edge of
 // the call that presents the write (the data are in force, for the model, one call later:
 // the reads below forward accordingly).
@@ -185,7 +185,9 @@ module pso (
     reg [W_GAP-1:0]         f_min_period_q;
     reg                     f_we_q;       // the write in force (made in the RAM at the last edge)
     reg [W_DIST-1:0]        f_data_q;
-    reg                     cfg_ok_q;     // configuration check of the values in force
+    reg                     ok_a_q, ok_w_q, ok_t_q;   // configuration check of the values in
+                                          //   force: K, axes, width / window / threshold
+    reg                     ok_ae_q;      // ok_a and enable
     reg [63:0]              bad_q;        // entry below 2 counts (or never written), after the
                                           //   writes presented so far
     reg [W_DIST-1:0]        entry0_q;     // copy of entry 0 (the RAM after the last edge)
@@ -203,7 +205,8 @@ module pso (
     reg [2:0]               tp_q, tn_q;   // D > 0, D < 0 per axis
     reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
     reg                     a_wen_q;      // window of this call: enable, position, edges (the
-    reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R)
+    reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R; source 3,
+    reg                     a_w3_q;                      //   the pulse count: ps_cnt itself)
     reg [W_CHORD-1:0]       rom_q;        // ROM data at the address s of the last call (block
                                           //   RAM, not reset: masked by a_v)
     reg [W_INC-1:0]         ph_q;
@@ -212,6 +215,8 @@ module pso (
     reg [4:0]               sp_k_q;
     reg                     sp_en_q;      // a sample is held, its min_period != 0 and its
                                           //   threshold < 2^48 (else the product is below it)
+    reg                     sp_go_q;      // this call shows a sample's check: sp_load && sp_en
+    reg                     sp_gt_q;      // the held sample's product > its threshold
     reg [W_INC-1:0]         sp_inc_q;
     reg [W_GAP-1:0]         sp_m_q;       // min_period, shifted right once per step
     reg [W_PROD-1:0]        sp_thr_q;     // its threshold, low 48 bits
@@ -220,7 +225,9 @@ module pso (
     // stage R
     reg [W_INCR-1:0]        r_x_q, r_y_q;
     reg [W_CHORD-1:0]       part_q;       // chord of the open window (y - x)
-    reg                     r_inwin_q, r_v_q;
+    reg                     r_v_q;
+    reg                     r_wen_q;      // window enable, and the window compares in halves:
+    reg [5:0]               r_wc_q;       //   hls r_inwin = !r_wen || (lo <= w && w <= hi), below
     // stage B1
     reg [W_INCR-1:0]        b_x_q;
     reg [W_CHORD-1:0]       b_dy_q;
@@ -275,10 +282,12 @@ module pso (
     wire        win_le = !(wlo_l[20] ? wup1[20] : wup0[19]);
     wire        win_ok  = !i_win_en || (win_le && (i_win_src != 2'd3 || i_part_speed));
     // the check of the presented values, in force (registered) with them in the next call
-    wire        cfg_ok_d = k_ok && axes_ok && thr_ok && win_ok && (i_pulse_w != 16'd0);
+    // (three registers, so that each part is one gate from its compare; the resets below take
+    // them together: one gate of registers)
+    wire        ok_a_d   = k_ok && axes_ok && (i_pulse_w != 16'd0);
     // resets of this call: invalid configuration (everything but the RAM), enable = 0 (tracking)
-    wire        rst_cfg  = i_rst || !cfg_ok_q;
-    wire        rst_trk  = rst_cfg || !f_enable_q;
+    wire        rst_cfg  = i_rst || !(ok_a_q && ok_w_q && ok_t_q);
+    wire        rst_trk  = i_rst || !(ok_ae_q && ok_w_q && ok_t_q);   // rst_cfg || !enable
 
     // latched modes as seen in this call (the first call of a run latches them)
     wire       ps_e     = run_q ? ps_q : f_part_speed_q;
@@ -315,6 +324,30 @@ module pso (
             hi0 = a[W_INCR-1:LY] + b[W_INCR-1:LY];
             hi1 = {a[W_INCR-1:LY], 1'b1} + {b[W_INCR-1:LY], 1'b1};
             csel19 = {lo[LY] ? hi1[W_INCR-LY:1] : hi0, lo[LY-1:0]};
+        end
+    endfunction
+
+    function [8:0] sq4;     // a * a for a 4-bit a (a table: no multiplier)
+        input [3:0] a;
+        begin
+            case (a)
+                4'd0: sq4 = 9'd0;    4'd1: sq4 = 9'd1;    4'd2: sq4 = 9'd4;    4'd3: sq4 = 9'd9;
+                4'd4: sq4 = 9'd16;   4'd5: sq4 = 9'd25;   4'd6: sq4 = 9'd36;   4'd7: sq4 = 9'd49;
+                4'd8: sq4 = 9'd64;   4'd9: sq4 = 9'd81;   4'd10: sq4 = 9'd100; 4'd11: sq4 = 9'd121;
+                4'd12: sq4 = 9'd144; 4'd13: sq4 = 9'd169; 4'd14: sq4 = 9'd196; default: sq4 = 9'd225;
+            endcase
+        end
+    endfunction
+
+    function [8:0] sq4p1;   // (a + 1)^2 for a 4-bit a
+        input [3:0] a;
+        begin
+            case (a)
+                4'd0: sq4p1 = 9'd1;    4'd1: sq4p1 = 9'd4;    4'd2: sq4p1 = 9'd9;    4'd3: sq4p1 = 9'd16;
+                4'd4: sq4p1 = 9'd25;   4'd5: sq4p1 = 9'd36;   4'd6: sq4p1 = 9'd49;   4'd7: sq4p1 = 9'd64;
+                4'd8: sq4p1 = 9'd81;   4'd9: sq4p1 = 9'd100;  4'd10: sq4p1 = 9'd121; 4'd11: sq4p1 = 9'd144;
+                4'd12: sq4p1 = 9'd169; 4'd13: sq4p1 = 9'd196; 4'd14: sq4p1 = 9'd225; default: sq4p1 = 9'd256;
+            endcase
         end
     endfunction
 
@@ -434,25 +467,35 @@ module pso (
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
-    wire             over      = (i_ps_inc > INC_MAX);
+    // (16-bit halves: the compare as hi > | hi == and lo >, the command's sum carry-select)
+    wire             ov_hi     = (i_ps_inc[31:16] >  INC_MAX[31:16]);
+    wire             eq_hi     = (i_ps_inc[31:16] == INC_MAX[31:16]);
+    wire             ov_lo     = (i_ps_inc[15:0]  >  INC_MAX[15:0]);
+    wire             over      = ov_hi || (eq_hi && ov_lo);   // i_ps_inc > INC_MAX
     wire             rate_over = ps_e && over;
     wire [W_INC-1:0] inc       = over ? INC_MAX : i_ps_inc;
-    wire [W_INC:0]   ph_in     = {1'b0, ph_q} + {1'b0, i_ps_inc};
+    wire [16:0]      pi_lo     = {1'b0, ph_q[15:0]} + {1'b0, i_ps_inc[15:0]};
+    wire [16:0]      pi_hi0    = {1'b0, ph_q[31:16]} + {1'b0, i_ps_inc[31:16]};
+    wire [17:0]      pi_hi1    = {1'b0, ph_q[31:16], 1'b1} + {1'b0, i_ps_inc[31:16], 1'b1};
+    wire [W_INC:0]   ph_in     = {pi_lo[16] ? pi_hi1[17:1] : pi_hi0, pi_lo[15:0]};   // ph + i_ps_inc
     wire [W_INC:0]   ph_max    = {1'b0, ph_q} + {1'b0, INC_MAX};
     wire [W_INC:0]   ph_sum    = over ? ph_max : ph_in;
     wire             ps_pulse  = ps_e && ph_sum[W_INC];
     wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
     wire signed [W_POS-1:0] ps_cnt1  = ps_cnt_q + 38'sd1;
-    wire signed [W_POS-1:0] ps_cnt_d = ps_pulse ? ps_cnt1 : ps_cnt_q;
+    // (written as a toggle mask, so that the pulse is a data input of each bit's gate rather
+    // than a clock enable behind a reset term)
+    wire signed [W_POS-1:0] ps_cnt_d = ps_cnt_q ^ ((ps_cnt_q ^ ps_cnt1) & {W_POS{ps_pulse}});
     // minimum spacing: k = 0 shows the previous sample's check and loads; k = 1..16 step k - 1
     wire             sp_load   = ps_e && (sp_k_q == 5'd0);
     wire             sp_step   = ps_e && (sp_k_q != 5'd0);
     wire [W_PROD-1:0] sp_prod  = {sp_hi_q[W_INC-1:0], sp_lo_q};
-    // sp_prod > sp_thr as two 24-bit halves (three short compares side by side)
-    wire             sp_hgt  = sp_prod[W_PROD-1:24] >  sp_thr_q[W_PROD-1:24];
-    wire             sp_hge  = sp_prod[W_PROD-1:24] >= sp_thr_q[W_PROD-1:24];
-    wire             sp_lgt  = sp_prod[23:0] > sp_thr_q[23:0];
-    wire             spacing_err = sp_load && sp_en_q && (sp_hgt || (sp_hge && sp_lgt));
+    // The load call also makes step 0 (hi starts at 0: a select, no add), calls k = 1..15 make
+    // steps 1..15, so the product is complete one call early and call k = 16 registers the
+    // compare (sp_gt); the sample call shows it. (hls: steps 0..15 in calls 1..16; the same
+    // product and flag.)
+    wire             spacing_err = sp_go_q && sp_gt_q;
+    wire [W_SPHI-1:0] sp_h0    = f_min_period_q[0] ? {1'b0, inc} : {W_SPHI{1'b0}};   // step 0
     wire [W_SPHI-1:0] sp_sh    = sp_hi_q + (sp_m_q[0] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}});
 
     // ---- stage A: tracking window -------------------------------------------------------------
@@ -478,12 +521,12 @@ module pso (
     generate
         for (ax = 0; ax < 3; ax = ax + 1) begin : g_axis
             wire [3:0] a    = ta_q[4*ax+3:4*ax];
-            wire [8:0] sq0  = a * a;
-            wire [8:0] sq1  = ({1'b0, a} + 5'd1) * ({1'b0, a} + 5'd1);
+            wire [8:0] sq0  = sq4(a);                 // |D|^2 and (|D| + 1)^2: one LUT per bit
+            wire [8:0] sq1  = sq4p1(a);
             wire       ge0  = ({1'b0, a} >= f_win_k_q);
             wire       ge1  = ({1'b0, a} + 5'd1 >= f_win_k_q);
             wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
-            assign sqs[ax]  = mv[ax] ? (rev ? 9'd1 : sq1) : (rev ? 9'd0 : sq0);
+            assign sqs[ax]  = mv[ax] ? sq1 : sq0;     // without a reversal
             assign kc[ax]   = mv[ax] ? ge1 : ge0;   // the close without a reversal
             assign ta_n[ax] = magn[3:0];
         end
@@ -491,16 +534,30 @@ module pso (
     // after a reversal |Dn_i| = |d_i| <= 1: a close iff K <= 1 and an axis moves (K = 0 is an
     // invalid configuration, never in force in a run); the decision last, on rev
     wire           kclose = rev ? (k1 && (|mv)) : (|kc);
-    wire [W_S-1:0] s_d    = {1'b0, sqs[0]} + {1'b0, sqs[1]} + {1'b0, sqs[2]};
+    // after a reversal s is the number of moving axes; the pick on rev after the sum
+    wire [W_S-1:0] s_nr   = {1'b0, sqs[0]} + {1'b0, sqs[1]} + {1'b0, sqs[2]};
+    wire [W_S-1:0] s_d    = rev ? {8'd0, (mv[0] & mv[1]) | (mv[2] & (mv[0] | mv[1])), mv[0] ^ mv[1] ^ mv[2]}
+                                : s_nr;
     wire [11:0]    ta_d   = kclose ? 12'd0 : {ta_n[2], ta_n[1], ta_n[0]};
     wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
     wire [2:0]     tn_d   = (dw | (tn_q & {3{!rev}})) & {3{!kclose}};
     // window
-    wire signed [W_POS-1:0] wp = (f_win_src_q == 2'd3) ? ps_cnt_d : (f_win_src_q == 2'd2) ? i_pos2 :
-                                 (f_win_src_q == 2'd1) ? i_pos1 : i_pos0;
+    wire signed [W_POS-1:0] wp = (f_win_src_q == 2'd2) ? i_pos2 : (f_win_src_q == 2'd1) ? i_pos1 : i_pos0;
     // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
     // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
-    wire r_inwin_d = !a_wen_q || ((a_wlo_q <= a_wp_q) && (a_wp_q <= a_whi_q));
+    // (source 3: the count after the last call's pulse is the register ps_cnt now)
+    wire signed [W_POS-1:0] a_w = a_w3_q ? ps_cnt_q : a_wp_q;
+    // Each compare as a 19-bit upper part (signed: <, <=) and a 19-bit lower part (unsigned <=),
+    // registered in R and combined in B1 (the window result is used in B3):
+    //   lo <= w  iff  lo_u < w_u || (lo_u <= w_u && lo_l <= w_l), and w <= hi likewise
+    wire [5:0] r_wc_d = {($signed(a_wlo_q[37:19]) <  $signed(a_w[37:19])),
+                         ($signed(a_wlo_q[37:19]) <= $signed(a_w[37:19])),
+                         (a_wlo_q[18:0] <= a_w[18:0]),
+                         ($signed(a_w[37:19]) <  $signed(a_whi_q[37:19])),
+                         ($signed(a_w[37:19]) <= $signed(a_whi_q[37:19])),
+                         (a_w[18:0] <= a_whi_q[18:0])};
+    wire b_inwin_d = r_v_q && (!r_wen_q || ((r_wc_q[5] || (r_wc_q[4] && r_wc_q[3])) &&
+                                            (r_wc_q[2] || (r_wc_q[1] && r_wc_q[0]))));
 
     // ---- stage R: increments from the ROM data ------------------------------------------------
     // rom_q is ROM[s] of the last call's stage A while a_v = 1 (the last call ran); while a_v = 0
@@ -532,7 +589,10 @@ module pso (
             f_min_period_q <= {W_GAP{1'b0}};
             f_clear_q <= 1'b0;
             f_we_q <= 1'b0;
-            cfg_ok_q <= 1'b1;                 // the reset values are a legal configuration
+            ok_a_q <= 1'b1;                   // the reset values are a legal configuration
+            ok_w_q <= 1'b1;
+            ok_t_q <= 1'b1;
+            ok_ae_q <= 1'b0;
             bad_q <= {64{1'b1}};
             entry0_q <= {W_DIST{1'b0}};
         end else begin
@@ -551,7 +611,10 @@ module pso (
             f_min_period_q <= i_min_period;
             f_clear_q <= i_clear;
             f_we_q <= i_arr_we;
-            cfg_ok_q <= cfg_ok_d;
+            ok_a_q <= ok_a_d;
+            ok_w_q <= win_ok;
+            ok_t_q <= thr_ok;
+            ok_ae_q <= ok_a_d && i_enable;
             bad_q <= bad_d;
             if (i_arr_we && i_arr_addr == 6'd0) entry0_q <= i_arr_data;
         end
@@ -616,6 +679,7 @@ module pso (
             a_pulse_q <= 1'b0;
             a_wen_q <= 1'b0;
             a_wp_q <= {W_POS{1'b0}};
+            a_w3_q <= 1'b0;
             a_wlo_q <= {W_POS{1'b0}};
             a_whi_q <= {W_POS{1'b0}};
             a_v_q <= 1'b0;
@@ -623,12 +687,15 @@ module pso (
             ps_cnt_q <= {W_POS{1'b0}};
             sp_k_q <= 5'd0;
             sp_en_q <= 1'b0;
+            sp_go_q <= 1'b0;
+            sp_gt_q <= 1'b0;
             sp_inc_q <= {W_INC{1'b0}};
             sp_m_q <= {W_GAP{1'b0}};
             sp_thr_q <= {W_PROD{1'b0}};
             sp_hi_q <= {W_SPHI{1'b0}};
             sp_lo_q <= {W_GAP{1'b0}};
-            r_inwin_q <= 1'b0;
+            r_wen_q <= 1'b0;
+            r_wc_q <= 6'd0;
             r_v_q <= 1'b0;
             b_x_q <= {W_INCR{1'b0}};
             b_dy_q <= {W_CHORD{1'b0}};
@@ -683,27 +750,34 @@ module pso (
             a_pulse_q <= ps_pulse;
             a_wen_q <= f_win_en_q;
             a_wp_q <= wp;
+            a_w3_q <= (f_win_src_q == 2'd3);
             a_wlo_q <= f_win_low_q;
             a_whi_q <= f_win_high_q;
             a_v_q <= 1'b1;
             ph_q <= ph_d;
             ps_cnt_q <= ps_cnt_d;
+            sp_go_q <= sp_step && (sp_k_q == 5'd16) && sp_en_q;   // k = 0 and a sample held next
             if (sp_load) begin
                 sp_k_q <= 5'd1;
                 sp_en_q <= (f_min_period_q != 16'd0) && (thr0[W_DIST-1:W_PROD] == 8'd0);
                 sp_inc_q <= inc;
-                sp_m_q <= f_min_period_q;
+                sp_m_q <= f_min_period_q >> 1;
                 sp_thr_q <= thr0[W_PROD-1:0];
-                sp_hi_q <= {W_SPHI{1'b0}};
-                sp_lo_q <= {W_GAP{1'b0}};
+                sp_hi_q <= sp_h0 >> 1;
+                sp_lo_q <= {sp_h0[0], {(W_GAP-1){1'b0}}};
             end else if (sp_step) begin
                 sp_k_q <= (sp_k_q == 5'd16) ? 5'd0 : sp_k_q + 5'd1;
-                sp_m_q <= sp_m_q >> 1;
-                sp_hi_q <= sp_sh >> 1;
-                sp_lo_q <= {sp_sh[0], sp_lo_q[W_GAP-1:1]};
+                if (sp_k_q == 5'd16) begin
+                    sp_gt_q <= (sp_prod > sp_thr_q);
+                end else begin
+                    sp_m_q <= sp_m_q >> 1;
+                    sp_hi_q <= sp_sh >> 1;
+                    sp_lo_q <= {sp_sh[0], sp_lo_q[W_GAP-1:1]};
+                end
             end
             // R (r_y, r_x, part: above)
-            r_inwin_q <= a_v_q && r_inwin_d;
+            r_wen_q <= a_wen_q;
+            r_wc_q <= r_wc_d;
             r_v_q <= a_v_q;
             // B1
             b_x_q <= r_x_q;
@@ -712,7 +786,7 @@ module pso (
             b_ym0_q <= ym0_d;
             b_xm1_q <= xm1_d;
             b_ym1_q <= ym1_d;
-            b_inwin_q <= r_inwin_q;
+            b_inwin_q <= b_inwin_d;
             b_v_q <= r_v_q;
             // B2
             b_fire1_q <= dec;
