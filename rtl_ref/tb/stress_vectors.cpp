@@ -951,6 +951,10 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // for the spacing check); again with entry 0 rewritten in the first call of the run. Calls
 // 120..319: one count per call on x, an array of 3 entries without wrap (done, idx stays at the
 // last entry), then emits exactly 2 calls apart with min_period 2 (not early) and 3 (freq_err).
+// Calls 320..359: a 3D diagonal with K = 1 (sqrt3 per call) on an array of three 2-count entries
+// without wrap: fires in consecutive calls up to done, and the call after done would fire again.
+// Calls 360..439: part-speed at INC_MAX with min_period 9 and the threshold exactly one 2^-32
+// count below INC_MAX x 9 (flagged), then exactly equal (not flagged): the product's last bit.
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -1116,6 +1120,35 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.fire_dist = C::MIN_DIST;
                 x.min_period = n < 260 ? 2 : 3;
             }
+        }
+        if (n >= 320 && n < 360) {  // directed: consecutive fires up to done
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.axis_mask = 7;
+            x.win_k = 1;
+            x.pulse_w = 1;
+            x.arr_en = true;
+            x.arr_len = 3;
+            x.enable = n >= 324;
+            if (n < 323) {
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n - 320);
+                x.arr_data = C::MIN_DIST;
+            }
+            for (int a = 0; a < 3; ++a) {
+                in.step[a] = 1;
+                in.pos[a] = n;
+            }
+        }
+        if (n >= 360 && n < 440) {  // directed: the spacing compare at its boundary
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            in.ps_inc = C::INC_MAX;
+            x.part_speed = true;
+            x.min_period = 9;
+            x.pulse_w = 1;
+            x.enable = n != 360 && n != 400;
+            x.fire_dist = C::INC_MAX * 9 - (n < 400 ? 1 : 0);
         }
         const lx::pso::out_t o = m.step(lxt::pso_to_hls(in), lxt::pso_to_hls(x));
         last_idx = static_cast<int64_t>(o.idx.to_uint64());
