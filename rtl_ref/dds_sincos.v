@@ -177,17 +177,22 @@ module dds_sincos #(
     // ---- output stage: quadrant mapping of the read stage ----------------------------------------
     wire [W_DAC-1:0] t_dir = {1'b0, s1_dir_q};
     wire [W_DAC-1:0] t_mir = s1_mir_q;
-    reg  [W_DAC-1:0] sin_v, cos_v;
     wire             gt_dir = t_dir > i_clip_hi;     // the magnitudes against the bound
     wire             gt_mir = t_mir > i_clip_hi;
-    always @* begin
-        case (s1_q_q)
-            2'd0:    begin sin_v = t_dir;  cos_v = t_mir;  end
-            2'd1:    begin sin_v = t_mir;  cos_v = -t_dir; end
-            2'd2:    begin sin_v = -t_dir; cos_v = -t_mir; end
-            default: begin sin_v = -t_mir; cos_v = t_dir;  end
-        endcase
-    end
+    // quadrant mapping as one conditional negation each, (x ^ {neg}) + neg: the word select and
+    // the inversion are one LUT in front of the chain, the carry-in is the sign, so the chain
+    // ends in the output register (no multiplexer behind a negation)
+    //     q | sin        | cos
+    //     0 |  T[r]      |  T[P/4-r]
+    //     1 |  T[P/4-r]  | -T[r]
+    //     2 | -T[r]      | -T[P/4-r]
+    //     3 | -T[P/4-r]  |  T[r]
+    wire             sin_neg = s1_q_q[1];
+    wire             cos_neg = s1_q_q[1] ^ s1_q_q[0];
+    wire [W_DAC-1:0] sin_x   = (s1_q_q[0] ? t_mir : t_dir) ^ {W_DAC{sin_neg}};
+    wire [W_DAC-1:0] cos_x   = (s1_q_q[0] ? t_dir : t_mir) ^ {W_DAC{cos_neg}};
+    wire [W_DAC-1:0] sin_v   = sin_x + {{(W_DAC-1){1'b0}}, sin_neg};
+    wire [W_DAC-1:0] cos_v   = cos_x + {{(W_DAC-1){1'b0}}, cos_neg};
 
     always @(posedge i_clk) begin
         if (i_rst) begin

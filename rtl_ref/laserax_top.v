@@ -154,7 +154,7 @@ module laserax_top #(
     reg        [15:0]   r_pace_m;
     reg        [31:0]   r_backlog_thr;
     reg        [12:0]   r_mark_len;
-    reg        [4:0]    r_dac_width;
+    reg        [17:0]   r_dac_hi;        // 2^(dac_width-1) - 1 of the presented dac_width (below)
     reg        [17:0]   r_amplitude;
     reg                 r_rehome;
     reg                 r_clear;
@@ -172,6 +172,20 @@ module laserax_top #(
     reg                 r_map_we;
     reg        [9:0]    r_map_addr;
     reg signed [23:0]   r_map_data;
+    // the DAC bound of the presented dac_width, by table (other widths fail the configuration
+    // check; they give the 18-bit bound)
+    reg  [17:0]         dac_hi_in;
+    always @* begin
+        case (i_dac_width)
+            5'd12:   dac_hi_in = 18'd2047;
+            5'd13:   dac_hi_in = 18'd4095;
+            5'd14:   dac_hi_in = 18'd8191;
+            5'd15:   dac_hi_in = 18'd16383;
+            5'd16:   dac_hi_in = 18'd32767;
+            5'd17:   dac_hi_in = 18'd65535;
+            default: dac_hi_in = 18'd131071;
+        endcase
+    end
     always @(posedge i_clk) begin
         r_period        <= i_period;
         r_period_m1     <= $signed({1'b0, i_period}) - 14'sd1;
@@ -183,7 +197,7 @@ module laserax_top #(
         r_pace_m        <= i_pace_m;
         r_backlog_thr   <= i_backlog_thr;
         r_mark_len      <= i_mark_len;
-        r_dac_width     <= i_dac_width;
+        r_dac_hi        <= dac_hi_in;
         r_amplitude     <= i_amplitude;
         r_rehome        <= i_rehome;
         r_clear         <= i_clear;
@@ -363,20 +377,11 @@ module laserax_top #(
         .o_homed(rep_homed));
 
     // DDS: rephase output step of the previous call; the table port is always active
-    // DAC bound 2^(w-1) - 1 by table (w = 12..18 in every running call, the only calls that
-    // clamp), for the register dac_hi of the guard below and the DDS's magnitude flags
-    reg  [17:0]        dac_hi_d;
-    always @* begin
-        case (r_dac_width)
-            5'd12:   dac_hi_d = 18'd2047;
-            5'd13:   dac_hi_d = 18'd4095;
-            5'd14:   dac_hi_d = 18'd8191;
-            5'd15:   dac_hi_d = 18'd16383;
-            5'd16:   dac_hi_d = 18'd32767;
-            5'd17:   dac_hi_d = 18'd65535;
-            default: dac_hi_d = 18'd131071;
-        endcase
-    end
+    // DAC bound 2^(w-1) - 1 (w = 12..18 in every running call, the only calls that clamp), for
+    // the register dac_hi of the guard below and the DDS's magnitude flags: the register stage's
+    // r_dac_hi, decoded there from the presented dac_width, so the DDS's compare chains start at
+    // a flip-flop
+    wire [17:0]        dac_hi_d = r_dac_hi;
     wire signed [17:0] dds_sin, dds_cos;
     wire               dds_sin_over, dds_cos_over;   // |code| > dac_hi, registered with the codes
     dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
