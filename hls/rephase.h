@@ -8,10 +8,12 @@
 // narrow carry chain from registers, the 38-bit positions are taps):
 //   * floor(d*tr/P) is kept by a Bresenham state (num, t = num + d - P, v = num - d): the carry
 //     of a forward count is the sign of t, the borrow of a backward count the sign of v, so the
-//     extra count of this call is known from registers before the count arrives; every next
-//     value of (num, t, v) is one 14-bit add of registers (k = d - P is a register, computed the
-//     call after A; the first count after A never carries and needs no k: `fresh`; its
-//     (num, t) = (d, 2d - P) are loaded in the call after it, from the register d: `first`);
+//     extra count of this call is known from registers before the count arrives; a count moves
+//     num (one 14-bit add of registers), t = num + k and v = num - d are formed from the
+//     registers in every call, so they are exact again before the next count (k = d - P is a
+//     register, computed the call after A; the first count after A never carries and needs no
+//     k: `fresh`; its (num, t, v) = (d, 2d - P, 0) are loaded in the call after it, from the
+//     register d: `first`);
 //   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else
 //     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
 //   * the phase is kept as w = (ph_out + P/8) mod P of the output position (w moves by ostep,
@@ -171,36 +173,28 @@ public:
         //     leaves (stage 1 resets it in the next call)
         const bool homing = in2 && s > 0 && at_last_;  // tr' == P
         bool back = false;
+        // t = num + d - P and v = num - d are formed from the registers num, k, d in every call
+        // (so after a count they are exact again in the next call, before the next count)
+        const cfg::br_t t_rc = cfg::br_t(cfg::br_t(num_) + k_);
+        const cfg::br_t v_rc = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg));
         if (stage_ == 1) {
             tr_ = 0;
             fresh_ = true;
             num_ = 0;
         } else if (stage_ == 2) {
             if (s > 0) {
-                if (fr) {  // num = 0: no carry; num' = d, t' = 2d - P in the next call
-                    v_ = 0;
+                if (fr) {  // num = 0: no carry; num' = d, t' = 2d - P, v' = 0 in the next call
                     fresh_ = false;
                 } else if (t_ >= 0) {  // num + d >= P: carry
-                    const cfg::br_t t_old = t_;
-                    t_ = cfg::br_t(t_ + k_);
-                    v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(pp));
-                    num_ = cfg::ph_t(t_old);
+                    num_ = cfg::ph_t(t_);
                 } else {
-                    t_ = cfg::br_t(t_ + cfg::br_t(d_));
-                    v_ = cfg::br_t(num_);
                     num_ = cfg::ph_t(num_ + d_);
                 }
             } else if (s < 0 && tr_ > 0) {
                 if (v_ < 0) {  // num < d: borrow
-                    const cfg::br_t v_old = v_;
-                    v_ = cfg::br_t(v_ - k_);
-                    t_ = cfg::br_t(num_);
-                    num_ = cfg::ph_t(v_old + cfg::br_t(pp));
+                    num_ = cfg::ph_t(v_ + cfg::br_t(pp));
                 } else {
-                    const cfg::br_t v_old = v_;
-                    v_ = cfg::br_t(v_ - cfg::br_t(d_));
-                    t_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(pp));
-                    num_ = cfg::ph_t(v_old);
+                    num_ = cfg::ph_t(v_);
                 }
             }
             tr_ = tr_ + s;
@@ -235,9 +229,12 @@ public:
         }
         // the call after the first count after A: num = d, t = 2d - P from the register d (loaded
         // in the call after A; no count reads them in between, counts are >= 2 calls apart)
+        t_ = t_rc;
+        v_ = v_rc;
         if (first) {
             num_ = d_reg;
             t_ = cfg::br_t(cfg::br_t(d_reg) + cfg::br_t(d_reg) - cfg::br_t(pp));
+            v_ = 0;
         }
         d_ = d_cur;
         // k = d - P from the register d (before this call's load): valid from the third call

@@ -91,7 +91,7 @@ module rephase (
     reg                    first_q, first_d;   // the first count after A was in the previous
                                                // call: this call loads num = d, t = 2d - P
     reg [W_PH-1:0]         num_q, num_d;
-    reg signed [W_BR-1:0]  t_q, t_d, v_q, v_d;
+    reg signed [W_BR-1:0]  t_q, v_q;
     reg signed [W_LAG-1:0] lag_q, lag_d;
     reg [W_PH-1:0]         w_q, w_d;
     reg                    t1_q, z0_q, w_init_q;  // w == P - 1, w == 0
@@ -193,11 +193,8 @@ module rephase (
     // 2d - P, loaded into t in the call after the first count after A (num' = d there)
     wire signed [W_BR-1:0] t_ld   = (d_br <<< 1) - px_br;
     wire signed [W_BR-1:0] num_br = $signed({{(W_BR-W_PH){1'b0}}, num_q});
-    wire signed [W_BR-1:0] t_pk   = t_q + k_q;
-    wire signed [W_BR-1:0] t_pd   = t_q + d_br;
-    wire signed [W_BR-1:0] num_mp = num_br - px_br;
-    wire signed [W_BR-1:0] v_mk   = v_q - k_q;
-    wire signed [W_BR-1:0] v_md   = v_q - d_br;
+    wire signed [W_BR-1:0] t_rc   = num_br + k_q;     // t = num + d - P
+    wire signed [W_BR-1:0] v_rc   = num_br - d_br;    // v = num - d
     wire signed [W_BR-1:0] v_pp   = v_q + px_br;
     wire [W_PH-1:0]        num_pd = num_q + d_q;
 
@@ -274,8 +271,6 @@ module rephase (
         tr_d       = tr_q;
         fresh_d    = fresh_q;
         num_d      = num_q;
-        t_d        = t_q;
-        v_d        = v_q;
         b_d        = b_q;
         c_d        = c_q;
         z_d        = z_q;
@@ -301,28 +296,13 @@ module rephase (
             num_d   = {W_PH{1'b0}};
         end else if (stage_q == 2'd2) begin
             if (s_pos) begin
-                if (fr) begin                                   // num = 0: no carry
-                    v_d     = {W_BR{1'b0}};                     // num' = d, t' = 2d - P in the
-                    fresh_d = 1'b0;                             // next call (below)
-                end else if (!t_neg) begin                // carry
-                    num_d = t_lo;
-                    t_d   = t_pk;
-                    v_d   = num_mp;
-                end else begin
-                    num_d = num_pd;
-                    t_d   = t_pd;
-                    v_d   = num_br;
-                end
+                if (fr) fresh_d = 1'b0;                   // num = 0: no carry; num' = d,
+                                                          // t' = 2d - P, v' = 0 in the next call
+                else if (!t_neg) num_d = t_lo;            // carry: num + d - P
+                else             num_d = num_pd;
             end else if (s_neg && tr_pos) begin
-                if (v_neg) begin                          // borrow
-                    num_d = v_pp_lo;
-                    t_d   = num_br;
-                    v_d   = v_mk;
-                end else begin
-                    num_d = v_lo;
-                    t_d   = num_mp;
-                    v_d   = v_md;
-                end
+                if (v_neg) num_d = v_pp_lo;               // borrow: num - d + P
+                else       num_d = v_lo;
             end
             tr_d = tr_back ? {W_TR{1'b0}} : tr_s;
         end
@@ -382,7 +362,11 @@ module rephase (
     // the first count); real counts are >= 2 calls apart, so no count reads (num, t) in between,
     // and no path runs from wA into these registers
     wire [W_PH-1:0]         num_nx    = first_q ? d_q : num_d;
-    wire signed [W_BR-1:0]  t_nx      = first_q ? t_ld : t_d;
+    // t = num + d - P and v = num - d are formed from num in every call (the call after a count
+    // sees the new num: real counts are >= 2 calls apart, so the next count finds them formed);
+    // in the call after the first count they take num' = d directly (t = 2d - P, v = 0)
+    wire signed [W_BR-1:0]  t_nx      = first_q ? t_ld : t_rc;
+    wire signed [W_BR-1:0]  v_nx      = first_q ? {W_BR{1'b0}} : v_rc;
 
     always @(posedge i_clk) begin
         if (i_rst) begin
@@ -443,7 +427,7 @@ module rephase (
             first_q    <= first_d;
             num_q      <= num_nx;
             t_q        <= t_nx;
-            v_q        <= v_d;
+            v_q        <= v_nx;
             lag_q      <= lag_d;
             w_q        <= w_d;
             t1_q       <= t1_n;
@@ -728,6 +712,7 @@ module rephase (
                 if (f_age != 2'd3) assert(f_tr <= 1);                // counts >= 2 calls apart
                 if (f_age == 2'd1) assert(f_tr == 0 || f_pnz);
                 if (fresh_q) assert(f_tr == 0 && !first_q);
+                if (f_age == 2'd1 && !fresh_q) assert(first_q);       // a count in the call after A
                 if (first_q) assert(f_tr == 1 && f_pnz && f_age != 2'd0); // the call after the first count
 `ifdef FORMAL_ADJ
                 assert(f_r < f_per);
@@ -745,11 +730,13 @@ module rephase (
                 // hardware state: num = r; t = num + d - P, v = num - d after the first count;
                 // k = d - P from the third call after A, d loaded in the call after A
                 // (num, t) of the first count are loaded in the call after it (first), from d
-                if (first_q) assert({1'b0, d_q} == f_r && v_q == {W_BR{1'b0}});
+                if (first_q) assert({1'b0, d_q} == f_r);
                 else assert({1'b0, num_q} == f_r);
                 if (f_age >= 2'd2) assert(k_q == $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
+                // t and v are formed from num in every call: exact unless the previous call
+                // moved num (a real count; no count reads them then, counts >= 2 calls apart)
                 if (fresh_q) assert(f_r == 0);
-                else if (!first_q) begin
+                else if (!first_q && !f_pnz) begin
                     assert(t_q == $signed({2'b00, num_q}) + $signed({2'b00, d_q}) - $signed({1'b0, f_per}));
                     assert(v_q == $signed({2'b00, num_q}) - $signed({2'b00, d_q}));
                 end
