@@ -139,7 +139,7 @@ MUTATIONS=(
   "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"
   "op_tz_emit|output_pacer.v|output_pacer|s/wire              tz_d = !emit_nz \&\& /wire              tz_d = /"
   "op_conservation|output_pacer.v|output_pacer_sum|s/t_n  = {{(W_T-1){e_pos_q}}, e_prev_q\[0\]};/t_n  = {{(W_T-1){1'b0}}, e_prev_q[0]};/"
-  "dds_quadrant|dds_sincos.v|dds_sincos|s/2'd1:    begin sin_v = t_mir;  cos_v = -t_dir; end/2'd1:    begin sin_v = t_mir;  cos_v = t_dir; end/"
+  "dds_quadrant|dds_sincos.v|dds_sincos|s/wire             cos_neg = s1_q_q\[1\] ^ s1_q_q\[0\];/wire             cos_neg = s1_q_q[1];/"
   "dds_wrap|dds_sincos.v|dds_sincos|s/|| (s_inc \&\& rp1_q == q_m1)/|| (s_inc \&\& rp1_q == quarter)/"
   "dds_mirror_addr|dds_sincos.v|dds_sincos|s/({W_R{ostep_pos}} \& (quarter - rp1_q))/({W_R{ostep_pos}} \& (quarter - r_q))/"
   "dds_bypass|dds_sincos.v|dds_sincos|s/wire             wp_dir = wp_we_q \&\& wp_addr_q == a_dir_q;/wire             wp_dir = 1'b0;/"
