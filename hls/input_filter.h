@@ -47,9 +47,27 @@ public:
         cnt_ = 0;
         fill_ = 0;
         ready_ = false;
+        quiet_ = false;
     }
 
+    // the block state for the caller's own clock enable (see step): settled at the level of pin
+    bool settled(bool pin) const { return quiet_ && pin == s1_; }
+    bool level() const { return f_; }
+    // the call of step() in the settled state (settled(pin)): only the pass decision is loaded
+    void hold(cnt_t n) { ready_ = n <= 1; }
+
     out_t step(bool pin, cnt_t n) {
+        // settled (quiet_: valid, cnt = 0, s1 = s2 = f) and the pin still at that level: the call
+        // below would hold every register but the pass decision (cnt + 1 = 1 >= N) and return
+        // (f, 1, 0); a clock enable of the rest (issue 13: simulation speed; same outputs)
+        if (settled(pin)) {
+            hold(n);
+            out_t q;
+            q.f = f_;
+            q.valid = true;
+            q.glitch = false;
+            return q;
+        }
         const bool glitch = valid_ && s2_ == f_ && cnt_ != 0;
         if (!valid_) {
             if (fill_ == 2) {
@@ -71,6 +89,7 @@ public:
         ready_ = uint<W_CNT + 1>(cnt_) + 1 >= n;
         s2_ = s1_;
         s1_ = pin;
+        quiet_ = valid_ && cnt_ == 0 && s1_ == s2_ && s2_ == f_;
         out_t o;
         o.f = f_;
         o.valid = valid_;
@@ -80,6 +99,7 @@ public:
 
 private:
     bool s1_, s2_, f_, valid_;
+    bool quiet_;  // valid_ && cnt_ == 0 && s1_ == s2_ == f_ (registered with them)
     bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
     cnt_t cnt_;
     typename cfg::fill_t fill_;

@@ -66,6 +66,8 @@ struct pulse_multiplier_cfg {
     using cnt_t = uint<W_CNT>;
     using nwide_t = sint<W_RAW + 1>;   // N + step before the wrap
     using carry_t = uint<1>;
+    static constexpr int QUIET = 3;    // quiet calls after which the pipeline holds (step())
+    using quiet_t = uint<2>;
 };
 static_assert(pulse_multiplier_cfg::W_OFFSET < pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO - 1 &&
                   pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO + 1 <= pulse_multiplier_cfg::W_ACC,
@@ -115,6 +117,7 @@ public:
         x_ = 0;
         y_ = 0;
         acy_ = 0;
+        quiet_ = 0;
     }
 
     // Preset port (testbench aid, not in the RTL): N and the pair (R, OFF) are loaded, the
@@ -141,6 +144,20 @@ public:
     }
 
     out_t step(step_t step, ratio_t ratio, offset_t offset) {
+        // quiet call: no count, the sequencer idle and none starting (pend_ = 0), after at least
+        // three such calls (quiet_). Then lo, N, T are held, inc = c = 0 since the first of them,
+        // hi, c2, T_hi_d since the second, comp_int since the third, comp since the fourth: every
+        // register holds but the registered compare (pend_) and delta = 0 (a clock enable of the
+        // rest; issue 13: simulation speed; same outputs)
+        if (step == 0 && !busy_ && !pend_ && quiet_ == cfg::QUIET) {
+            pend_ = ratio != r_use_ || offset != off_tgt_;
+            out_t q;
+            q.comp = comp_;
+            q.delta = 0;
+            return q;
+        }
+        // a quiet call (see above) counts towards quiet_
+        const bool quiet = step == 0 && !busy_ && !pend_;
         // ---- stage 4: outputs (comp_int of three calls ago) --------------------------------
         const delta_t delta_next = delta_t(ci_) - delta_t(comp_);
         const pos_t comp_next = ci_;
@@ -214,6 +231,7 @@ public:
         lo_ = lo_next;
         c_ = c_next;
         inc_ = inc_next;
+        quiet_ = !quiet ? cfg::quiet_t(0) : quiet_ == cfg::QUIET ? quiet_ : cfg::quiet_t(quiet_ + 1);
         return o;
     }
 
@@ -329,6 +347,7 @@ private:
     cfg::carry_t scy_;
     uint<cfg::W_ACC> x_, y_;  // T + OFF' - OFF_old, then T_new (built a quarter per call)
     cfg::carry_t acy_;
+    cfg::quiet_t quiet_;  // consecutive quiet calls (no count, sequencer idle, none pending), up to QUIET
 };
 
 }  // namespace lx

@@ -66,6 +66,30 @@ public:
 
     out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
                bool clear) {
+        // the three filters settled at the pin levels (so A' = pa, B' = pb: no count, no glitch),
+        // primed and no clear: the call below holds every register but the filters' pass
+        // decisions, since / close and the laser alarm (a clock enable of the rest; issue 13:
+        // simulation speed; same outputs)
+        if (primed_ && !clear && fa_.settled(a) && fb_.settled(b) && fe_.settled(lerr)) {
+            fa_.hold(glitch_n);
+            fb_.hold(glitch_n);
+            fe_.hold(glitch_n);
+            const bool lerr_q = fe_.level();
+            count_since(false, min_spacing);
+            if (lerr_q) lerr_alarm_ = true;
+            out_t q;
+            q.step = 0;
+            q.raw_count = raw_;
+            q.illegal = false;
+            q.ovs = false;
+            q.err_cnt = err_cnt_;
+            q.illegal_st = illegal_st_;
+            q.ovs_st = ovs_st_;
+            q.lerr = lerr_q;
+            q.lerr_alarm = lerr_alarm_;
+            q.glitch_st = glitch_st_;
+            return q;
+        }
         const input_filter<cfg::W_GLITCH>::out_t ra = fa_.step(a, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t rb = fb_.step(b, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t re = fe_.step(lerr, glitch_n);
@@ -100,12 +124,7 @@ public:
         // overspeed: close_ (since + 1 < min_spacing) was decided in the previous call, with that
         // call's min_spacing (DESIGN 4.2: the comparator is a register, off the step path)
         const bool ovs = step != 0 && close_;
-        if (step != 0) {
-            since_ = 0;
-        } else if (since_ != cfg::SINCE_MAX) {
-            since_ = since_ + 1;
-        }
-        close_ = uint<cfg::W_SPACING + 1>(since_) + 1 < min_spacing;
+        count_since(step != 0, min_spacing);
         if (illegal) {
             illegal_st_ = true;
             if (err_cnt_ != cfg::ERRCNT_MAX) err_cnt_ = err_cnt_ + 1;
@@ -130,6 +149,16 @@ public:
     }
 
 private:
+    // the edge spacing counter (reset by a counted step, saturating) and the registered compare
+    void count_since(bool counted, cfg::spacing_t min_spacing) {
+        if (counted) {
+            since_ = 0;
+        } else if (since_ != cfg::SINCE_MAX) {
+            since_ = since_ + 1;
+        }
+        close_ = uint<cfg::W_SPACING + 1>(since_) + 1 < min_spacing;
+    }
+
     input_filter<cfg::W_GLITCH> fa_, fb_, fe_;
     bool pa_, pb_, primed_;
     raw_t raw_;

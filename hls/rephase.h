@@ -108,6 +108,44 @@ public:
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                period_t mark_len) {
         const cfg::p_t pp = period;
+        // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
+        //    load in flight, no switch rise, no leave. Every register below then holds except
+        //    k, bs, at_last (formed from held registers and P), the stage-1 window state and the
+        //    switch samples (a clock enable of the rest; issue 13: simulation speed; same outputs)
+        if (pstep == 0 && lag_ == 0 && w_init_ && !dnew_ && !first_ && !rehome && !unhome &&
+            !(sw && !sw_prev_ && sw_seen_)) {
+            if (stage_ == 1) {
+                tr_ = 0;
+                fresh_ = true;
+                num_ = 0;
+            }
+            k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
+            bs_ = fwd_ ? pos_t(a_ + pos_t(pp)) : pos_t(a_ - pos_t(pp));
+            at_last_ = tr_ == tr_t(pp) - 1;
+            sw_prev_ = sw;
+            sw_seen_ = sw_valid;
+            out_t q;
+            q.ostep = 0;
+            q.out_pos = out_pos_;
+            q.mark = stage_ == 3 && u_ >= 0 && u_ <= pos_t(len_);
+            q.stage = stage_;
+            q.a = a_;
+            q.b = b_;
+            q.c = c_;
+            q.z = z_;
+            q.adj = adj_;
+            q.d = d_;
+            q.homed = stage_ == 3;
+            return q;
+        }
+        return step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
+    }
+
+private:
+    // one call that is not quiet (the whole step)
+    out_t step_run(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
+                   period_t mark_len) {
+        const cfg::p_t pp = period;
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
         const bool leave = (unhome || rehome) && stage_ != 1;
         const bool in2 = stage_ == 2 && !leave;
@@ -274,7 +312,6 @@ public:
         return o;
     }
 
-private:
     using tr_t = cfg::tr_t;
 
     // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
