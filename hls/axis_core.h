@@ -27,7 +27,33 @@
 // the plain path (reload and check every call), which computes the same.
 #if !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && !defined(LASERAX_USE_AC_TYPES)
 #include <cstring>
-#define LASERAX_REGS_SAME(a, b) (std::memcmp(&(a), &(b), sizeof(axis_regs)) == 0)
+namespace lx {
+// Byte equality of two objects of a size that is a multiple of 16 (GCC / Clang: inline 16-byte
+// compares, the in-force operand 16-byte aligned; std::memcmp elsewhere).
+template <typename T>
+inline bool same_bytes16(const T& a, const T& b) {
+#if defined(__GNUC__) || defined(__clang__)
+    static_assert(sizeof(T) % 16 == 0, "same_bytes16: size a multiple of 16");
+    typedef signed char v16 __attribute__((vector_size(16)));
+    const char* pa = reinterpret_cast<const char*>(&a);
+    const char* pb = reinterpret_cast<const char*>(&b);
+    v16 eq = v16{} == v16{};  // all ones
+#pragma GCC unroll 16
+    for (unsigned i = 0; i < sizeof(T); i += 16) {
+        v16 x, y;
+        std::memcpy(&x, pa + i, 16);
+        std::memcpy(&y, pb + i, 16);
+        eq &= x == y;
+    }
+    typedef long long v2 __attribute__((vector_size(16)));
+    const v2 w = reinterpret_cast<v2>(eq);
+    return (w[0] & w[1]) == -1;
+#else
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+#endif
+}
+}  // namespace lx
+#define LASERAX_REGS_SAME(a, b) (::lx::same_bytes16((a), (b)))
 #else
 #define LASERAX_REGS_SAME(a, b) false
 #endif
@@ -156,15 +182,13 @@ public:
         dds_.reset();
         emap_.reset();  // pipeline only, not the table RAM
         dac_clip_st_ = false;
-        // inter-block registers: every out_t member has a default member initialiser (0 / false)
+        // inter-block registers (0 / false): the block outputs in out_ (every axis_out member has
+        // a default member initialiser), and those no output shows
+        out_ = axis_out{};
         swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
-        dec_q_ = quad_decoder::out_t{};
-        mul_q_ = pulse_multiplier::out_t{};
-        pac_q_ = output_pacer::out_t{};
-        rep_q_ = rep_reg{};
+        lerr_q_ = false;
         rep_q2_ = rep_tap{};
         rep_q3_ = rep_tap{};
-        emap_q_ = error_map::out_t{};
     }
 
     dds_sincos& dds() { return dds_; }
@@ -173,112 +197,126 @@ public:
         // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
         // call (regs_q_, read in place) and on their configuration check, made (in hardware) in
         // that call on the presented values and registered (chk_q_)
-        // one result, built in place by run() (or safe_out()) and returned without a copy
-        axis_out o = powered_ ? run(pins, regs_q_) : safe_out(false);
-        powered_ = true;  // power-up call: no registers in force, every block in reset
+        if (powered_) {
+            run(pins, regs_q_);
+        } else {
+            safe_out(false);  // power-up call: no registers in force, every block in reset
+            powered_ = true;
+        }
         // the register load and its check; skipped when the presented block is the one in force
         // (same bytes: same values, so the same check; the C-simulation shortcut above)
-        if (!LASERAX_REGS_SAME(presented, regs_q_)) {
+        same_q_ = LASERAX_REGS_SAME(presented, regs_q_);
+        if (!same_q_) {
             regs_q_ = presented;
             chk_q_ = check(regs_q_);
         }
-        return o;
+        return out_;
     }
 
 private:
-    // outputs of a call in which the chain does not run: every field 0 / false, stage 1; cfg_err and
-    // alarm set in the safe state (invalid configuration), not in the power-up call
-    static axis_out safe_out(bool cfg_err) {
-        axis_out o;  // every field 0 / false (default member initialisers)
-        o.cfg_err = cfg_err;
-        o.alarm = cfg_err;
-        o.stage = 1;
-        return o;
+    // outputs of a call in which the chain does not run (out_ holds the inter-block registers of
+    // the reset, every field 0 / false): stage 1; cfg_err and alarm set in the safe state
+    // (invalid configuration), not in the power-up call
+    void safe_out(bool cfg_err) {
+        out_.cfg_err = cfg_err;
+        out_.alarm = cfg_err;
+        out_.stage = 1;
     }
 
-    // one call of the chain on the registers in force
-    axis_out run(const axis_pins& pins, const axis_regs& regs) {
-        // held compensation registers: loaded in every call without comp_sync, else on comp_commit;
-        // not part of the chain reset (register file state)
-        if (!regs.comp_sync || regs.comp_commit) {
-            ratio_h_ = regs.ratio;
-            offset_h_ = regs.comp_offset;
-        }
-        // A period change while running is a reconfiguration: the phase counters of the old
-        // period are meaningless for the next one, so the chain restarts (one call in the safe
-        // state). Coming out of reset or of an invalid configuration the blocks are already reset.
-        const bool period_changed = run_q_ && regs.period != period_q_;
-        const bool ok = chk_q_.ok && ratio_h_ != 0 && !period_changed;
-        period_q_ = regs.period;
-        run_q_ = ok;
-        if (!ok) {
-            reset();  // safe state: every block held in reset
-            // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
-            // read the table, so its true dual-port RAM has at most two accesses per call
-            if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
-            return safe_out(true);
+    // one call of the chain on the registers in force; its outputs in out_, whose block outputs
+    // are the inter-block registers the blocks of the next call read
+    void run(const axis_pins& pins, const axis_regs& regs) {
+        // The same registers in force as in the previous call (same_q_), which ran: the loads
+        // and checks below would load the values they hold and find the configuration valid
+        // again (C simulation only, see LASERAX_REGS_SAME; issue 13: simulation speed).
+        if (!(same_q_ && run_q_)) {
+            // held compensation registers: loaded in every call without comp_sync, else on
+            // comp_commit; not part of the chain reset (register file state)
+            if (!regs.comp_sync || regs.comp_commit) {
+                ratio_h_ = regs.ratio;
+                offset_h_ = regs.comp_offset;
+            }
+            // A period change while running is a reconfiguration: the phase counters of the old
+            // period are meaningless for the next one, so the chain restarts (one call in the safe
+            // state). Coming out of reset or of an invalid configuration the blocks are already
+            // reset.
+            const bool period_changed = run_q_ && regs.period != period_q_;
+            const bool ok = chk_q_.ok && ratio_h_ != 0 && !period_changed;
+            period_q_ = regs.period;
+            run_q_ = ok;
+            if (!ok) {
+                reset();  // safe state: every block held in reset
+                // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
+                // read the table, so its true dual-port RAM has at most two accesses per call
+                if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
+                safe_out(true);
+                return;
+            }
         }
         // Every block reads only inter-block registers of the previous call, so the order of the
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
-        const dds_sincos::out_t dds = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
+        axis_out& o = out_;
+        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude);
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         const dac_t dac_hi = chk_q_.dac_hi;
         bool clip = false;
-        const dac_t sin = clamp_dac(dds.sin, dac_hi, clip);
-        const dac_t cos = clamp_dac(dds.cos, dac_hi, clip);
+        o.sin = clamp_dac(dds.sin, dac_hi, clip);
+        o.cos = clamp_dac(dds.cos, dac_hi, clip);
         if (regs.clear) dac_clip_st_ = false;
         if (clip) dac_clip_st_ = true;
+        o.dac_clip_st = dac_clip_st_;
+        o.cfg_err = false;
         // digital outputs from the rephase outputs of call t-3
-        bool qa = false, qb = false;
-        quad_levels(rep_q3_.out_pos, qa, qb);
-        const bool mark3 = rep_q3_.mark;
+        quad_levels(rep_q3_.out_pos, o.qa, o.qb);
+        o.ref_mark = rep_q3_.mark;
+        o.qz = rep_q3_.mark;
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
-        const error_map::out_t emap = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
-        const rephase::out_t rep = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
-                                             dec_q_.lerr, regs.period, regs.mark_len);
+        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
+        const rephase::out_t rep = rep_.step(o.pstep, swf_q_.f, swf_q_.valid, regs.rehome, lerr_q_,
+                                             regs.period, regs.mark_len);
         rep_q3_ = rep_q2_;
-        rep_q2_.out_pos = rep_q_.out_pos;
-        rep_q2_.mark = rep_q_.mark;
-        rep_q_.ostep = rep.ostep;
-        rep_q_.out_pos = rep.out_pos;
-        rep_q_.mark = rep.mark;
-        rep_q_.homed = rep.homed;
+        rep_q2_.out_pos = o.out_pos;
+        rep_q2_.mark = o.rep_mark;
+        o.stage = rep.stage;
+        o.homed = rep.homed;
+        o.ostep = rep.ostep;
+        o.out_pos = rep.out_pos;
+        o.adj = rep.adj;
+        o.a_pos = rep.a;
+        o.b_pos = rep.b;
+        o.c_pos = rep.c;
+        o.z_pos = rep.z;
+        o.d = rep.d;
+        o.rep_mark = rep.mark;
         const output_pacer::out_t pac =
-            pac_.step(mul_q_.delta, emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
-        pac_q_ = pac;
-        emap_q_ = emap;
-        const pulse_multiplier::out_t mul = mul_.step(dec_q_.step, ratio_h_, offset_h_);
-        mul_q_ = mul;
+            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        o.ovs_backlog_st = pac.ovs_st;
+        o.backlog = pac.backlog;
+        o.pstep = pac.pstep;
+        o.paced_pos = pac.paced;
+        o.map_cfg_err = emap.cfg_err;
+        o.corr = emap.corr;
+        o.map_delta = emap.delta;
+        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_);
+        o.comp_pos = mul.comp;
+        o.delta = mul.delta;
         const quad_decoder::out_t dec =
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-        dec_q_ = dec;
+        lerr_q_ = dec.lerr;
+        o.lerr_alarm = dec.lerr_alarm;
+        o.illegal_st = dec.illegal_st;
+        o.err_cnt = dec.err_cnt;
+        o.ovs_edge_st = dec.ovs_st;
+        o.glitch_st = dec.glitch_st;
+        o.raw_count = dec.raw_count;
+        o.step = dec.step;
         swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
-
-        // every field in declaration order (aggregate initialisation: no zero fill first)
-        return axis_out{
-            sin, cos,                                  // sin, cos
-            mark3, qa, qb, mark3,                      // ref_mark, qa, qb, qz
-            false,                                     // cfg_err
-            rep.stage, rep.homed,                      // stage, homed
-            dec_q_.lerr_alarm, dec_q_.illegal_st,      // lerr_alarm, illegal_st
-            dec_q_.err_cnt,                            // err_cnt
-            dec_q_.ovs_st, pac_q_.ovs_st, dec_q_.glitch_st,  // ovs_edge_st, ovs_backlog_st, glitch_st
-            dec_q_.lerr_alarm || dec_q_.illegal_st || dec_q_.ovs_st || pac_q_.ovs_st || emap_q_.cfg_err ||
-                dac_clip_st_,                          // alarm
-            dac_clip_st_,                              // dac_clip_st
-            dec_q_.raw_count, dec_q_.step,             // raw_count, step
-            mul_q_.comp, mul_q_.delta,                 // comp_pos, delta
-            pac_q_.backlog, pac_q_.pstep, pac_q_.paced,  // backlog, pstep, paced_pos
-            rep.ostep, rep.out_pos, rep.adj,           // ostep, out_pos, adj
-            rep.a, rep.b, rep.c, rep.z,                // a_pos, b_pos, c_pos, z_pos
-            rep.d, rep.mark,                           // d, rep_mark
-            emap_q_.cfg_err, emap_q_.corr, emap_q_.delta,  // map_cfg_err, corr, map_delta
-        };
+        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_;
     }
 
 private:
@@ -289,29 +327,23 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;
+    // the outputs of the call: every block output in it is also the inter-block register that
+    // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
+    // delta, rephase ostep / out_pos / mark / homed)
+    axis_out out_;
     input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf_q_;
-    quad_decoder::out_t dec_q_;
-    pulse_multiplier::out_t mul_q_;
-    output_pacer::out_t pac_q_;
-    struct rep_reg {  // the rephase outputs of call t-1 that blocks read (dds, error map, taps)
-        step_t ostep = 0;
-        pos_t out_pos = 0;
-        bool mark = false;
-        bool homed = false;
-    };
-    rep_reg rep_q_;
+    bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
     struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
         pos_t out_pos = 0;
         bool mark = false;
     };
     rep_tap rep_q2_, rep_q3_;
-    error_map::out_t emap_q_;
     period_t period_q_ = 0;  // period register of the previous call
     ratio_t ratio_h_ = axis_core_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
     offset_t offset_h_ = 0;                           // comp_offset in force
     bool run_q_ = false;     // the previous call ran with a valid configuration
     bool dac_clip_st_ = false;  // DAC range guard sticky flag
-    axis_regs regs_q_ = axis_regs{};  // registers presented in the previous call (in force now)
+    alignas(16) axis_regs regs_q_ = axis_regs{};  // registers presented in the previous call (in force now)
     // configuration check of regs_q_ (registered with it) and the DAC code limit of its dac_width
     struct reg_check {
         bool ok = false;
@@ -319,6 +351,7 @@ private:
     };
     reg_check chk_q_ = check(axis_regs{});
     bool powered_ = false;            // false until the power-up call
+    bool same_q_ = false;  // regs_q_ holds the block in force in the previous call too (not reloaded)
 
     static reg_check check(const axis_regs& r) {
         reg_check c;
