@@ -29,21 +29,20 @@
 #include <cstring>
 namespace lx {
 // Byte equality of two objects of a size that is a multiple of 16 (GCC / Clang: inline 16-byte
-// compares, the in-force operand 16-byte aligned; std::memcmp elsewhere).
+// compares, b 16-byte aligned; std::memcmp elsewhere).
 template <typename T>
 inline bool same_bytes16(const T& a, const T& b) {
 #if defined(__GNUC__) || defined(__clang__)
     static_assert(sizeof(T) % 16 == 0, "same_bytes16: size a multiple of 16");
     typedef signed char v16 __attribute__((vector_size(16)));
     const char* pa = reinterpret_cast<const char*>(&a);
-    const char* pb = reinterpret_cast<const char*>(&b);
+    const v16* pb = static_cast<const v16*>(__builtin_assume_aligned(&b, 16));  // b: 16-byte aligned
     v16 eq = v16{} == v16{};  // all ones
 #pragma GCC unroll 16
-    for (unsigned i = 0; i < sizeof(T); i += 16) {
-        v16 x, y;
-        std::memcpy(&x, pa + i, 16);
-        std::memcpy(&y, pb + i, 16);
-        eq &= x == y;
+    for (unsigned i = 0; i < sizeof(T) / 16; ++i) {
+        v16 x;
+        std::memcpy(&x, pa + 16 * i, 16);
+        eq &= x == pb[i];
     }
     typedef long long v2 __attribute__((vector_size(16)));
     const v2 w = reinterpret_cast<v2>(eq);
