@@ -186,6 +186,7 @@ public:
         out_ = axis_out{};
         swf_q_ = input_filter<axis_core_cfg::W_DEBOUNCE>::out_t{false, false, false};
         lerr_q_ = false;
+        dec_alarm_ = false;
         rep_q2_ = rep_tap{};
         rep_q3_ = rep_tap{};
     }
@@ -281,17 +282,19 @@ private:
         rep_q3_ = rep_q2_;
         rep_q2_.out_pos = o.out_pos;
         rep_q2_.mark = o.rep_mark;
-        o.stage = rep.stage;
-        o.homed = rep.homed;
         o.ostep = rep.ostep;
-        o.out_pos = rep.out_pos;
-        o.adj = rep.adj;
-        o.a_pos = rep.a;
-        o.b_pos = rep.b;
-        o.c_pos = rep.c;
-        o.z_pos = rep.z;
-        o.d = rep.d;
-        o.rep_mark = rep.mark;
+        if (!rep.held) {  // (held: the other rephase outputs are those out_ holds)
+            o.stage = rep.stage;
+            o.homed = rep.homed;
+            o.out_pos = rep.out_pos;
+            o.adj = rep.adj;
+            o.a_pos = rep.a;
+            o.b_pos = rep.b;
+            o.c_pos = rep.c;
+            o.z_pos = rep.z;
+            o.d = rep.d;
+            o.rep_mark = rep.mark;
+        }
         const output_pacer::out_t pac =
             pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
         o.ovs_backlog_st = pac.ovs_st;
@@ -306,16 +309,19 @@ private:
         o.delta = mul.delta;
         const quad_decoder::out_t dec =
             dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-        lerr_q_ = dec.lerr;
-        o.lerr_alarm = dec.lerr_alarm;
-        o.illegal_st = dec.illegal_st;
-        o.err_cnt = dec.err_cnt;
-        o.ovs_edge_st = dec.ovs_st;
-        o.glitch_st = dec.glitch_st;
-        o.raw_count = dec.raw_count;
         o.step = dec.step;
+        if (!dec.held) {  // (held: the other decoder outputs are those out_ and lerr_q_ hold)
+            lerr_q_ = dec.lerr;
+            o.lerr_alarm = dec.lerr_alarm;
+            o.illegal_st = dec.illegal_st;
+            o.err_cnt = dec.err_cnt;
+            o.ovs_edge_st = dec.ovs_st;
+            o.glitch_st = dec.glitch_st;
+            o.raw_count = dec.raw_count;
+            dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
+        }
         swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
-        o.alarm = dec.lerr_alarm || dec.illegal_st || dec.ovs_st || pac.ovs_st || emap.cfg_err || dac_clip_st_;
+        o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || dac_clip_st_;
     }
 
 private:
@@ -332,6 +338,7 @@ private:
     axis_out out_;
     input_filter<axis_core_cfg::W_DEBOUNCE>::out_t swf_q_;
     bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
+    bool dec_alarm_;  // the decoder's part of alarm: lerr_alarm || illegal_st || ovs_st (out_)
     struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
         pos_t out_pos = 0;
         bool mark = false;

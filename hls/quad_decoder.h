@@ -43,6 +43,9 @@ public:
         bool lerr = false;
         bool lerr_alarm = false;
         bool glitch_st = false;  // sticky: the A or B glitch filter suppressed a pulse
+        // idle call without a laser error (see step): every output but step, illegal and ovs (0
+        // here) equals that of the previous call, so a caller may keep those it holds
+        bool held = false;
     };
 
     quad_decoder() { reset(); }
@@ -88,6 +91,9 @@ public:
             q.lerr = lerr_q;
             q.lerr_alarm = lerr_alarm_;
             q.glitch_st = glitch_st_;
+            // lerr = 0 now and in the previous call (the laser error filter held its level 0):
+            // every register output is that of the previous call
+            q.held = !lerr_q;
             return q;
         }
         const input_filter<cfg::W_GLITCH>::out_t ra = fa_.step(a, glitch_n);

@@ -67,6 +67,7 @@ public:
         pos_t a = 0, b = 0, c = 0, z = 0, adj = 0;
         cfg::ph_t d = 0;
         bool homed = false;
+        bool held = false;  // quiet call (see step): every output but ostep (0 here) is the previous call's
     };
 
     rephase() { reset(); }
@@ -136,6 +137,7 @@ public:
             q.adj = adj_;
             q.d = d_;
             q.homed = stage_ == 3;
+            q.held = true;
             return q;
         }
         return step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
