@@ -2,8 +2,6 @@
 #include "golden/axis_chain.h"
 
 #include <algorithm>
-#include <cstring>
-#include <type_traits>
 #include <utility>
 
 namespace golden {
@@ -49,24 +47,16 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
     // DESIGN 4.7 register stage: this call runs on the registers presented in the previous call
     // (in_force_, read in place); the registers presented now are in force from the next call
     const axis_out o = run(pins);
-    // config_ok() is a pure function of the registers: it is evaluated again (in run()) only
-    // after the block in force changed. The block is compared and copied as bytes (its padding
-    // too), so an unchanged block always compares equal (simulation speed, issue 13).
-    static_assert(std::is_trivially_copyable<axis_regs>::value, "axis_regs is copied as bytes");
-    if (std::memcmp(&in_force_, &presented, sizeof(axis_regs)) != 0) {
-        std::memcpy(static_cast<void*>(&in_force_), &presented, sizeof(axis_regs));
-        ok_known_ = false;
-    }
+    in_force_ = presented;
     return o;
 }
 
 axis_out axis_chain::run(const axis_pins& pins) {
-    axis_out o;  // every field is set on every path below
+    axis_out o{};
     const axis_regs& regs = in_force_;  // reset() keeps it (the register stage is not chain state)
     if (!powered_) {  // power-up call: no registers in force, every block in reset, outputs 0
         powered_ = true;
         reset();
-        o = axis_out{};
         o.stage = 1;
         return o;
     }
@@ -79,18 +69,13 @@ axis_out axis_chain::run(const axis_pins& pins) {
     // DESIGN 4.7: a change of the period register between two running calls is a
     // reconfiguration: the call in which the new value appears is a safe-state call.
     const bool period_changed = was_running_ && regs.period != last_period_;
-    if (!ok_known_) {  // config_ok(regs), evaluated once per register block in force
-        ok_ = config_ok(regs);
-        ok_known_ = true;
-    }
-    const bool running = ok_ && ratio_held_ != 0 && !period_changed;
+    const bool running = config_ok(regs) && ratio_held_ != 0 && !period_changed;
     last_period_ = regs.period;
     was_running_ = running;
     if (!running) {
         // safe state: every block and every inter-block register (including the t-3 delay of
         // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
         reset();
-        o = axis_out{};
         o.cfg_err = true;
         o.alarm = true;
         o.stage = 1;
@@ -172,7 +157,7 @@ axis_out axis_chain::run(const axis_pins& pins) {
     emap_q_ = emap_o;
     rep_q3_ = rep_q2_;
     rep_q2_ = rep_tap{rep_q_.out_pos, rep_q_.mark};
-    rep_q_ = rep_reg{rep_o.ostep, rep_o.out_pos, rep_o.mark, rep_o.homed};
+    rep_q_ = rep_o;
     return o;
 }
 

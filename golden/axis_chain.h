@@ -107,13 +107,7 @@ private:
     pulse_multiplier::out mul_q_{};
     output_pacer::out pac_q_{};
     error_map::out emap_q_{};
-    struct rep_reg {         // the rephase outputs of call t-1 that the blocks read
-        int ostep = 0;
-        int64_t out_pos = 0;
-        bool mark = false;
-        bool homed = false;
-    };
-    rep_reg rep_q_{};        // rephase output of call t-1
+    rephase::out rep_q_{};   // rephase output of call t-1
     struct rep_tap {         // the rephase outputs qa, qb, qz and ref_mark use (DESIGN 4.7)
         int64_t out_pos = 0;
         bool mark = false;
@@ -129,9 +123,6 @@ private:
     // the first call after power-up has none in force (power-up call). Not part of reset().
     axis_regs in_force_{};
     bool powered_ = false;
-    // config_ok(in_force_) (a memo: valid while ok_known_; reset() and a new block clear it)
-    bool ok_known_ = false;
-    bool ok_ = false;
 };
 
 }  // namespace golden
