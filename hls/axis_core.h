@@ -3,7 +3,8 @@
 // the configuration check and the digital A/B/Z outputs (DESIGN §4.7, register map §5).
 //
 // One call of step() is one clock. Between two blocks there is exactly one register stage: a
-// block consumes the outputs its upstream block returned at the previous call (the *_q members).
+// block consumes the outputs its upstream block returned at the previous call (held in out_, the
+// outputs of the previous call, and in the *_q members for those no output shows).
 // qa/qb/qz/ref_mark take the rephase outputs of three calls ago so that they change in the same
 // call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1, DESIGN 4.7).
 //
