@@ -89,6 +89,8 @@ public:
         o_cl_ = false;
         ovs_ = false;
         ovs_st_ = false;
+        thr_q_ = 0;
+        o_held_ = false;
     }
 
     out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
@@ -116,28 +118,17 @@ public:
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
         // ---- ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr of this call ----
-        const cfg::thi_t t_hi = cfg::thi_t(thr >> cfg::L);
-        const cfg::lo_t t_lo = cfg::lo_t(thr);
-        // B > thr: b_hi > t_hi, or equal halves and b_lo > t_lo
-        const bool gt = (cfg::cmp_t(b_hi_) > cfg::cmp_t(t_hi)) ||
-                        (cfg::cmp_t(b_hi_) == cfg::cmp_t(t_hi) && b_lo_ > t_lo);
-        // B < -thr: (b_hi + t_hi + cs) < 0 with cs the carry of b_lo + t_lo, cs = cl ? cu1 : cu0
-        // from the 10-bit halves; both outcomes of cl are registered
-        const cfg::cmp_t u = cfg::cmp_t(b_hi_) + cfg::cmp_t(t_hi);
-        const bool neg0 = u < 0;
-        const bool neg1 = cfg::cmp_t(u + 1) < 0;
-        const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo_ >> cfg::LH), bl_l = uint<cfg::LH>(b_lo_);
-        const uint<cfg::LH> tl_h = uint<cfg::LH>(t_lo >> cfg::LH), tl_l = uint<cfg::LH>(t_lo);
-        const bool cl = (uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH != 0;
-        const bool cu0 = (uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH != 0;
-        const bool cu1 = (uint<cfg::LH + 1>(bl_h) + tl_h + 1) >> cfg::LH != 0;
-        o_y1_ = gt || (cu1 ? neg1 : neg0);
-        o_y0_ = gt || (cu0 ? neg1 : neg0);
-        o_cl_ = cl;
+        // (held: o_y1, o_y0, o_cl were formed from these b_* and thr_q_ == thr, so the same values
+        // would be loaded again: a clock enable; issue 13: simulation speed)
+        if (!(o_held_ && thr == thr_q_)) {
+            ovs_stage1(thr);
+        }
 
         // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
         // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
-        b_hi_ = cfg::hi_t(a_hi_ + a_cy_);
+        const cfg::hi_t b_hi_next = cfg::hi_t(a_hi_ + a_cy_);
+        o_held_ = b_hi_next == b_hi_ && a_lo_ == b_lo_;  // (and thr_q_: the thr of the stage above)
+        b_hi_ = b_hi_next;
         b_lo_ = a_lo_;
         const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
         a_lo_ = cfg::lo_t(al);
@@ -179,6 +170,29 @@ public:
     }
 
 private:
+    // ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr (o_y1, o_y0, o_cl)
+    void ovs_stage1(cfg::thr_t thr) {
+        thr_q_ = thr;
+        const cfg::thi_t t_hi = cfg::thi_t(thr >> cfg::L);
+        const cfg::lo_t t_lo = cfg::lo_t(thr);
+        // B > thr: b_hi > t_hi, or equal halves and b_lo > t_lo
+        const bool gt = (cfg::cmp_t(b_hi_) > cfg::cmp_t(t_hi)) ||
+                        (cfg::cmp_t(b_hi_) == cfg::cmp_t(t_hi) && b_lo_ > t_lo);
+        // B < -thr: (b_hi + t_hi + cs) < 0 with cs the carry of b_lo + t_lo, cs = cl ? cu1 : cu0
+        // from the 10-bit halves; both outcomes of cl are registered
+        const cfg::cmp_t u = cfg::cmp_t(b_hi_) + cfg::cmp_t(t_hi);
+        const bool neg0 = u < 0;
+        const bool neg1 = cfg::cmp_t(u + 1) < 0;
+        const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo_ >> cfg::LH), bl_l = uint<cfg::LH>(b_lo_);
+        const uint<cfg::LH> tl_h = uint<cfg::LH>(t_lo >> cfg::LH), tl_l = uint<cfg::LH>(t_lo);
+        const bool cl = (uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH != 0;
+        const bool cu0 = (uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH != 0;
+        const bool cu1 = (uint<cfg::LH + 1>(bl_h) + tl_h + 1) >> cfg::LH != 0;
+        o_y1_ = gt || (cu1 ? neg1 : neg0);
+        o_y0_ = gt || (cu0 ? neg1 : neg0);
+        o_cl_ = cl;
+    }
+
     cfg::lo_t lo_;       // X = (hi + cq) * 2^L + lo
     cfg::hi_t hi_;
     cfg::cq_t cq_;
@@ -196,6 +210,8 @@ private:
     bool o_y1_, o_y0_, o_cl_;  // ovs first stage: the result for either lower carry, the carry
     bool ovs_;
     bool ovs_st_;
+    cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
+    bool o_held_;       // b_* are those of that compare (unchanged since)
 };
 
 }  // namespace lx
