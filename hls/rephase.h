@@ -111,10 +111,13 @@ public:
         const cfg::p_t pp = period;
         // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
         //    load in flight, no switch rise, no leave. Every register below then holds except
-        //    k, bs, at_last (formed from held registers and P), the stage-1 window state and the
-        //    switch samples (a clock enable of the rest; issue 13: simulation speed; same outputs)
+        //    t, v, k, bs, at_last (formed from held registers and P), the stage-1 window state and
+        //    the switch samples (a clock enable of the rest; issue 13: simulation speed; same
+        //    outputs)
         if (pstep == 0 && lag_ == 0 && w_init_ && !dnew_ && !first_ && !rehome && !unhome &&
             !(sw && !sw_prev_ && sw_seen_)) {
+            t_ = cfg::br_t(cfg::br_t(num_) + k_);  // as step_run: from num, k, d before the call
+            v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
             if (stage_ == 1) {
                 tr_ = 0;
                 fresh_ = true;
