@@ -13,6 +13,7 @@ error_map::error_map() {
 
 void error_map::reset() {
     phase_ = 0;
+    calls_ = 0;
     pending_.clear();
     cur_ = out{};
     corr_ = 0;
@@ -42,32 +43,35 @@ long double error_map::interp(const std::vector<int32_t>& tbl, const error_map_g
 error_map::out error_map::step(int64_t p, bool homed, const error_map_regs& r) {
     // output of this call: the last published sample result (the one of call t - (kLat - 1)
     // is published in this call)
-    if (!pending_.empty() && pending_.front().first == 0) {
+    if (!pending_.empty() && pending_.front().first == calls_) {
         cur_ = pending_.front().second;
         pending_.pop_front();
     }
-    for (auto& w : pending_) --w.first;
     out o = cur_;
     o.delta = o.corr - corr_;
     corr_ = o.corr;
     const bool sample = phase_ == 0;
     phase_ = (phase_ + 1) % kPeriod;
 
-    // a sample call's inputs, published kLat - 1 calls later
+    // a sample call's inputs, published kLat - 1 calls later (the inputs of other calls are not
+    // used)
     const int b = r.bank_sel ? 1 : 0;
-    const error_map_geom& g = r.geom[b];
-    out n;
-    const bool ok = r.map_en && geom_ok(g);  // read only with map_en (no check while disabled)
-    n.cfg_err = r.map_en && !ok;
-    n.active = r.map_en && homed && ok;
-    if (n.active && sample) {
-        bool inr = false;
-        const long double c = interp(tbl_[b], g, p, &inr);
-        n.corr = static_cast<int64_t>(std::floor(c + 0.5L));  // floor(c + 1/2): exact (see .h)
-        n.in_range = inr;
-        n.clamped = !inr;
+    if (sample) {
+        const error_map_geom& g = r.geom[b];
+        out n;
+        const bool ok = r.map_en && geom_ok(g);  // read only with map_en (no check while disabled)
+        n.cfg_err = r.map_en && !ok;
+        n.active = r.map_en && homed && ok;
+        if (n.active) {
+            bool inr = false;
+            const long double c = interp(tbl_[b], g, p, &inr);
+            n.corr = static_cast<int64_t>(std::floor(c + 0.5L));  // floor(c + 1/2): exact (see .h)
+            n.in_range = inr;
+            n.clamped = !inr;
+        }
+        pending_.emplace_back(calls_ + kLat - 1, n);  // published by call t + kLat - 1
     }
-    if (sample) pending_.emplace_back(kLat - 2, n);  // published by call t + kLat - 1
+    ++calls_;
 
     // Reading: the reads of a call see every write of the earlier calls; the write port of a
     // call acts after that call's reads and only on the bank not selected in the call.

@@ -69,8 +69,9 @@ public:
 private:
     std::vector<int32_t> tbl_[2];
     long phase_ = 0;           // calls since reset, modulo kPeriod
-    // results of sample calls not yet published, oldest first, each with the number of calls
-    // until its publication (kLat - 1 > kPeriod: up to two are waiting)
+    long calls_ = 0;           // calls since reset
+    // results of sample calls not yet published, oldest first, each with the call (calls_) of
+    // its publication (kLat - 1 > kPeriod: up to two are waiting)
     std::deque<std::pair<long, out>> pending_;
     out cur_;                  // published result
     int64_t corr_ = 0;  // corr returned by the previous call
