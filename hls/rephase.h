@@ -116,8 +116,10 @@ public:
         //    outputs)
         if (pstep == 0 && lag_ == 0 && w_init_ && !dnew_ && !first_ && !rehome && !unhome &&
             !(sw && !sw_prev_ && sw_seen_)) {
-            t_ = cfg::br_t(cfg::br_t(num_) + k_);  // as step_run: from num, k, d before the call
-            v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
+            if (stage_ == 2) {  // as step_run: from num, k, d before the call
+                t_ = cfg::br_t(cfg::br_t(num_) + k_);
+                v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
+            }
             if (stage_ == 1) {
                 tr_ = 0;
                 fresh_ = true;
@@ -217,9 +219,12 @@ private:
         const bool homing = in2 && s > 0 && at_last_;  // tr' == P
         bool back = false;
         // t = num + d - P and v = num - d are formed from the registers num, k, d in every call
-        // (so after a count they are exact again in the next call, before the next count)
-        const cfg::br_t t_rc = cfg::br_t(cfg::br_t(num_) + k_);
-        const cfg::br_t v_rc = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg));
+        // (so after a count they are exact again in the next call, before the next count). The
+        // model forms them in stage-2 calls only: nothing reads them elsewhere (stage 2 starts
+        // fresh, and the first count loads them), the RTL forms them in every call
+        const bool form_tv = stage_ == 2;
+        const cfg::br_t t_rc = form_tv ? cfg::br_t(cfg::br_t(num_) + k_) : t_;
+        const cfg::br_t v_rc = form_tv ? cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg)) : v_;
         if (stage_ == 1) {
             tr_ = 0;
             fresh_ = true;
