@@ -18,12 +18,14 @@
 //     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
 //   * the phase is kept as w = (ph_out + P/8) mod P of the output position (w moves by ostep,
 //     -1..1, with registered wrap flags); at A no extra count is pending, so it is the target
-//     phase there; at A it is registered (wA) and d is formed from it in the call after A (one
-//     subtract: P - wA forward, wA -/+ P/2 backward; o.d shows it from A on);
+//     phase there; at A it is registered (wA) with the form of d (a mode from the direction and
+//     the flags w == 0, w >= P/2), and d is formed from them in the call after A (one add: P - wA
+//     forward, wA -/+ P/2 backward; o.d shows it from A on);
 //   * the mark is a relative counter u = dir * (paced - B) from homing on: mark = u in [0, L]
 //     (L = mark_len at homing);
 //   * the homing call is flagged a call ahead (`at_last`: tr == P - 1) and B = A + dir*P is formed
-//     in the calls before it (`bs`), so B, C, Z are copied / formed from registers in that call.
+//     in the calls before it (`bs`, two parts over two calls), so B is copied and C, Z are formed
+//     by a 14-bit add and a select of the high part (bs's, or bs_pm = bs's + dir) in that call.
 // The extra count is delivered in the call after the real count it rides on (the pacer keeps real
 // counts >= 2 calls apart), so the output never moves more than one count per call.
 //
@@ -48,12 +50,17 @@ struct rephase_cfg {
     static constexpr int W_TR = axis_widths::W_P + 1;  // travel beyond A, -1..P, signed
     static constexpr int W_BR = axis_widths::W_P + 1;  // Bresenham t, v, k in [-P, P), signed
     static constexpr int W_LAG = 2;  // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
+    static constexpr int W_CZ = axis_widths::W_P + 1;      // low part of B = A + dir*P, C, Z
+    static constexpr int W_CZH = axis_widths::W_POS - W_CZ;  // their high part
     using ph_t = uint<W_PH>;
     using p_t = uint<W_P>;
     using tr_t = sint<W_TR>;
     using br_t = sint<W_BR>;
     using lag_t = sint<W_LAG>;
     using stage_t = uint<2>;
+    using dm_t = uint<2>;       // the form of d at A (d_of)
+    using czl_t = uint<W_CZ>;
+    using czh_t = uint<W_CZH>;
 };
 
 class rephase {
@@ -82,9 +89,12 @@ public:
         sw_seen_ = false;
         a_ = 0;
         bs_ = 0;
+        bs_c_ = false;
+        bs_pm_ = 0;
         fwd_ = true;
         d_ = 0;
         wa_ = 0;
+        dm_ = 0;
         dnew_ = false;
         k_ = 0;
         tr_ = 0;
@@ -98,6 +108,7 @@ public:
         w_ = 0;
         t1_ = false;
         z0_ = false;
+        h_ = false;
         w_init_ = false;
         u_ = 0;
         len_ = 0;
@@ -126,7 +137,7 @@ public:
                 num_ = 0;
             }
             k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-            bs_ = fwd_ ? pos_t(a_ + pos_t(pp)) : pos_t(a_ - pos_t(pp));
+            form_bs(a_, fwd_, pp);
             at_last_ = tr_ == tr_t(pp) - 1;
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
@@ -176,7 +187,8 @@ private:
         //    no extra count is pending (lag = 0: the block precondition), so this is the phase of
         //    the target position there. The wrap flags t1 (w == P - 1) and z0 (w == 0) are
         //    registers, formed for the next value from w by equality with P - 2, P, 1, all ones.
-        step_t ostep = pstep;
+        // (the sign of pstep: -2, outside the pacer's -1..1, counts -1 here as in rtl_ref/)
+        step_t ostep = pstep > 0 ? step_t(1) : pstep < 0 ? step_t(-1) : step_t(0);
         if (pstep == 0) {
             if (lag_ > 0) ostep = 1;
             if (lag_ < 0) ostep = -1;
@@ -185,16 +197,22 @@ private:
             using x_t = sint<cfg::W_P + 2>;
             const x_t px = x_t(pp);
             const cfg::ph_t w0 = w_init_ ? w_ : p8;  // ph = 0 after reset
-            const bool t1 = w_init_ ? t1_ : (pp == 1);
-            const bool z0 = w_init_ ? z0_ : (p8 == 0);
+            // the flags after reset are those of w = P/8 for every legal P (>= 8): false
+            const bool t1 = t1_;
+            const bool z0 = z0_;
+            const bool h = h_;  // w >= P/2 (for the form of d at A)
+            const cfg::ph_t p2 = cfg::ph_t(pp >> 1);
+            const cfg::ph_t p2m1 = cfg::ph_t((px - 2) >> 1);  // P/2 - 1, from P - 2 as in rtl_ref/
             if (ostep > 0) {
                 w_ = t1 ? cfg::ph_t(0) : cfg::ph_t(w0 + 1);
                 t1_ = t1 ? (px == 1) : (x_t(w0) == px - 2);
                 z0_ = t1 ? true : (w0 == cfg::ph_t(-1));
+                h_ = t1 ? false : (h || w0 == p2m1);
             } else if (ostep < 0) {
                 w_ = z0 ? cfg::ph_t(px - 1) : cfg::ph_t(w0 - 1);
                 t1_ = z0 ? true : (x_t(w0) == px);
                 z0_ = z0 ? (cfg::ph_t(px - 1) == 0) : (w0 == 1);
+                h_ = z0 ? true : (h && w0 != p2);
             } else {
                 w_ = w0;
                 t1_ = t1;
@@ -206,7 +224,7 @@ private:
         // 4. stage machine
         // d: formed from the phase at A in the call after A (dnew), then held
         const cfg::ph_t d_reg = d_;
-        const cfg::ph_t d_cur = dnew_ ? d_of(wa_, fwd_, pp) : d_;
+        const cfg::ph_t d_cur = dnew_ ? d_of(wa_, dm_, pp) : d_;
         const bool first = first_;
         dnew_ = false;
         const pos_t a_prev = a_;
@@ -261,6 +279,7 @@ private:
                 a_ = paced_;
                 fwd_ = fwd_last_;
                 wa_ = w_;  // the phase at A; d follows from it in the next call
+                dm_ = cfg::dm_t((fwd_ ? 0 : 2) + ((fwd_ ? z0_ : h_) ? 1 : 0));
                 dnew_ = true;
             }
         } else if (stage_ == 2) {
@@ -270,8 +289,8 @@ private:
                 stage_ = 3;
                 const pos_t bb = bs_;  // A + dir*P, formed in an earlier call
                 b_ = bb;
-                c_ = fwd_ ? pos_t(bb + pos_t(mark_len)) : pos_t(bb - pos_t(mark_len));
-                z_ = fwd_ ? pos_t(bb + pos_t(2 * p8)) : pos_t(bb - pos_t(2 * p8));
+                c_ = b_add(bb, bs_pm_, cfg::czl_t(mark_len), fwd_);
+                z_ = b_add(bb, bs_pm_, cfg::czl_t(2 * p8), fwd_);
                 len_ = mark_len;
             }
         }
@@ -288,7 +307,7 @@ private:
         // k = d - P from the register d (before this call's load): valid from the third call
         // after A, and the first carry can come no earlier (counts >= 2 calls apart)
         k_ = cfg::br_t(cfg::br_t(d_reg) - cfg::br_t(pp));
-        bs_ = fwd_prev ? pos_t(a_prev + pos_t(pp)) : pos_t(a_prev - pos_t(pp));
+        form_bs(a_prev, fwd_prev, pp);
         at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
@@ -317,7 +336,7 @@ private:
         o.c = c_;
         o.z = z_;
         o.adj = adj_;
-        o.d = dnew_ ? d_of(wa_, fwd_, pp) : d_;
+        o.d = dnew_ ? d_of(wa_, dm_, pp) : d_;
         o.homed = stage_ == 3;
         return o;
     }
@@ -325,19 +344,53 @@ private:
     using tr_t = cfg::tr_t;
 
     // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
-    // (ph - 3P/8) mod P = (w - P/2) mod P backward
-    static cfg::ph_t d_of(cfg::ph_t w, bool fwd, cfg::p_t p) {
-        const cfg::ph_t p2 = p >> 1;
-        if (fwd) return (w == 0) ? cfg::ph_t(0) : cfg::ph_t(p - w);
-        return (w >= p2) ? cfg::ph_t(w - p2) : cfg::ph_t(w + p2);
+    // (ph - 3P/8) mod P = (w - P/2) mod P backward. The form is the mode m registered at A from
+    // the direction and the flags z0 (w == 0), h (w >= P/2): 0 P - w, 1 (forward, w == 0) 0,
+    // 2 w + P/2, 3 w - P/2 (rtl_ref/: one 12-bit add of two operands, each a LUT of registers)
+    static cfg::ph_t d_of(cfg::ph_t w, cfg::dm_t m, cfg::p_t p) {
+        const cfg::ph_t p2 = cfg::ph_t(p >> 1);
+        if (m == 0) return cfg::ph_t(p - w);
+        if (m == 1) return cfg::ph_t(0);
+        if (m == 2) return cfg::ph_t(w + p2);
+        return cfg::ph_t(w - p2);
+    }
+
+    // bs = A + dir*P (register of the call, used at homing): the low W_CZ bits now, the high
+    // part with the low part's carry of the previous call (bs_c), as x + (y ^ bwd) + bwd; bs_pm
+    // is the high part of bs before the call + dir (DESIGN 4.5 "Hardware form")
+    void form_bs(const pos_t& a, bool fwd, cfg::p_t pp) {
+        using l1_t = uint<cfg::W_CZ + 1>;
+        const cfg::czl_t ones = cfg::czl_t((1u << cfg::W_CZ) - 1u);
+        const cfg::czl_t y = fwd ? cfg::czl_t(pp) : cfg::czl_t(ones - cfg::czl_t(pp));  // P ^ ones
+        const l1_t lo = l1_t(l1_t(cfg::czl_t(a)) + l1_t(y) + l1_t(fwd ? 0 : 1));
+        const cfg::czh_t hi = cfg::czh_t(cfg::czh_t(a >> cfg::W_CZ) + cfg::czh_t(fwd ? 0 : -1) +
+                                         cfg::czh_t(bs_c_ ? 1 : 0));
+        bs_pm_ = cfg::czh_t(cfg::czh_t(bs_ >> cfg::W_CZ) + cfg::czh_t(fwd ? 1 : -1));
+        bs_c_ = (lo >> cfg::W_CZ) != 0;
+        bs_ = pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
+    }
+
+    // C / Z at homing: b + dir*y (y < 2^W_CZ) as a W_CZ-bit add; the high part is b's, or b's + dir
+    // (b_pm) when the low add carries (forward) or does not (backward)
+    static pos_t b_add(const pos_t& b, cfg::czh_t b_pm, cfg::czl_t y, bool fwd) {
+        using l1_t = uint<cfg::W_CZ + 1>;
+        const cfg::czl_t ones = cfg::czl_t((1u << cfg::W_CZ) - 1u);
+        const cfg::czl_t yx = fwd ? y : cfg::czl_t(ones - y);
+        const l1_t lo = l1_t(l1_t(cfg::czl_t(b)) + l1_t(yx) + l1_t(fwd ? 0 : 1));
+        const bool c = (lo >> cfg::W_CZ) != 0;
+        const cfg::czh_t hi = (c == fwd) ? b_pm : cfg::czh_t(b >> cfg::W_CZ);
+        return pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
     cfg::stage_t stage_;
     pos_t paced_, out_pos_, adj_;
     bool fwd_last_, sw_prev_, sw_seen_;
     pos_t a_, bs_;
+    bool bs_c_;
+    cfg::czh_t bs_pm_;
     bool fwd_;
     cfg::ph_t d_, wa_;
+    cfg::dm_t dm_;
     bool dnew_;
     cfg::br_t k_;
     cfg::tr_t tr_;
@@ -346,7 +399,7 @@ private:
     cfg::br_t t_, v_;
     cfg::lag_t lag_;
     cfg::ph_t w_;
-    bool t1_, z0_, w_init_;
+    bool t1_, z0_, h_, w_init_;
     pos_t u_;
     cfg::p_t len_;
     pos_t b_, c_, z_;

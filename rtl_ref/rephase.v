@@ -9,7 +9,8 @@
 //   2. the extra count dq of this call from registers: a forward count carries when t >= 0, a
 //      backward count inside the window borrows when v < 0 (Bresenham state num, t = num + d - P,
 //      v = num - d; k = d - P).
-//   3. phase w = (ph_out + P/8) mod P of the output position moves by ostep (-1..1).
+//   3. phase w = (ph_out + P/8) mod P of the output position moves by ostep (-1..1), with the
+//      flags w == P - 1, w == 0, w >= P/2.
 //   4. stage machine: unhome/rehome -> stage 1; stage 1: rising switch edge (and !unhome) ->
 //      stage 2, A = paced', d from w (P - w forward, w -/+ P/2 backward); stage 2: (num, t, v)
 //      step, tr < 0 -> stage 1, tr == P (flagged a call ahead: at_last) -> stage 3, B = bs (A +
@@ -17,10 +18,12 @@
 //   5. ostep = pstep, or else sgn(lag) (lag = adj_tgt - adj: the pending extra count, 2 bits).
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
-// Every path is one carry chain of at most 38 bits from registers only (a + dir*P, adj + lsgn,
-// the mark counter u + s, the points at homing), or of at most 19 bits (the low half of a
-// position counter stepped by pstep / ostep: pos_step) or 14 bits followed by a few LUT levels;
-// no 38-bit compare, no adder in series with another, and the late pstep enters no 38-bit chain.
+// Every path is one carry chain from registers plus a few LUT levels: 38 bits only for the
+// counters adj and u, whose steps are registers of their own (as_q, us_q, from the look-ahead);
+// A + dir*P in two parts over two calls (14 + 24 bits), C and Z as 14-bit adds and a select;
+// at most 19 bits for the split position counters (paced by the late pstep, out_pos by a
+// registered step) and 14 bits (Bresenham, tr, w, d) elsewhere; no 38-bit compare, no adder in
+// series with another, and the late pstep enters no chain but paced's low half.
 // Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 2 signed, stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
@@ -74,15 +77,20 @@ module rephase (
     localparam integer W_BR  = W_P + 1;   // Bresenham t, v, k, signed
     localparam integer W_LAG = 2;         // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
     localparam integer W_X   = W_P + 1;   // w moves and wraps
+    localparam integer W_LO  = W_POS / 2; // low half of a position counter (pos_step)
+    localparam integer W_CZ  = W_P + 1;   // low part of B = A + dir*P, C = B + dir*mark_len, Z
 
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]              stage_q, stage_d;
     reg signed [W_POS-1:0] paced_q, paced_d, out_pos_q, out_pos_d, adj_q, adj_d;
     reg                    fwd_last_q, fwd_last_d, sw_prev_q, sw_seen_q;
     reg signed [W_POS-1:0] a_q, a_d, bs_q, bs_d;
+    reg                    bs_c_q;             // carry of bs's low half (previous call)
+    reg [W_POS-W_CZ-1:0]   bs_pm_q;            // bs's high part (above W_CZ) + dir
     reg                    fwd_q, fwd_d;
     reg [W_PH-1:0]         d_q, d_d;
     reg [W_PH-1:0]         wa_q, wa_d;         // w at A
+    reg [1:0]              dm_q, dm_d;         // the form of d at A (see d_new)
     reg                    dnew_q, dnew_d;     // A was in the previous call: d not yet loaded
     reg signed [W_BR-1:0]  k_q, k_d;
     reg signed [W_TR-1:0]  tr_q, tr_d;
@@ -95,6 +103,7 @@ module rephase (
     reg signed [W_LAG-1:0] lag_q, lag_d;
     reg [W_PH-1:0]         w_q, w_d;
     reg                    t1_q, z0_q, w_init_q;  // w == P - 1, w == 0
+    reg                    h_q;                // w >= P/2
     reg signed [W_POS-1:0] u_q, u_d;
     reg [W_P-1:0]          len_q, len_d;
     reg [W_P:0]            len1_q, len1_d;      // L + 1
@@ -102,14 +111,17 @@ module rephase (
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
     reg                    sp_q, sn_q;         // s_pos / s_neg of this call, from i_pstep_nx
+    reg                    pp_q, pn_q;         // pstep > 0 / < 0 in this call, from i_pstep_nx
+    (* keep *) reg [1:0]   us_q;               // {s_neg, s_pos || s_neg}: the step of u
+    (* keep *) reg [1:0]   as_q;               // the step of adj: sgn(lag) when pstep == 0
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
+    reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
 
     // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
     // The low half adds s (a W_LO-bit chain); the high half takes hi + 1 / hi - 1 (chains of the
     // register alone, in parallel) when the low half wraps, which equalities of the register's low
     // half tell (all ones and s = +1; below |s| and s < 0): the late step never enters a 38-bit
     // chain, only the low chain and the last select. Equal to x + s (mod 2^W_POS) for every s.
-    localparam integer W_LO = W_POS / 2;
     function signed [W_POS-1:0] pos_step;
         input signed [W_POS-1:0] x;
         input signed [1:0]       st;
@@ -132,8 +144,10 @@ module rephase (
     wire signed [W_POS-1:0] period_x = $signed({{(W_POS-W_P){1'b0}}, i_period});
     wire signed [W_POS-1:0] mark_len_x = $signed({{(W_POS-W_P){1'b0}}, i_mark_len});
     wire signed [W_POS-1:0] p4_x     = $signed({{(W_POS-W_PH-1){1'b0}}, p8, 1'b0}); // 2 * P/8
-    wire                    pz       = i_pstep == 2'sd0;
-    wire                    pfwd     = !i_pstep[1];     // pstep > 0 when pstep != 0
+    // the sign of pstep (pp_q: > 0, pn_q: < 0), registered in the previous call from i_pstep_nx:
+    // only the paced counter reads the late pstep itself
+    wire                    pz       = !pp_q && !pn_q;
+    wire                    pfwd     = !pn_q;           // pstep > 0 when pstep != 0
     wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
     wire                    leave    = (un_q || re_q) && stage_q != 2'd1;
     wire                    in2      = stage_q == 2'd2 && !leave;
@@ -158,34 +172,51 @@ module rephase (
     //    value come from equalities of w with P - 2, P, 1 and all ones (beside the candidates)
     // sgn(lag) of the 2-bit lag: -2 (a wrap, only with a broken precondition) has the sign -1
     wire signed [1:0]     lsgn    = {lag_q[1], lag_q[1] | lag_q[0]};
-    wire signed [1:0]     ostep_n = pz ? lsgn : i_pstep;
-    wire                  eup  = ostep_n == 2'sd1;
-    wire                  edn  = ostep_n == -2'sd1;
+    // the output step: the sign of pstep, or else sgn(lag); its two decodes (+1, -1) are
+    // registered in the previous call from the look-ahead i_pstep_nx and the next lag (osu_q,
+    // osd_q), so neither the move of w nor the output counter waits for the late pstep
+    wire                  eup  = osu_q;
+    wire                  edn  = osd_q;
+    wire signed [1:0]     ostep_n = {edn, eup || edn};
     wire [W_PH-1:0]       w0   = w_init_q ? w_q : p8;                          // ph = 0 after reset
-    wire                  t1   = w_init_q ? t1_q : (i_period == 13'd1);
-    wire                  z0   = w_init_q ? z0_q : (p8 == {W_PH{1'b0}});
+    // the flags after reset are those of w = P/8 for every legal P (>= 8): 0 (their reset values)
+    wire                  t1   = t1_q;
+    wire                  z0   = z0_q;
     wire signed [W_X-1:0] w0x  = $signed({{(W_X-W_PH){1'b0}}, w0});
-    wire signed [W_X-1:0] x_p1 = w0x + 1;
-    wire signed [W_X-1:0] x_m1 = w0x - 1;
+    // one chain w0 +/- 1 (the step from the register osd_q); the wrap and move selects are
+    // formed from registers beside it, so one select level follows the chain
+    wire [W_PH-1:0]       x_s  = w0 + {{(W_PH-1){edn}}, 1'b1};
     wire signed [W_X-1:0] p_m1 = i_period_m1;     // px - 1
     wire signed [W_X-1:0] p_m2 = i_period_m2;     // px - 2
-    wire [W_PH-1:0] w_n  = eup ? (t1 ? {W_PH{1'b0}} : x_p1[W_PH-1:0]) :
-                           edn ? (z0 ? p_m1[W_PH-1:0] : x_m1[W_PH-1:0]) : w0;
+    wire                  w_wr = (eup && t1) || (edn && z0);             // wrap: 0 up, P - 1 down
+    wire                  w_mv = eup || edn;
+    wire [W_PH-1:0]       w_wv = eup ? {W_PH{1'b0}} : p_m1[W_PH-1:0];
+    wire [W_PH-1:0] w_n  = w_wr ? w_wv : w_mv ? x_s : w0;
     wire            t1_n = eup ? (t1 ? (px == 1) : (w0x == p_m2)) :
                            edn ? (z0 ? 1'b1 : (w0x == px)) : t1;
     wire            z0_n = eup ? (t1 ? 1'b1 : (w0 == {W_PH{1'b1}})) :
                            edn ? (z0 ? (p_m1[W_PH-1:0] == {W_PH{1'b0}}) : (w0 == {{(W_PH-1){1'b0}}, 1'b1})) : z0;
 
+    // the flag h = (w >= P/2) beside t1 and z0 (for the form of d at A): it rises on a step up
+    // from P/2 - 1 (= (P - 2)/2, bits of i_period_m2), falls on a step down from P/2, is 0 after
+    // the wrap up to 0 and 1 after the wrap down to P - 1 (0 after reset: P/8 < P/2)
+    wire [W_PH-1:0] p2m1 = i_period_m2[W_PH:1];                                  // P/2 - 1
+    wire            h    = h_q;
+    wire            h_n  = eup ? (t1 ? 1'b0 : (h || w0 == p2m1)) :
+                           edn ? (z0 ? 1'b1 : (h && w0 != p2)) : h;
+
     // d from the phase at A (wA, registered at A): P - wA forward, (wA - P/2) mod P backward. It
-    // is formed from registers in the call after A (dnew) and loaded into d there; the output o_d
-    // shows it from A on.
-    wire signed [W_X-1:0] wa_x   = $signed({{(W_X-W_PH){1'b0}}, wa_q});
-    wire signed [W_X-1:0] wa_mp2 = wa_x - $signed({{(W_X-W_PH){1'b0}}, p2});
-    wire [W_PH-1:0]       wa_pp2 = wa_q + p2;
-    wire [W_PH-1:0]       p_mwa  = i_period[W_PH-1:0] - wa_q;
-    wire [W_PH-1:0]       d_fwd  = (wa_q == {W_PH{1'b0}}) ? {W_PH{1'b0}} : p_mwa;
-    wire [W_PH-1:0]       d_bwd  = wa_mp2[W_X-1] ? wa_pp2 : wa_mp2[W_PH-1:0];
-    wire [W_PH-1:0]       d_cur  = dnew_q ? (fwd_q ? d_fwd : d_bwd) : d_q;
+    // is one 12-bit add X + Y + ci in the call after A (dnew), loaded into d there; the output o_d
+    // shows it from A on. Which of the four forms applies is the 2-bit mode dm registered at A
+    // from the direction and the phase flags (dm[1]: backward; dm[0]: wA == 0 forward, wA >= P/2
+    // backward): 00 P + ~wA + 1, 01 0, 10 wA + P/2, 11 wA + ~(P/2) + 1. So the operands are one
+    // LUT each from registers and no compare or select follows the add.
+    wire [W_PH-1:0]       dx_op  = dm_q[1] ? wa_q : (dm_q[0] ? {W_PH{1'b0}} : ~wa_q);
+    wire [W_PH-1:0]       dy_op  = dm_q[1] ? (dm_q[0] ? ~p2 : p2) :
+                                   (dm_q[0] ? {W_PH{1'b0}} : i_period[W_PH-1:0]);
+    wire                  d_ci   = dm_q[1] ~^ dm_q[0];
+    wire [W_PH-1:0]       d_new  = dx_op + dy_op + {{(W_PH-1){1'b0}}, d_ci};
+    wire [W_PH-1:0]       d_cur  = dnew_q ? d_new : d_q;
 
     // Bresenham candidates (one 14-bit add of registers each)
     wire signed [W_BR-1:0] px_br  = $signed({1'b0, i_period});
@@ -205,11 +236,37 @@ module rephase (
     assign hm_rdy = in2 && at_last_q;
     wire homing = hm_rdy && s_pos;
     wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
-    // A + dir*P for B (formed every call from registers; used at homing, >= P calls after A):
-    // one adder, x + dir*y as x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain,
-    // the carry-in the chain's own: no negation chain, half the LUTs of two adders and a select)
+    // A + dir*P for B (formed every call from registers; used at homing, >= 2P calls after A),
+    // as x + dir*y = x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain, the
+    // carry-in the chain's own), in two parts: the low W_CZ bits in one call, the high part
+    // with the low part's carry of the previous call (bs_c), so bs is exact from the second call
+    // after A on. The homing call forms C = B + dir*mark_len and Z = B + dir*P/4 as a W_CZ-bit
+    // add and a select of the high part: bs's, or bs's + dir (bs_pm, a register formed from
+    // bs in the calls before: exact from the third call after A), by the low part's carry
+    // (forward) or its absence (backward)
     wire                    bwd_x  = !fwd_q;
-    wire signed [W_POS-1:0] bs_sum = a_q + (period_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
+    wire [W_CZ:0]           bs_lo  = {1'b0, a_q[W_CZ-1:0]} +
+                                     {1'b0, period_x[W_CZ-1:0] ^ {W_CZ{bwd_x}}} + {{W_CZ{1'b0}}, bwd_x};
+    wire [W_POS-W_CZ-1:0]   bs_hi  = a_q[W_POS-1:W_CZ] + {(W_POS-W_CZ){bwd_x}} +
+                                     {{(W_POS-W_CZ-1){1'b0}}, bs_c_q};
+    wire [W_POS-W_CZ-1:0]   bs_pm_n = bs_q[W_POS-1:W_CZ] + {{(W_POS-W_CZ-1){bwd_x}}, 1'b1};
+    function signed [W_POS-1:0] b_add;       // bs + dir*y (y < 2^W_CZ) at homing
+        input signed [W_POS-1:0] b;
+        input [W_POS-W_CZ-1:0]   b_pm;       // b's high part + dir
+        input [W_CZ-1:0]         y;
+        input                    bw;
+        reg [W_CZ:0]             lo;
+        begin
+            lo    = {1'b0, b[W_CZ-1:0]} + {1'b0, y ^ {W_CZ{bw}}} + {{W_CZ{1'b0}}, bw};
+            b_add = {(lo[W_CZ] ^ bw) ? b_pm : b[W_POS-1:W_CZ], lo[W_CZ-1:0]};
+        end
+    endfunction
+    wire signed [W_POS-1:0] c_hom  = b_add(bs_q, bs_pm_q, mark_len_x[W_CZ-1:0], bwd_x);
+    wire signed [W_POS-1:0] z_hom  = b_add(bs_q, bs_pm_q, p4_x[W_CZ-1:0], bwd_x);
+    wire signed [W_POS-1:0] bs_nx  = {bs_hi, bs_lo[W_CZ-1:0]};
+    // the steps of adj and u from their own registers (sign-extended)
+    wire signed [W_POS-1:0] adj_st = {{(W_POS-1){as_q[1]}}, as_q[0]};
+    wire signed [W_POS-1:0] u_st   = {{(W_POS-1){us_q[1]}}, us_q[0]};
     // the next at_last (tr' == P - 1) by equalities of the register tr (tr >= 0 always), and the
     // step back past A (tr' < 0) without the add: no compare follows the tr add
     wire signed [W_TR-1:0] tr_px  = $signed({1'b0, i_period});
@@ -239,7 +296,6 @@ module rephase (
     // precondition; a broken precondition wraps, as in hls); for each value of pstep the
     // extra-count test (dq_nz with that pstep) is a function of registers, so the late pstep
     // only drives the last select
-    wire signed [W_POS-1:0] lsgn_x = {{(W_POS-2){lsgn[1]}}, lsgn};
     wire signed [W_LAG-1:0] lag_ml = lag_q - lsgn;
     wire signed [W_LAG-1:0] lag_p1 = lag_q + 2'sd1;
     wire signed [W_LAG-1:0] lag_m1 = lag_q - 2'sd1;
@@ -255,7 +311,7 @@ module rephase (
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
     assign lag_cp = dq_p ? lag_p1 : lag_q;
     assign lag_cm = dq_m ? lag_m1 : lag_q;
-    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : lv ? lag_q : i_pstep[1] ? lag_cm : lag_cp;
+    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : lv ? lag_q : pn_q ? lag_cm : lag_cp;
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
@@ -277,6 +333,7 @@ module rephase (
         len_d      = len_q;
         len1_d     = len1_q;
         wa_d       = wa_q;
+        dm_d       = dm_q;
         dnew_d     = 1'b0;
         first_d    = 1'b0;
 
@@ -316,6 +373,7 @@ module rephase (
                 a_d     = paced_d;
                 fwd_d   = fwd_last_d;
                 wa_d    = w_n;
+                dm_d    = {!fwd_last_d, fwd_last_d ? z0_n : h_n};
                 dnew_d  = 1'b1;
             end
         end else if (stage_q == 2'd2) begin
@@ -324,8 +382,8 @@ module rephase (
             end else if (homing) begin
                 stage_d = 2'd3;
                 b_d     = bs_q;
-                c_d     = bs_q + (mark_len_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
-                z_d     = bs_q + (p4_x ^ {W_POS{bwd_x}}) + {{(W_POS-1){1'b0}}, bwd_x};
+                c_d     = c_hom;
+                z_d     = z_hom;
                 len_d   = i_mark_len;
                 len1_d  = {1'b0, i_mark_len} + 1'b1;
             end
@@ -338,7 +396,7 @@ module rephase (
         else                      tr_pos_d = tr_pos_q;
         if (dnew_q) d_d = d_cur;
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
-        bs_d      = bs_sum;
+        bs_d      = bs_nx;
         // at_last' = (tr' == P - 1), from the case that formed tr'
         if (stage_q == 2'd1 || (stage_q == 2'd2 && tr_back)) at_last_d = p_is1;
         else if (stage_q == 2'd2)                            at_last_d = last_s;
@@ -347,13 +405,17 @@ module rephase (
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
         out_pos_d = pos_step(out_pos_q, ostep_n);
-        adj_d     = pz ? adj_q + lsgn_x : adj_q;
+        // (adj moves by sgn(lag) in a call without a real count: its step is a register of its
+        // own, as_q, formed in the previous call with osu_q / osd_q, so the plain 38-bit chain
+        // starts at flip-flops beside it)
+        adj_d     = adj_q + adj_st;
         lag_d     = lag_n;
 
         // 6. reference mark
-        // (a plain 38-bit up/down counter: its step s_pos / s_neg is a register, so the
-        // carry chain starts at flip-flops and needs no split)
-        u_d    = homing ? {W_POS{1'b0}} : u_q + {{(W_POS-1){s_neg}}, s_pos || s_neg};
+        // (a plain 38-bit up/down counter: its step is a register of its own, us_q = s_neg /
+        // s_pos || s_neg, kept apart from sp_q / sn_q and their fan-out, so the carry chain starts
+        // at flip-flops placed beside it and needs no split)
+        u_d    = homing ? {W_POS{1'b0}} : u_q + u_st;
         mark_d = homing || (in3 && in_rng);
     end
 
@@ -379,9 +441,12 @@ module rephase (
             sw_seen_q  <= 1'b0;
             a_q        <= {W_POS{1'b0}};
             bs_q       <= {W_POS{1'b0}};
+            bs_c_q     <= 1'b0;
+            bs_pm_q    <= {(W_POS-W_CZ){1'b0}};
             fwd_q      <= 1'b1;
             d_q        <= {W_PH{1'b0}};
             wa_q       <= {W_PH{1'b0}};
+            dm_q       <= 2'd0;
             dnew_q     <= 1'b0;
             k_q        <= {W_BR{1'b0}};
             tr_q       <= {W_TR{1'b0}};
@@ -396,6 +461,7 @@ module rephase (
             w_q        <= {W_PH{1'b0}};
             t1_q       <= 1'b0;
             z0_q       <= 1'b0;
+            h_q        <= 1'b0;
             w_init_q   <= 1'b0;
             u_q        <= {W_POS{1'b0}};
             len_q      <= {W_P{1'b0}};
@@ -415,9 +481,12 @@ module rephase (
             sw_seen_q  <= i_sw_valid;
             a_q        <= a_d;
             bs_q       <= bs_d;
+            bs_c_q     <= bs_lo[W_CZ];
+            bs_pm_q    <= bs_pm_n;
             fwd_q      <= fwd_d;
             d_q        <= d_d;
             wa_q       <= wa_d;
+            dm_q       <= dm_d;
             dnew_q     <= dnew_d;
             k_q        <= k_d;
             tr_q       <= tr_d;
@@ -432,6 +501,7 @@ module rephase (
             w_q        <= w_d;
             t1_q       <= t1_n;
             z0_q       <= z0_n;
+            h_q        <= h_n;
             w_init_q   <= 1'b1;
             u_q        <= u_d;
             len_q      <= len_d;
@@ -446,7 +516,16 @@ module rephase (
         // reset call)
         sp_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == (i_rst || fwd_d));
         sn_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d));
+        pp_q <= i_pstep_nx != 2'sd0 && !i_pstep_nx[1];
+        us_q <= {i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d)), i_pstep_nx != 2'sd0};
+        pn_q <= i_pstep_nx[1];
         un_q <= i_unhome_nx;
+        // the output step of the next call: its pstep, or else the sign of the next lag (0 after
+        // a reset call)
+        osu_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n == 2'sd1) : (i_pstep_nx == 2'sd1);
+        osd_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n[1]) : i_pstep_nx[1];
+        as_q  <= {i_pstep_nx == 2'sd0 && !i_rst && lag_n[1],
+                  i_pstep_nx == 2'sd0 && !i_rst && lag_n != 2'sd0};
         re_q <= i_rehome_nx;
     end
 
@@ -638,6 +717,7 @@ module rephase (
         end
     end
 
+    wire [W_POS-W_CZ-1:0] f_bspm = bs_q[W_POS-1:W_CZ] + {{(W_POS-W_CZ-1){!f_dir}}, 1'b1};  // + dir
     always @* begin
         assume(i_period == f_per);
         assume(i_period_m1 == $signed({1'b0, f_per}) - 14'sd1 && i_period_m2 == $signed({1'b0, f_per}) - 14'sd2);
@@ -653,6 +733,12 @@ module rephase (
             assert(un_q == i_unhome && re_q == i_rehome);
             // the registered count decode is that of this call's pstep against fwd
             assert(s_pos == (!pz && pfwd == fwd_q) && s_neg == (!pz && pfwd != fwd_q));
+            // the other registered decodes: the sign of pstep, the steps of u, w / out_pos, adj
+            assert(pp_q == (i_pstep == 2'sd1) && pn_q == (i_pstep == -2'sd1));
+            assert(us_q == {s_neg, s_pos || s_neg});
+            assert(osu_q == (i_pstep == 2'sd1 || (i_pstep == 2'sd0 && lag_q == 2'sd1)));
+            assert(osd_q == (i_pstep == -2'sd1 || (i_pstep == 2'sd0 && lag_q[1])));
+            assert(as_q == {i_pstep == 2'sd0 && lag_q[1], i_pstep == 2'sd0 && lag_q != 2'sd0});
             // the paced stream, the stage machine and its inputs follow the text
             assert(paced_q == f_paced);
             assert(stage_q == f_stage && f_stage != 2'd0);
@@ -676,15 +762,18 @@ module rephase (
             // the output position's phase (f_po); w = (ph_out + P/8) mod P with its wrap flags
             assert(f_po < f_per);
             if (!w_init_q) assert(f_po == {W_P{1'b0}} && lag_q == {W_LAG{1'b0}});  // after reset
+            if (!w_init_q) assert(!t1_q && !z0_q && !h_q);      // the flags of w = P/8
             if (w_init_q) begin
                 assert(w_q == f_addp(f_po, f_p8, f_per));
                 assert(t1_q == (w_q == f_per - 1'b1));
                 assert(z0_q == (w_q == {W_PH{1'b0}}));
+                assert(h_q == ({1'b0, w_q} >= (f_per >> 1)));
             end
             // from A on: d < P, loaded in the call after A
             if (f_stage != 2'd1) begin
                 if (!f_anew) assert(f_d < f_per);
                 assert(wa_q < f_per);
+                assert(dm_q == {!fwd_q, fwd_q ? (wa_q == {W_PH{1'b0}}) : ({1'b0, wa_q} >= (f_per >> 1))});
                 if (!dnew_q) assert({1'b0, d_q} == f_d);
             end
 `ifdef FORMAL_PHASE
@@ -707,7 +796,11 @@ module rephase (
                 assert(f_ta == {{(W_POS-W_TR){f_tr[W_TR-1]}}, f_tr});   // tr = dir * (paced - A)
                 assert(tr_q == f_tr);
                 assert(at_last_q == (f_tr == $signed({1'b0, f_per}) - 1));
-                if (f_age >= 2'd1) assert(bs_q == f_a + f_dx(f_dir, f_perx));
+                // A + dir*P in two parts: the low part's carry from the call after A on, bs from
+                // the second, bs_pm (its high part + dir) from the third
+                if (f_age >= 2'd1) assert(bs_c_q == bs_lo[W_CZ]);
+                if (f_age >= 2'd2) assert(bs_q == f_a + f_dx(f_dir, f_perx));
+                if (f_age == 2'd3) assert(bs_pm_q == f_bspm);
                 if (f_age == 2'd0) assert(fresh_q);                  // no count yet after A
                 if (f_age != 2'd3) assert(f_tr <= 1);                // counts >= 2 calls apart
                 if (f_age == 2'd1) assert(f_tr == 0 || f_pnz);
