@@ -25,7 +25,7 @@
 //     (L = mark_len at homing);
 //   * the homing call is flagged a call ahead (`at_last`: tr == P - 1) and B = A + dir*P is formed
 //     in the calls before it (`bs`, two parts over two calls), so B is copied and C, Z are formed
-//     by a 14-bit add and a select of the high part (bs's, or bs_pm = bs's + dir) in that call.
+//     by a 13-bit add and a select of the high part (bs's, or bs_pm = bs's + dir) in that call.
 // The extra count is delivered in the call after the real count it rides on (the pacer keeps real
 // counts >= 2 calls apart), so the output never moves more than one count per call.
 //
@@ -50,7 +50,7 @@ struct rephase_cfg {
     static constexpr int W_TR = axis_widths::W_P + 1;  // travel beyond A, -1..P, signed
     static constexpr int W_BR = axis_widths::W_P + 1;  // Bresenham t, v, k in [-P, P), signed
     static constexpr int W_LAG = 2;  // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
-    static constexpr int W_CZ = axis_widths::W_P + 1;      // low part of B = A + dir*P, C, Z
+    static constexpr int W_CZ = axis_widths::W_P;          // low part of B = A + dir*P, C, Z
     static constexpr int W_CZH = axis_widths::W_POS - W_CZ;  // their high part
     using ph_t = uint<W_PH>;
     using p_t = uint<W_P>;
@@ -112,6 +112,9 @@ public:
         w_init_ = false;
         u_ = 0;
         len_ = 0;
+        mark_ = false;
+        mp_ = false;
+        mn_ = false;
         b_ = 0;
         c_ = 0;
         z_ = 0;
@@ -144,7 +147,8 @@ public:
             out_t q;
             q.ostep = 0;
             q.out_pos = out_pos_;
-            q.mark = stage_ == 3 && u_ >= 0 && u_ <= pos_t(len_);
+            q.mark = stage_ == 3 && mark_;  // (no count: the mark register itself)
+            mark_tests(len_);
             q.stage = stage_;
             q.a = a_;
             q.b = b_;
@@ -167,6 +171,8 @@ private:
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
         const bool leave = (unhome || rehome) && stage_ != 1;
         const bool in2 = stage_ == 2 && !leave;
+        const bool in3 = stage_ == 3 && !leave;
+        const cfg::p_t len_prev = len_;
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
 
         // 1. taps: real position, direction of the last real count
@@ -322,9 +328,14 @@ private:
         out_pos_ = out_pos_ + ostep;
 
         // 6. reference mark: u = dir * (paced - B) from homing on, mark = u in [0, L]
-        const pos_t u_prev = u_;
-        u_ = homing ? pos_t(0) : pos_t(u_prev + s);
-        const bool mark = stage_ == 3 && u_ >= 0 && u_ <= pos_t(len_);
+        // (the test for a count is the register of the previous call, mp / mn: u and L do not
+        // change in the call before a count; without a count the mark register itself, which in
+        // stage 3 is the test of u)
+        const bool in_rng = s > 0 ? mp_ : s < 0 ? mn_ : mark_;
+        mark_tests(len_prev);  // from u and L before this call's update
+        u_ = homing ? pos_t(0) : pos_t(u_ + s);
+        const bool mark = homing || (in3 && in_rng);
+        mark_ = mark;
 
         out_t o;
         o.ostep = ostep;
@@ -370,6 +381,12 @@ private:
         bs_ = pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
+    // the mark tests for a count in the next call, from u and L of this call (rtl_ref/: u_q, len_q)
+    void mark_tests(cfg::p_t len) {
+        mp_ = u_ >= -1 && u_ < pos_t(len);
+        mn_ = u_ >= 1 && u_ <= pos_t(pos_t(len) + 1);
+    }
+
     // C / Z at homing: b + dir*y (y < 2^W_CZ) as a W_CZ-bit add; the high part is b's, or b's + dir
     // (b_pm) when the low add carries (forward) or does not (backward)
     static pos_t b_add(const pos_t& b, cfg::czh_t b_pm, cfg::czl_t y, bool fwd) {
@@ -402,6 +419,7 @@ private:
     bool t1_, z0_, h_, w_init_;
     pos_t u_;
     cfg::p_t len_;
+    bool mark_, mp_, mn_;  // the mark; u + 1, u - 1 in [0, L] (of the previous call)
     pos_t b_, c_, z_;
 };
 

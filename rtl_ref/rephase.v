@@ -20,7 +20,7 @@
 //      mark_len at homing; the test is made on u before the count, for each count direction).
 // Every path is one carry chain from registers plus a few LUT levels: 38 bits only for the
 // counters adj and u, whose steps are registers of their own (as_q, us_q, from the look-ahead);
-// A + dir*P in two parts over two calls (14 + 24 bits), C and Z as 14-bit adds and a select;
+// A + dir*P in two parts over two calls (13 + 25 bits), C and Z as 13-bit adds and a select;
 // at most 19 bits for the split position counters (paced by the late pstep, out_pos by a
 // registered step) and 14 bits (Bresenham, tr, w, d) elsewhere; no 38-bit compare, no adder in
 // series with another, and the late pstep enters no chain but paced's low half.
@@ -78,7 +78,7 @@ module rephase (
     localparam integer W_LAG = 2;         // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
     localparam integer W_X   = W_P + 1;   // w moves and wraps
     localparam integer W_LO  = W_POS / 2; // low half of a position counter (pos_step)
-    localparam integer W_CZ  = W_P + 1;   // low part of B = A + dir*P, C = B + dir*mark_len, Z
+    localparam integer W_CZ  = W_P;       // low part of B = A + dir*P, C = B + dir*mark_len, Z
 
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]              stage_q, stage_d;
@@ -110,10 +110,13 @@ module rephase (
     reg signed [W_POS-1:0] b_q, b_d, c_q, c_d, z_q, z_d;
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
+    reg                    mp_q, mn_q;         // u + 1 / u - 1 in [0, L], of the previous call
     reg                    sp_q, sn_q;         // s_pos / s_neg of this call, from i_pstep_nx
     reg                    pp_q, pn_q;         // pstep > 0 / < 0 in this call, from i_pstep_nx
     (* keep *) reg [1:0]   us_q;               // {s_neg, s_pos || s_neg}: the step of u
     (* keep *) reg [1:0]   as_q;               // the step of adj: sgn(lag) when pstep == 0
+    reg                    op_one_q, op_zero_q; // out_pos's low half is all ones / zero
+    (* keep *) reg         bw_c_q, bw_z_q;     // !fwd_q, copies for the C and Z adds
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
     reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
 
@@ -261,9 +264,24 @@ module rephase (
             b_add = {(lo[W_CZ] ^ bw) ? b_pm : b[W_POS-1:W_CZ], lo[W_CZ-1:0]};
         end
     endfunction
-    wire signed [W_POS-1:0] c_hom  = b_add(bs_q, bs_pm_q, mark_len_x[W_CZ-1:0], bwd_x);
-    wire signed [W_POS-1:0] z_hom  = b_add(bs_q, bs_pm_q, p4_x[W_CZ-1:0], bwd_x);
+    wire signed [W_POS-1:0] c_hom  = b_add(bs_q, bs_pm_q, mark_len_x[W_CZ-1:0], bw_c_q);
+    wire signed [W_POS-1:0] z_hom  = b_add(bs_q, bs_pm_q, p4_x[W_CZ-1:0], bw_z_q);
     wire signed [W_POS-1:0] bs_nx  = {bs_hi, bs_lo[W_CZ-1:0]};
+    // out_pos moves by ostep (osu_q / osd_q) in two halves like pos_step, but the low half's wrap
+    // tests are registers (op_one_q: low half all ones, op_zero_q: low half zero), formed in the
+    // call before from equalities of the register and its step, so the high half's enable is one
+    // LUT of registers
+    wire [W_LO-1:0]         op_lo  = out_pos_q[W_LO-1:0] + {{(W_LO-1){osd_q}}, osu_q || osd_q};
+    wire [W_POS-W_LO-1:0]   op_hi  = out_pos_q[W_POS-1:W_LO];
+    wire signed [W_POS-1:0] op_nx  = {(osu_q && op_one_q) ? op_hi + 1'b1 :
+                                      (osd_q && op_zero_q) ? op_hi - 1'b1 : op_hi, op_lo};
+    wire                    op_h1  = out_pos_q[W_LO-1:1] == {(W_LO-1){1'b1}};
+    wire                    op_h0  = out_pos_q[W_LO-1:1] == {(W_LO-1){1'b0}};
+    wire                    op_b0  = out_pos_q[0];
+    // the next low half is all ones: ...10 and +1, all ones and 0, zero and -1; zero: all ones
+    // and +1, zero and 0, ...01 and -1
+    wire op_one_n  = osu_q ? (op_h1 && !op_b0) : osd_q ? (op_h0 && !op_b0) : (op_h1 && op_b0);
+    wire op_zero_n = osu_q ? (op_h1 && op_b0) : osd_q ? (op_h0 && op_b0) : (op_h0 && !op_b0);
     // the steps of adj and u from their own registers (sign-extended)
     wire signed [W_POS-1:0] adj_st = {{(W_POS-1){as_q[1]}}, as_q[0]};
     wire signed [W_POS-1:0] u_st   = {{(W_POS-1){us_q[1]}}, us_q[0]};
@@ -280,16 +298,21 @@ module rephase (
     wire        last_hold = tr_q == tr_pm1;
     wire        last_s    = s_pos ? (tr_q == tr_pm2) : s_neg ? (tr_q == tr_px) : last_hold;
 
-    // 6. mark test on u before the count: u' = u + s in [0, L]
+    // 6. mark test on u before the count: u' = u + s in [0, L]. Without a count it is the mark
+    //    register itself (in stage 3 mark_q is the test of u_q). For a count (s = +1: u in
+    //    [-1, L - 1]; s = -1: u in [1, L + 1]) the tests are registers (mp_q, mn_q) formed in the
+    //    previous call from u_q and len_q: u and L do not change in the call before a count
+    //    (real counts are >= 2 calls apart, and homing is a count), so no compare precedes the
+    //    mark register
     wire        u_hz   = u_q[W_POS-1:W_P+1] == {(W_POS-W_P-1){1'b0}}; // 0 <= u < 2^14
     wire        u_m1   = u_q == {W_POS{1'b1}};                         // u == -1
     wire [W_P:0] u_lo  = u_q[W_P:0];
-    wire        u_le   = u_lo <= {1'b0, len_q};
     wire        u_lt   = u_lo < {1'b0, len_q};
     wire        u_le1  = u_lo <= len1_q;
     wire        u_ge1  = u_lo != {(W_P+1){1'b0}};
-    wire        in_rng = s_pos ? (u_m1 || (u_hz && u_lt)) :
-                         s_neg ? (u_hz && u_ge1 && u_le1) : (u_hz && u_le);
+    wire        mp_n   = u_m1 || (u_hz && u_lt);                      // u + 1 in [0, L]
+    wire        mn_n   = u_hz && u_ge1 && u_le1;                      // u - 1 in [0, L]
+    wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mark_q;
 
     // 5. the output step (ostep_n above). lag' is lag - sgn(lag) (idle call), lag + 1 / lag - 1
     // (an extra count with pstep = +1 / -1) or lag, in 2-bit arithmetic (-1..1 under the block
@@ -404,7 +427,7 @@ module rephase (
 
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
-        out_pos_d = pos_step(out_pos_q, ostep_n);
+        out_pos_d = op_nx;
         // (adj moves by sgn(lag) in a call without a real count: its step is a register of its
         // own, as_q, formed in the previous call with osu_q / osd_q, so the plain 38-bit chain
         // starts at flip-flops beside it)
@@ -435,6 +458,8 @@ module rephase (
             stage_q    <= 2'd1;
             paced_q    <= {W_POS{1'b0}};
             out_pos_q  <= {W_POS{1'b0}};
+            op_one_q   <= 1'b0;
+            op_zero_q  <= 1'b1;
             adj_q      <= {W_POS{1'b0}};
             fwd_last_q <= 1'b1;
             sw_prev_q  <= 1'b0;
@@ -444,6 +469,8 @@ module rephase (
             bs_c_q     <= 1'b0;
             bs_pm_q    <= {(W_POS-W_CZ){1'b0}};
             fwd_q      <= 1'b1;
+            bw_c_q     <= 1'b0;
+            bw_z_q     <= 1'b0;
             d_q        <= {W_PH{1'b0}};
             wa_q       <= {W_PH{1'b0}};
             dm_q       <= 2'd0;
@@ -465,16 +492,20 @@ module rephase (
             w_init_q   <= 1'b0;
             u_q        <= {W_POS{1'b0}};
             len_q      <= {W_P{1'b0}};
-            len1_q     <= {(W_P+1){1'b0}};
+            len1_q     <= {{W_P{1'b0}}, 1'b1};  // L + 1 of L = 0
             b_q        <= {W_POS{1'b0}};
             c_q        <= {W_POS{1'b0}};
             z_q        <= {W_POS{1'b0}};
             ostep_q    <= 2'sd0;
             mark_q     <= 1'b0;
+            mp_q       <= 1'b0;
+            mn_q       <= 1'b0;
         end else begin
             stage_q    <= stage_d;
             paced_q    <= paced_d;
             out_pos_q  <= out_pos_d;
+            op_one_q   <= op_one_n;
+            op_zero_q  <= op_zero_n;
             adj_q      <= adj_d;
             fwd_last_q <= fwd_last_d;
             sw_prev_q  <= i_sw;
@@ -484,6 +515,8 @@ module rephase (
             bs_c_q     <= bs_lo[W_CZ];
             bs_pm_q    <= bs_pm_n;
             fwd_q      <= fwd_d;
+            bw_c_q     <= !fwd_d;
+            bw_z_q     <= !fwd_d;
             d_q        <= d_d;
             wa_q       <= wa_d;
             dm_q       <= dm_d;
@@ -511,6 +544,8 @@ module rephase (
             z_q        <= z_d;
             ostep_q    <= ostep_d;
             mark_q     <= mark_d;
+            mp_q       <= mp_n;
+            mn_q       <= mn_n;
         end
         // the count decode of the next call: its pstep against its fwd (the reset value in a
         // reset call)
@@ -717,6 +752,7 @@ module rephase (
         end
     end
 
+    wire signed [W_POS-1:0] f_lq = $signed({{(W_POS-W_P){1'b0}}, len_q});
     wire [W_POS-W_CZ-1:0] f_bspm = bs_q[W_POS-1:W_CZ] + {{(W_POS-W_CZ-1){!f_dir}}, 1'b1};  // + dir
     always @* begin
         assume(i_period == f_per);
@@ -747,6 +783,13 @@ module rephase (
             // call; lag = adj_tgt - adj is -1, 0 or +1, non-zero only right after a real count
             // (so it is paid out in the next call), its sign register exact
             assert(out_pos_q == paced_q + adj_q);
+            assert(bw_c_q == !fwd_q && bw_z_q == !fwd_q);
+            assert(len1_q == {1'b0, len_q} + 1'b1);
+            // the mark tests of a count: those of u and L, which did not change in a call without
+            // a count (homing is a count)
+            if (!f_pnz) assert(mp_q == (u_q >= -38'sd1 && u_q < f_lq) && mn_q == (u_q >= 38'sd1 && u_q <= f_lq + 38'sd1));
+            assert(op_one_q == (out_pos_q[W_LO-1:0] == {W_LO{1'b1}}) &&
+                   op_zero_q == (out_pos_q[W_LO-1:0] == {W_LO{1'b0}}));
             assert(ostep_q != -2'sd2);
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
             // the per-pstep forms of the extra-count test are the test itself
