@@ -119,6 +119,7 @@ module rephase (
     (* keep *) reg         bw_c_q, bw_z_q;     // !fwd_q, copies for the C and Z adds
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
     reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
+    reg                    hom_q;              // this call is the homing count (from the look-ahead)
 
     // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
     // The low half adds s (a W_LO-bit chain); the high half takes hi + 1 / hi - 1 (chains of the
@@ -232,12 +233,11 @@ module rephase (
     wire signed [W_BR-1:0] v_pp   = v_q + px_br;
     wire [W_PH-1:0]        num_pd = num_q + d_q;
 
-    // homing: the count that makes tr == P (at_last: tr == P - 1 after the previous call)
-    // (the part from registers and the level inputs kept as a net, so the late pstep meets it in
-    // the last LUT: the mark counter's and the mark's selects follow pstep by one or two levels)
-    (* keep *) wire hm_rdy;
-    assign hm_rdy = in2 && at_last_q;
-    wire homing = hm_rdy && s_pos;
+    // homing: the count that makes tr == P (in2 && s_pos && at_last, at_last: tr == P - 1 after
+    // the previous call), a register formed in the previous call from the next stage, at_last and
+    // the look-ahead inputs, so the load enable of B, C, Z, L and the selects behind it start at a
+    // flip-flop
+    wire homing = hom_q;
     wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
     // A + dir*P for B (formed every call from registers; used at homing, >= 2P calls after A),
     // as x + dir*y = x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain, the
@@ -552,6 +552,8 @@ module rephase (
         sp_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == (i_rst || fwd_d));
         sn_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d));
         pp_q <= i_pstep_nx != 2'sd0 && !i_pstep_nx[1];
+        hom_q <= !i_rst && stage_d == 2'd2 && !(i_unhome_nx || i_rehome_nx) && at_last_d &&
+                 i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == fwd_d);
         us_q <= {i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d)), i_pstep_nx != 2'sd0};
         pn_q <= i_pstep_nx[1];
         un_q <= i_unhome_nx;
@@ -784,6 +786,7 @@ module rephase (
             // (so it is paid out in the next call), its sign register exact
             assert(out_pos_q == paced_q + adj_q);
             assert(bw_c_q == !fwd_q && bw_z_q == !fwd_q);
+            assert(hom_q == (in2 && s_pos && at_last_q));
             assert(len1_q == {1'b0, len_q} + 1'b1);
             // the mark tests of a count: those of u and L, which did not change in a call without
             // a count (homing is a count)

@@ -162,6 +162,7 @@ MUTATIONS=(
   "rep_h_flag|rephase.v|rephase_adj|s/(h || w0 == p2m1)/(h || w0 == p2)/"
   "rep_dm_mode|rephase.v|rephase_adj|s/fwd_last_d ? z0_n : h_n};/fwd_last_d ? z0_n : h};/"
   "rep_mark_len|rephase.v|rephase|s/wire        mp_n   = u_m1 || (u_hz \&\& u_lt);/wire        mp_n   = u_m1 || (u_hz \&\& u_le1);/"
+  "rep_hom_lv|rephase.v|rephase|s/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !(i_unhome_nx || i_rehome_nx)/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !i_unhome_nx/"
   "rep_mark_hold|rephase.v|rephase|s/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mark_q;/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mp_q;/"
   "rep_back_a|rephase.v|rephase|s/wire        tr_back  = (s_neg \&\& tr_is0)/wire        tr_back  = (s_neg \&\& tr_is0 \&\& 1'b0)/"
   "rep_snx_fwd|rephase.v|rephase|s/(!i_pstep_nx\[1\] == (i_rst || fwd_d))/(!i_pstep_nx[1] == (i_rst || fwd_q))/"
