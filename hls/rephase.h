@@ -113,8 +113,8 @@ public:
         u_ = 0;
         len_ = 0;
         mark_ = false;
-        mp_ = false;
-        mn_ = false;
+        mt_u_ = 0;
+        mt_len_ = 0;
         b_ = 0;
         c_ = 0;
         z_ = 0;
@@ -140,7 +140,7 @@ public:
                 num_ = 0;
             }
             k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-            form_bs(a_, fwd_, pp);
+            if (stage_ == 2) form_bs(a_, fwd_, pp);
             at_last_ = tr_ == tr_t(pp) - 1;
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
@@ -172,6 +172,7 @@ private:
         const bool leave = (unhome || rehome) && stage_ != 1;
         const bool in2 = stage_ == 2 && !leave;
         const bool in3 = stage_ == 3 && !leave;
+        const cfg::stage_t stage_prev = stage_;
         const cfg::p_t len_prev = len_;
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
 
@@ -313,7 +314,7 @@ private:
         // k = d - P from the register d (before this call's load): valid from the third call
         // after A, and the first carry can come no earlier (counts >= 2 calls apart)
         k_ = cfg::br_t(cfg::br_t(d_reg) - cfg::br_t(pp));
-        form_bs(a_prev, fwd_prev, pp);
+        if (stage_prev == 2) form_bs(a_prev, fwd_prev, pp);
         at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
@@ -331,7 +332,9 @@ private:
         // (the test for a count is the register of the previous call, mp / mn: u and L do not
         // change in the call before a count; without a count the mark register itself, which in
         // stage 3 is the test of u)
-        const bool in_rng = s > 0 ? mp_ : s < 0 ? mn_ : mark_;
+        const bool in_rng = s > 0   ? (mt_u_ >= -1 && mt_u_ < pos_t(mt_len_))
+                            : s < 0 ? (mt_u_ >= 1 && mt_u_ <= pos_t(pos_t(mt_len_) + 1))
+                                    : mark_;
         mark_tests(len_prev);  // from u and L before this call's update
         u_ = homing ? pos_t(0) : pos_t(u_ + s);
         const bool mark = homing || (in3 && in_rng);
@@ -369,6 +372,9 @@ private:
     // bs = A + dir*P (register of the call, used at homing): the low W_CZ bits now, the high
     // part with the low part's carry of the previous call (bs_c), as x + (y ^ bwd) + bwd; bs_pm
     // is the high part of bs before the call + dir (DESIGN 4.5 "Hardware form")
+    // The model forms them in stage-2 calls only: only the homing call reads them, and the three
+    // calls before it, whose inputs they are, are stage-2 calls (homing needs tr = P - 1 >= 7);
+    // rtl_ref/ forms them in every call, the same values at homing
     void form_bs(const pos_t& a, bool fwd, cfg::p_t pp) {
         using l1_t = uint<cfg::W_CZ + 1>;
         const cfg::czl_t ones = cfg::czl_t((1u << cfg::W_CZ) - 1u);
@@ -381,10 +387,12 @@ private:
         bs_ = pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
-    // the mark tests for a count in the next call, from u and L of this call (rtl_ref/: u_q, len_q)
+    // the mark tests for a count in the next call are those of u and L of this call, before its
+    // update (rtl_ref/ registers the two tests, mp_q / mn_q; the model keeps u and L and tests
+    // them when a count reads them)
     void mark_tests(cfg::p_t len) {
-        mp_ = u_ >= -1 && u_ < pos_t(len);
-        mn_ = u_ >= 1 && u_ <= pos_t(pos_t(len) + 1);
+        mt_u_ = u_;
+        mt_len_ = len;
     }
 
     // C / Z at homing: b + dir*y (y < 2^W_CZ) as a W_CZ-bit add; the high part is b's, or b's + dir
@@ -419,7 +427,9 @@ private:
     bool t1_, z0_, h_, w_init_;
     pos_t u_;
     cfg::p_t len_;
-    bool mark_, mp_, mn_;  // the mark; u + 1, u - 1 in [0, L] (of the previous call)
+    bool mark_;        // the mark
+    pos_t mt_u_;       // u and L of the previous call (the mark tests of a count)
+    cfg::p_t mt_len_;
     pos_t b_, c_, z_;
 };
 
