@@ -34,7 +34,7 @@ build: deps
 
 # The program writes its outputs under out/ (trace.csv, trace.vcd, events.csv).
 run: build
-	@test -x $(BUILD_DIR)/laserax || { echo "make run: $(BUILD_DIR)/laserax was not built (no tools/laserax.cpp yet?)" >&2; exit 1; }
+	@test -x $(BUILD_DIR)/laserax || { echo "make run: $(BUILD_DIR)/laserax was not built (no tools/laserax/laserax.cpp yet?)" >&2; exit 1; }
 	$(BUILD_DIR)/laserax run $(ARGS)
 
 # Release tests (all but label soak), then the ASan+UBSan build in $(ASAN_DIR) (all but labels
@@ -66,7 +66,7 @@ bench: build
 	 else echo "make bench: valgrind missing (make deps): no instructions-per-clock figures"; fi
 
 vectors: build
-	@test -x $(BUILD_DIR)/laserax || { echo "make vectors: $(BUILD_DIR)/laserax was not built (no tools/laserax.cpp yet?)" >&2; exit 1; }
+	@test -x $(BUILD_DIR)/laserax || { echo "make vectors: $(BUILD_DIR)/laserax was not built (no tools/laserax/laserax.cpp yet?)" >&2; exit 1; }
 	$(BUILD_DIR)/laserax vectors --out $(OUT)/vectors
 
 # Plots out/trace.csv (and out/events.csv when present); runs `make run` first if there is no trace.

@@ -14,13 +14,13 @@
 #include <cstdlib>
 #include <string>
 
-#include "tools/common/regmap_table.h"
-#include "tools/common/sim.h"
+#include "host/regmap_table.h"
+#include "sysmodel/sim.h"
 
 namespace rm = lxt::regmap;
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
-    golden::axis_regs s{};
+    lxt::axis_settings s{};
     lxt::dual_axis ax(s);
     size_t i = 0;
     auto next = [&]() -> uint8_t { return i < size ? data[i++] : 0; };
@@ -34,7 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             for (int k = 0; k < 8; ++k) bits = (bits << 8) | next();
             const rm::reg_info& info = rm::kRegs[r];
             if (info.acc == rm::access::port || info.golden_member[0] == '\0') continue;
-            golden::axis_regs ns = s;
+            lxt::axis_settings ns = s;
             if (!rm::set(ns, r, rm::from_bits(info, bits))) continue;
             s = ns;
             ax.set(s);

@@ -1,4 +1,4 @@
-// fuzz_vectors — libFuzzer target for the strict vector reader (tools/common/vectors.cpp).
+// fuzz_vectors — libFuzzer target for the strict vector reader (tools/laserax/vectors.cpp).
 //
 // Input: any bytes, read as a CSV vector file and as a hex file of the quad_decoder layout.
 // Properties: the readers never crash; a rejection always carries a message; an accepted file
@@ -9,7 +9,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "tools/common/vectors.h"
+#include "tools/laserax/vectors.h"
 
 namespace {
 

@@ -3,7 +3,7 @@
 // X1 master again, skew check against a limit with an offset parameter, deskew by X2 alone.
 //
 // Written from the seed's reasoning, not from hls/ and not from the cycle-accurate simulation
-// (tools/common/gantry): every quantity is a closed-form function of the physical set-up, in
+// (sysmodel/gantry): every quantity is a closed-form function of the physical set-up, in
 // double.
 //
 //   * Each compensator counts real output counts p(x) from the moment its laser became ready

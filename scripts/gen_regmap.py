@@ -13,9 +13,12 @@ Options: --csv PATH (default regmap/laserax_regs.csv), --out-dir DIR (default: t
 Generated (each with the header line of GENERATED_NOTE):
     hls/laserax_top.h, hls/laserax_top.cpp   Vitis HLS top: one s_axilite scalar per register
     hls/laserax_regmap.h                     lx::regmap constants + static_asserts against lx::axis_regs
-    tools/common/regmap_table.h, .cpp        host table, accessors (lx:: and golden::axis_regs), to_hls
-    tools/common/laserax_top_call.h          host-only: laserax_top() called with an lx::axis_regs
-    tools/common/laserax_regs_c.h            C header for firmware
+    host/regmap_table.h, .cpp                host table, the host settings struct lxt::axis_settings
+                                             and its accessors
+    host/laserax_regs_c.h                    C header for firmware
+    sysmodel/regmap_models.h, .cpp           accessors of lx::axis_regs and golden::axis_regs,
+                                             to_hls / to_golden / settings_from
+    sysmodel/laserax_top_call.h              laserax_top() called with an lx::axis_regs
     docs/REGISTERS.md                        the documented map
     rtl_ref/laserax_regs.v                   Verilog AXI4-Lite slave holding the map (o_<name> ports)
 
@@ -420,6 +423,67 @@ def c_str(s):
     return '"%s"' % s.replace("\\", "\\\\").replace('"', '\\"')
 
 
+def settings_type(r):
+    """C++ type of a register's member in the host settings struct lxt::axis_settings."""
+    if r.width == 1:
+        return "bool"
+    if not r.signed and r.width >= 32:
+        return "uint64_t"
+    return "int64_t"
+
+
+def settings_struct(regs):
+    """The nested struct lxt::axis_settings built from the hls_member paths (the same member
+    names as lx::axis_regs, plain integer types, reset values as default member initialisers)."""
+    comp = re.compile(r"^([a-z_][a-z0-9_]*)(?:\[(\d+)\])?$")
+
+    def new_node():
+        return {"order": [], "kids": {}, "dims": {}, "leaf": {}}
+
+    root = new_node()
+    for r in regs:
+        parts = r.hls_member.split(".")
+        node = root
+        for k, part in enumerate(parts):
+            m = comp.match(part)
+            name, index = m.group(1), m.group(2)
+            if name not in node["order"]:
+                node["order"].append(name)
+            if index is not None:
+                node["dims"][name] = max(node["dims"].get(name, 0), int(index) + 1)
+            if k == len(parts) - 1:
+                node["leaf"][name] = r
+            else:
+                node["kids"].setdefault(name, new_node())
+                node = node["kids"][name]
+    lines = []
+
+    def emit(node, indent):
+        pad = " " * indent
+        for name in node["order"]:
+            dim = "[%d]" % node["dims"][name] if name in node["dims"] else ""
+            if name in node["leaf"]:
+                r = node["leaf"][name]
+                t = settings_type(r)
+                if t == "bool":
+                    init = "true" if r.reset else "false"
+                elif t == "uint64_t":
+                    init = "%dULL" % r.reset
+                else:
+                    init = c_ll(r.reset)
+                if dim:
+                    lines.append("%s%s %s%s = {};" % (pad, t, name, dim))
+                else:
+                    lines.append("%s%s %s = %s;  // %s" % (pad, t, name, init, r.name))
+            else:
+                lines.append("%sstruct %s_t {" % (pad, name))
+                emit(node["kids"][name], indent + 4)
+                lines.append("%s} %s%s;" % (pad, name, dim))
+
+    emit(root, 4)
+    return "\n".join(lines)
+
+
 def gen_table_h(regs):
     idx = "\n".join("constexpr int %s = %d;" % (r.name, i) for i, r in enumerate(regs))
     rows = []
@@ -429,23 +493,30 @@ def gen_table_h(regs):
                      c_str(r.units), "true" if r.any_range else "false", c_ll(r.eff_min), c_ll(r.eff_max), c_ll(r.step),
                      r.check, c_str(r.rule), c_str(r.hls_member), c_str(r.golden_member), c_str(r.description)))
     return """// regmap_table.h — the s_axilite register map (docs/REGISTERS.md) for host code: a constexpr
-// table of every register and accessors that read or write one register of lx::axis_regs or
-// golden::axis_regs by index; to_hls() (golden register struct -> hls register struct).
+// table of every register, the host settings struct lxt::axis_settings (one member per register,
+// plain integers, reset values) and accessors that read or write one register of it by index.
+// Host code only: nothing from hls/ or golden/ (the model register structs are converted in
+// sysmodel/regmap_models.h).
 //
 // %s
 //
 // Values are int64: the register's value (sign-extended for signed registers); the bits as they
-// appear on the bus are to_bits(value). Hand-written users: tools/common/regmap.h (register
+// appear on the bus are to_bits(value). Hand-written users: host/regmap.h (register
 // image, physical settings <-> registers).
-#ifndef LASERAX_TOOLS_REGMAP_TABLE_H
-#define LASERAX_TOOLS_REGMAP_TABLE_H
+#ifndef LASERAX_HOST_REGMAP_TABLE_H
+#define LASERAX_HOST_REGMAP_TABLE_H
 
 #include <cstdint>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
-
 namespace lxt {
+
+// Every register of the map in plain integers, as a controller's software holds them: the member
+// paths are those of the hls register struct (hls_member below), the defaults the reset values.
+// A member may hold a value outside its register's width (image_from, host/regmap.h, reports it).
+struct axis_settings {
+%s
+};
+
 namespace regmap {
 
 enum class access { rw, pulse, port };  // pulse: the host writes 1 then 0; port: table write port
@@ -464,8 +535,8 @@ struct reg_info {
     int64_t step;     // legal values are multiples of step (1: any)
     check chk;
     const char* rule;           // cross-register constraint, "" if none
-    const char* hls_member;     // path inside lx::axis_regs
-    const char* golden_member;  // path inside golden::axis_regs, "" if golden has none
+    const char* hls_member;     // path inside lxt::axis_settings and lx::axis_regs
+    const char* golden_member;  // path inside the golden model's register struct, "" if it has none
     const char* description;
     constexpr int words() const { return (width + 31) / 32; }
 };
@@ -510,48 +581,32 @@ constexpr int64_t from_bits(const reg_info& r, uint64_t bits) {
 // Index of a register by name, -1 if there is none.
 int find(const char* name);
 
-// lx::axis_regs: every register.
-int64_t get(const lx::axis_regs& r, int i);
-bool set(lx::axis_regs& r, int i, int64_t value);  // false (r unchanged) if value does not fit
-// golden::axis_regs: false for registers golden has no member for (golden_member == "").
-// get() returns the member as it is (it may lie outside the register's width).
-bool get(const golden::axis_regs& r, int i, int64_t* value);
-bool set(golden::axis_regs& r, int i, int64_t value);
+// lxt::axis_settings: every register. get() returns the member as it is (it may lie outside the
+// register's width); set() is false (s unchanged) if the value does not fit the width.
+int64_t get(const axis_settings& s, int i);
+bool set(axis_settings& s, int i, int64_t value);
 
 }  // namespace regmap
-
-// The hls register struct for a golden one (registers golden lacks keep their reset values);
-// member values are truncated to the register widths, as a register write would.
-lx::axis_regs to_hls(const golden::axis_regs& s);
-
 }  // namespace lxt
 
-#endif  // LASERAX_TOOLS_REGMAP_TABLE_H
-""" % (GENERATED_NOTE, len(regs), FIRST_OFFSET, max(r.offset + r.span for r in regs), idx, "\n".join(rows))
+#endif  // LASERAX_HOST_REGMAP_TABLE_H
+""" % (GENERATED_NOTE, settings_struct(regs), len(regs), FIRST_OFFSET, max(r.offset + r.span for r in regs), idx,
+       "\n".join(rows))
 
 
 def gen_table_cpp(regs):
-    get_h, set_h, get_g, set_g, to_hls = [], [], [], [], []
+    get_s, set_s = [], []
     for r in regs:
-        m = "r." + r.hls_member
+        m = "s." + r.hls_member
         if r.width == 1:
-            get_h.append("        case idx::%s: return %s ? 1 : 0;" % (r.name, m))
-            set_h.append("        case idx::%s: %s = value != 0; return true;" % (r.name, m))
-        elif r.signed:
-            get_h.append("        case idx::%s: return %s.to_int64();" % (r.name, m))
-            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
+            get_s.append("        case idx::%s: return %s ? 1 : 0;" % (r.name, m))
         else:
-            get_h.append("        case idx::%s: return static_cast<int64_t>(%s.to_uint64());" % (r.name, m))
-            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
-        if r.golden_member:
-            g = "r." + r.golden_member
-            get_g.append("        case idx::%s: *value = static_cast<int64_t>(%s); return true;" % (r.name, g))
-            set_g.append("        case idx::%s: assign(%s, value); return true;" % (r.name, g))
-            to_hls.append("    r.%s = s.%s;" % (r.hls_member, r.golden_member))
+            get_s.append("        case idx::%s: return static_cast<int64_t>(%s);" % (r.name, m))
+        set_s.append("        case idx::%s: assign(%s, value); return true;" % (r.name, m))
     return """// regmap_table.cpp — see regmap_table.h.
 //
 // %s
-#include "tools/common/regmap_table.h"
+#include "host/regmap_table.h"
 
 #include <cstring>
 
@@ -571,6 +626,115 @@ int find(const char* name) {
         if (std::strcmp(kRegs[i].name, name) == 0) return i;
     return -1;
 }
+
+int64_t get(const axis_settings& s, int i) {
+    switch (i) {
+%s
+        default: return 0;
+    }
+}
+
+bool set(axis_settings& s, int i, int64_t value) {
+    if (i < 0 || i >= kNumRegs || !fits(kRegs[i], value)) return false;
+    switch (i) {
+%s
+        default: return false;
+    }
+}
+
+}  // namespace regmap
+}  // namespace lxt
+""" % (GENERATED_NOTE, "\n".join(get_s), "\n".join(set_s))
+
+
+def gen_models_h(regs):
+    return """// regmap_models.h — the register map (host/regmap_table.h) applied to the model register
+// structs: accessors that read or write one register of lx::axis_regs or golden::axis_regs by
+// index, and the conversions between them and the host settings struct lxt::axis_settings.
+// System-model / testbench code: it joins host/, hls/ and golden/, which never include each other.
+//
+// %s
+#ifndef LASERAX_SYSMODEL_REGMAP_MODELS_H
+#define LASERAX_SYSMODEL_REGMAP_MODELS_H
+
+#include <cstdint>
+
+#include "golden/axis_chain.h"
+#include "hls/axis_core.h"
+#include "host/regmap_table.h"
+
+namespace lxt {
+namespace regmap {
+
+// lx::axis_regs: every register.
+int64_t get(const lx::axis_regs& r, int i);
+bool set(lx::axis_regs& r, int i, int64_t value);  // false (r unchanged) if value does not fit
+// golden::axis_regs: false for registers golden has no member for (golden_member == "").
+// get() returns the member as it is (it may lie outside the register's width).
+bool get(const golden::axis_regs& r, int i, int64_t* value);
+bool set(golden::axis_regs& r, int i, int64_t value);
+
+}  // namespace regmap
+
+// The hls register struct for a golden one (registers golden lacks keep their reset values) or for
+// the host settings; member values are truncated to the register widths, as a register write would.
+lx::axis_regs to_hls(const golden::axis_regs& s);
+lx::axis_regs to_hls(const axis_settings& s);
+// The golden register struct for the host settings (members golden lacks are dropped) and back
+// (registers golden lacks keep their reset values); members are copied as they are.
+golden::axis_regs to_golden(const axis_settings& s);
+axis_settings settings_from(const golden::axis_regs& g);
+
+}  // namespace lxt
+
+#endif  // LASERAX_SYSMODEL_REGMAP_MODELS_H
+""" % (GENERATED_NOTE,)
+
+
+def gen_models_cpp(regs):
+    get_h, set_h, get_g, set_g, to_hls, to_hls_s, to_golden, from_golden = [], [], [], [], [], [], [], []
+    for r in regs:
+        m = "r." + r.hls_member
+        if r.width == 1:
+            get_h.append("        case idx::%s: return %s ? 1 : 0;" % (r.name, m))
+            set_h.append("        case idx::%s: %s = value != 0; return true;" % (r.name, m))
+        elif r.signed:
+            get_h.append("        case idx::%s: return %s.to_int64();" % (r.name, m))
+            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
+        else:
+            get_h.append("        case idx::%s: return static_cast<int64_t>(%s.to_uint64());" % (r.name, m))
+            set_h.append("        case idx::%s: %s = %s(value); return true;" % (r.name, m, r.lx_type))
+        if r.width == 1:
+            to_hls_s.append("    r.%s = s.%s;" % (r.hls_member, r.hls_member))
+        else:
+            to_hls_s.append("    r.%s = %s(s.%s);" % (r.hls_member, r.lx_type, r.hls_member))
+        if r.golden_member:
+            g = "r." + r.golden_member
+            get_g.append("        case idx::%s: *value = static_cast<int64_t>(%s); return true;" % (r.name, g))
+            set_g.append("        case idx::%s: assign(%s, value); return true;" % (r.name, g))
+            to_hls.append("    r.%s = s.%s;" % (r.hls_member, r.golden_member))
+            to_golden.append("    convert(g.%s, s.%s);" % (r.golden_member, r.hls_member))
+            from_golden.append("    convert(s.%s, g.%s);" % (r.hls_member, r.golden_member))
+    return """// regmap_models.cpp — see regmap_models.h.
+//
+// %s
+#include "sysmodel/regmap_models.h"
+
+namespace lxt {
+
+namespace {
+template <typename T>
+void assign(T& dst, int64_t v) {
+    dst = static_cast<T>(v);
+}
+void assign(bool& dst, int64_t v) { dst = v != 0; }
+template <typename D, typename S>
+void convert(D& dst, const S& src) {
+    dst = static_cast<D>(src);
+}
+}  // namespace
+
+namespace regmap {
 
 int64_t get(const lx::axis_regs& r, int i) {
     switch (i) {
@@ -610,8 +774,27 @@ lx::axis_regs to_hls(const golden::axis_regs& s) {
     return r;
 }
 
+lx::axis_regs to_hls(const axis_settings& s) {
+    lx::axis_regs r;
+%s
+    return r;
+}
+
+golden::axis_regs to_golden(const axis_settings& s) {
+    golden::axis_regs g;
+%s
+    return g;
+}
+
+axis_settings settings_from(const golden::axis_regs& g) {
+    axis_settings s;
+%s
+    return s;
+}
+
 }  // namespace lxt
-""" % (GENERATED_NOTE, "\n".join(get_h), "\n".join(set_h), "\n".join(get_g), "\n".join(set_g), "\n".join(to_hls))
+""" % (GENERATED_NOTE, "\n".join(get_h), "\n".join(set_h), "\n".join(get_g), "\n".join(set_g), "\n".join(to_hls),
+       "\n".join(to_hls_s), "\n".join(to_golden), "\n".join(from_golden))
 
 
 def gen_top_call_h(regs):
@@ -973,9 +1156,9 @@ def gen_md(regs):
 
 Generated from [`regmap/laserax_regs.csv`](../regmap/laserax_regs.csv), the single source of the
 register map: the Vitis HLS top (`hls/laserax_top.cpp`, one s_axilite scalar per register at the
-offsets below), the constants in `hls/laserax_regmap.h` and `tools/common/laserax_regs_c.h`, the
-host table and accessors (`tools/common/regmap_table.h`, used by the register image and the
-physical <-> register helper in `tools/common/regmap.h`) and this page are all written by
+offsets below), the constants in `hls/laserax_regmap.h` and `host/laserax_regs_c.h`, the
+host table and accessors (`host/regmap_table.h`, used by the register image and the
+physical <-> register helper in `host/regmap.h`) and this page are all written by
 `%s`.
 Edit the CSV, never the generated files; CTest `regmap_generated` fails until they are regenerated.
 
@@ -1010,8 +1193,8 @@ Conventions:
   state with status `cfg_err` (DESIGN §4.7); a `map` register outside its range gives the status
   bit `map_cfg_err` while `map_en` and that bank is selected, and the map is inactive
   ([ERROR_MAP.md](ERROR_MAP.md) §4.5); `any` is every value of the width.
-* Reset: the values after power-up; they are the default member values of `lx::axis_regs` and
-  `golden::axis_regs` (checked by `tb_regmap`).
+* Reset: the values after power-up; they are the default member values of `lx::axis_regs`,
+  `golden::axis_regs` and the host settings `lxt::axis_settings` (checked by `tb_regmap`).
 
 | offset | name | width | access | reset | units | legal | description |
 |---|---|---|---|---|---|---|---|
@@ -1036,8 +1219,9 @@ Error-map reload (docs/ERROR_MAP.md §4.4): write the geometry (`map_originB`, `
 Status and taps are not registers of this map: they are output wires of the top (`lx::axis_out`,
 DESIGN §5).
 
-Host helper: `tools/common/regmap.h` keeps a register image (32-bit words by offset) with
-write/read by name, converts it to and from `lx::axis_regs` / `golden::axis_regs`, and converts
+Host helper: `host/regmap.h` keeps a register image (32-bit words by offset) with
+write/read by name, converts it to and from the host settings `lxt::axis_settings`
+(`sysmodel/model_regs.h`: to and from `lx::axis_regs` / `golden::axis_regs`), and converts
 physical settings (air temperature, pressure, humidity, CO2, expansion coefficient, material
 temperature, thermal origin, error-map table) to register values and back; `laserax compensate`
 prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
@@ -1085,10 +1269,12 @@ def generate(regs):
         "hls/laserax_top.h": gen_top_h(regs),
         "hls/laserax_top.cpp": gen_top_cpp(regs),
         "hls/laserax_regmap.h": gen_regmap_h(regs),
-        "tools/common/regmap_table.h": gen_table_h(regs),
-        "tools/common/regmap_table.cpp": gen_table_cpp(regs),
-        "tools/common/laserax_top_call.h": gen_top_call_h(regs),
-        "tools/common/laserax_regs_c.h": gen_c_h(regs),
+        "host/regmap_table.h": gen_table_h(regs),
+        "host/regmap_table.cpp": gen_table_cpp(regs),
+        "sysmodel/regmap_models.h": gen_models_h(regs),
+        "sysmodel/regmap_models.cpp": gen_models_cpp(regs),
+        "sysmodel/laserax_top_call.h": gen_top_call_h(regs),
+        "host/laserax_regs_c.h": gen_c_h(regs),
         "docs/REGISTERS.md": gen_md(regs),
         "rtl_ref/laserax_regs.v": gen_rtl_regs(regs),
     }

@@ -14,7 +14,7 @@ names the file, and the exit status is 1. CTest runs it as `rtl_tb_generated`; `
 copy passes, and that an altered line, a deleted testbench and an extra testbench each fail.
 
 One testbench per block reads both vector sets of that block: <block>.hex (golden vectors,
-`laserax vectors`, tools/common/vectors.cpp) and <block>_stress.hex (rtl_stress_vectors,
+`laserax vectors`, tools/laserax/vectors.cpp) and <block>_stress.hex (rtl_stress_vectors,
 rtl_ref/tb/stress_vectors.cpp). Both writers take the column layout from lxt::vec_layout(), so
 the two files have the same `field` lines, and scripts/rtl_sim.sh checks that those lines equal
 the `//   field` lines of the testbench. The shared body (plusargs +vectors= +rows= +vcd=, reset,

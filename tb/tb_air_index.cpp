@@ -1,4 +1,4 @@
-// tb_air_index — refractive index of air (golden/air_index): published reference values, agreement
+// tb_air_index — refractive index of air (host/air_index): published reference values, agreement
 // of the two equations, input-range rejection, and the Edlén - Ciddor difference on the shop floor.
 //
 // 1. Saturation vapour pressure: IAPWS-IF97 verification values, the triple point and the normal
@@ -19,14 +19,14 @@
 #include <limits>
 #include <string>
 
-#include "golden/air_index.h"
+#include "host/air_index.h"
 #include "tb/tb_util.h"
 
 namespace {
 
-using golden::air_index_result;
-using golden::air_input;
-using golden::air_options;
+using lxt::air_index_result;
+using lxt::air_input;
+using lxt::air_options;
 
 std::string fmt(const char* f, double a, double b = 0, double c = 0, double d = 0) {
     char buf[256];
@@ -63,7 +63,7 @@ const nist_row kNist[] = {
     {20, 0, 101.325, 300, 1.000286581, 1.000286579},  {-40, 0, 120, 300, 1.000427233, 1.000427072},
 };
 
-bool inside(const golden::air_limits& L, const air_input& in) {
+bool inside(const lxt::air_limits& L, const air_input& in) {
     return in.wavelength_nm >= L.lambda_min_nm && in.wavelength_nm <= L.lambda_max_nm && in.temp_c >= L.t_min_c &&
            in.temp_c <= L.t_max_c && in.pressure_pa >= L.p_min_pa && in.pressure_pa <= L.p_max_pa;
 }
@@ -81,31 +81,31 @@ int main(int argc, char** argv) {
         const double tk[3] = {300.0, 500.0, 600.0};
         const double ps[3] = {0.353658941e-2, 0.263889776e1, 0.123443146e2};
         for (int i = 0; i < 3; ++i) {
-            const double v = golden::svp_water_if97(tk[i]) / 1e6;
+            const double v = lxt::svp_water_if97(tk[i]) / 1e6;
             res.check(std::fabs(v / ps[i] - 1.0) < 5e-9, fmt("IF97 p_s(%g K) = %.9e MPa, IAPWS table %.9e", tk[i], v, ps[i]));
         }
         // Triple point of water: 273.16 K, 611.657 Pa (Wagner & Pruss 1993; Wagner, Saul & Pruss
         // 1994): both the liquid and the ice equation must return it.
-        res.check(std::fabs(golden::svp_water_wagner_pruss(273.16) - 611.657) < 0.01,
-                  fmt("Wagner-Pruss at the triple point %.4f Pa, expected 611.657", golden::svp_water_wagner_pruss(273.16)));
-        res.check(std::fabs(golden::svp_ice_wagner(273.16) - 611.657) < 0.01,
-                  fmt("ice equation at the triple point %.4f Pa, expected 611.657", golden::svp_ice_wagner(273.16)));
+        res.check(std::fabs(lxt::svp_water_wagner_pruss(273.16) - 611.657) < 0.01,
+                  fmt("Wagner-Pruss at the triple point %.4f Pa, expected 611.657", lxt::svp_water_wagner_pruss(273.16)));
+        res.check(std::fabs(lxt::svp_ice_wagner(273.16) - 611.657) < 0.01,
+                  fmt("ice equation at the triple point %.4f Pa, expected 611.657", lxt::svp_ice_wagner(273.16)));
         // Normal boiling point on ITS-90: 373.124 K at 101.325 kPa (IAPWS-95 release).
-        const double pb = golden::svp_water_wagner_pruss(373.124);
+        const double pb = lxt::svp_water_wagner_pruss(373.124);
         res.check(std::fabs(pb / 101325.0 - 1.0) < 2e-5, fmt("Wagner-Pruss at 373.124 K = %.2f Pa, expected 101325", pb));
         // Wagner & Pruss (scientific) vs IF97 (industrial): IF97's saturation pressure is held to
         // 0.025 % of the scientific formulation.
         double worst = 0.0;
         for (double t = 0.05; t <= 100.0; t += 0.25) {  // from just above the triple point
-            const double a = golden::svp_water_wagner_pruss(t + 273.15), b = golden::svp_water_if97(t + 273.15);
+            const double a = lxt::svp_water_wagner_pruss(t + 273.15), b = lxt::svp_water_if97(t + 273.15);
             worst = std::fmax(worst, std::fabs(a / b - 1.0));
         }
         res.check(worst < 2.5e-4, fmt("Wagner-Pruss vs IF97 differ by %.2e (relative), limit 2.5e-4", worst));
         std::printf("  vapour pressure: Wagner-Pruss vs IF97 within %.1e (0..100 degC); p_sv(20 degC) = %.2f Pa\n", worst,
-                    golden::saturation_vapour_pressure_pa(20.0));
+                    lxt::saturation_vapour_pressure_pa(20.0));
         // over ice below 0 °C, continuous at the triple point
-        res.check(golden::saturation_vapour_pressure_pa(-10.0) < golden::saturation_vapour_pressure_pa(0.0) &&
-                      golden::saturation_vapour_pressure_pa(0.0) < golden::saturation_vapour_pressure_pa(0.02),
+        res.check(lxt::saturation_vapour_pressure_pa(-10.0) < lxt::saturation_vapour_pressure_pa(0.0) &&
+                      lxt::saturation_vapour_pressure_pa(0.0) < lxt::saturation_vapour_pressure_pa(0.02),
                   "saturation vapour pressure not increasing through 0 degC");
     }
 
@@ -114,13 +114,13 @@ int main(int argc, char** argv) {
         // NIST EMT Appendix A-III: Z of standard dry air (15 °C, 101 325 Pa, x_w = 0)
         // = 0.9995922115; density of standard water vapour (20 °C, 1333 Pa, x_w = 1)
         // = 0.00985938 kg/m^3 (with Ciddor's R = 8.314510 J/(mol K), M_v = 0.018015 kg/mol).
-        const double za = golden::ciddor_compressibility(101325.0, 288.15, 0.0);
+        const double za = lxt::ciddor_compressibility(101325.0, 288.15, 0.0);
         res.check(std::fabs(za - 0.9995922115) < 2e-10, fmt("Z(standard dry air) = %.10f, NIST 0.9995922115", za));
-        const double zw = golden::ciddor_compressibility(1333.0, 293.15, 1.0);
+        const double zw = lxt::ciddor_compressibility(1333.0, 293.15, 1.0);
         const double rho_vs = 1333.0 * 0.018015 / (zw * 8.314510 * 293.15);
         res.check(std::fabs(rho_vs / 0.00985938 - 1.0) < 1e-6, fmt("rho(standard vapour) = %.8f, NIST 0.00985938", rho_vs));
         // enhancement factor at 20 °C, 101 325 Pa: 1.00062 + 3.14e-8 * 101325 + 5.6e-7 * 400
-        res.check(std::fabs(golden::enhancement_factor(101325.0, 20.0) - 1.004025605) < 1e-9, "enhancement factor");
+        res.check(std::fabs(lxt::enhancement_factor(101325.0, 20.0) - 1.004025605) < 1e-9, "enhancement factor");
     }
 
     // ---- 3. NIST comparison table -------------------------------------------------------------
@@ -132,13 +132,13 @@ int main(int argc, char** argv) {
         double worst_c = 0, worst_e = 0, worst_c97 = 0, worst_e97 = 0;
         for (const nist_row& r : kNist) {
             const air_input in = cond(r.t, r.p_kpa * 1e3, r.rh, r.lam);
-            const air_index_result c = golden::air_index_ciddor(in);  // every row is inside Ciddor's range
-            const air_index_result e = golden::air_index_edlen(in, extra);
-            const air_index_result c97 = golden::air_index_ciddor(in, nist);
-            const air_index_result e97 = golden::air_index_edlen(in, nist);
+            const air_index_result c = lxt::air_index_ciddor(in);  // every row is inside Ciddor's range
+            const air_index_result e = lxt::air_index_edlen(in, extra);
+            const air_index_result c97 = lxt::air_index_ciddor(in, nist);
+            const air_index_result e97 = lxt::air_index_edlen(in, nist);
             const std::string at = fmt("NIST row t=%g RH=%g p=%g kPa lambda=%g nm", r.t, r.rh, r.p_kpa, r.lam);
             if (!res.check(c.ok && e.ok && c97.ok && e97.ok, at + ": not evaluated: " + c.error + e.error)) continue;
-            res.check(e.extrapolated == !inside(golden::edlen_limits(), in), at + ": Edlen extrapolation flag wrong");
+            res.check(e.extrapolated == !inside(lxt::edlen_limits(), in), at + ": Edlen extrapolation flag wrong");
             res.check(!c.extrapolated, at + ": Ciddor flagged as extrapolated");
             // The table gives n to 1e-9, so +-0.5e-9 is rounding. With NIST's own IF97 vapour
             // pressure the rest is NIST's mixing of R = 8.314472 J/(mol K) with a standard-vapour
@@ -165,8 +165,8 @@ int main(int argc, char** argv) {
         // about 3e-8 for their equation, consistent with that.
         for (double rh : {0.0, 50.0}) {
             const air_input in = cond(20.0, 101325.0, rh);
-            const air_index_result c = golden::air_index_ciddor(in), e = golden::air_index_edlen(in);
-            const double uc = golden::ciddor_expanded_uncertainty(in), ue = golden::edlen_expanded_uncertainty(in);
+            const air_index_result c = lxt::air_index_ciddor(in), e = lxt::air_index_edlen(in);
+            const double uc = lxt::ciddor_expanded_uncertainty(in), ue = lxt::edlen_expanded_uncertainty(in);
             const double d = e.n - c.n;
             res.check(c.ok && e.ok, "standard conditions not evaluated");
             res.check(uc > 1.5e-8 && uc < 3e-8 && ue > uc && ue < 4e-8, fmt("U95 Ciddor %.2e, Edlen %.2e implausible", uc, ue));
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
             for (double p = 90.0; p <= 110.001; p += 2.5)
                 for (double rh = 0; rh <= 70.001; rh += 10)
                     for (double co2 : {350.0, 450.0, 550.0}) {
-                        const air_index_result c = golden::air_index_ciddor(cond(t, p * 1e3, rh, 632.991, co2));
+                        const air_index_result c = lxt::air_index_ciddor(cond(t, p * 1e3, rh, 632.991, co2));
                         const double shop = 1.0 + 7.86e-4 * p / (273.0 + t) - 1.5e-11 * rh * (t * t + 160.0);
                         worst = std::fmax(worst, std::fabs(c.n - shop));
                     }
@@ -198,7 +198,7 @@ int main(int argc, char** argv) {
                     worst * 1e9);
         // Sensitivities at 20 °C, 101.325 kPa, 50 %RH (central differences), in ppm of n. The
         // derivatives of the shop-floor formula give -0.928 ppm/K, +2.68 ppm/kPa, -0.0084 ppm/%RH.
-        const auto n_at = [](double t, double p, double rh) { return golden::air_index_ciddor(cond(t, p, rh)).n; };
+        const auto n_at = [](double t, double p, double rh) { return lxt::air_index_ciddor(cond(t, p, rh)).n; };
         const double dT = (n_at(20.5, 101325, 50) - n_at(19.5, 101325, 50)) * 1e6;
         const double dP = (n_at(20, 101825, 50) - n_at(20, 100825, 50)) * 1e6;
         const double dH = (n_at(20, 101325, 55) - n_at(20, 101325, 45)) * 1e6 / 10.0;
@@ -234,7 +234,7 @@ int main(int argc, char** argv) {
         };
         int n_rej = 0;
         for (const bad& b : cases) {
-            const air_index_result r = b.ciddor ? golden::air_index_ciddor(b.in) : golden::air_index_edlen(b.in);
+            const air_index_result r = b.ciddor ? lxt::air_index_ciddor(b.in) : lxt::air_index_edlen(b.in);
             const std::string what = std::string(b.ciddor ? "Ciddor" : "Edlen") +
                                      fmt(" (lambda %g, t %g, p %g, RH %g)", b.in.wavelength_nm, b.in.temp_c,
                                          b.in.pressure_pa, b.in.rh_percent) +
@@ -246,31 +246,31 @@ int main(int argc, char** argv) {
         // Hard limits stay hard with allow_extrapolation: NaN, RH > 100 %, vapour above pressure.
         air_options ex;
         ex.allow_extrapolation = true;
-        res.check(!golden::air_index_ciddor(cond(nan, 101325, 50), ex).ok, "NaN accepted with extrapolation");
-        res.check(!golden::air_index_edlen(cond(20, 101325, 101), ex).ok, "RH 101 % accepted with extrapolation");
-        res.check(!golden::air_index_ciddor(cond(99, 60000, 100), ex).ok, "vapour above pressure accepted");
-        const air_index_result far = golden::air_index_edlen(cond(-20, 101325, 0), ex);
+        res.check(!lxt::air_index_ciddor(cond(nan, 101325, 50), ex).ok, "NaN accepted with extrapolation");
+        res.check(!lxt::air_index_edlen(cond(20, 101325, 101), ex).ok, "RH 101 % accepted with extrapolation");
+        res.check(!lxt::air_index_ciddor(cond(99, 60000, 100), ex).ok, "vapour above pressure accepted");
+        const air_index_result far = lxt::air_index_edlen(cond(-20, 101325, 0), ex);
         res.check(far.ok && far.extrapolated, "Edlen at -20 degC with extrapolation not flagged");
         // the limits themselves are inside
-        const golden::air_limits C = golden::ciddor_limits(), E = golden::edlen_limits();
+        const lxt::air_limits C = lxt::ciddor_limits(), E = lxt::edlen_limits();
         for (double lam : {C.lambda_min_nm, C.lambda_max_nm})
             for (double t : {C.t_min_c, C.t_max_c})
                 for (double p : {C.p_min_pa, C.p_max_pa})
                     for (double rh : {0.0, 100.0}) {
                         if (t >= 50 && rh > 0 && p < 20e3) continue;  // vapour above pressure (checked above)
-                        const air_index_result r = golden::air_index_ciddor(cond(t, p, rh, lam, 2000.0));
+                        const air_index_result r = lxt::air_index_ciddor(cond(t, p, rh, lam, 2000.0));
                         res.check(r.ok && !r.extrapolated, fmt("Ciddor limit point t %g p %g RH %g rejected", t, p, rh) + ": " + r.error);
                     }
         for (double lam : {E.lambda_min_nm, E.lambda_max_nm})
             for (double t : {E.t_min_c, E.t_max_c})
                 for (double p : {E.p_min_pa, E.p_max_pa})
                     for (double rh : {0.0, 100.0}) {
-                        const air_index_result r = golden::air_index_edlen(cond(t, p, rh, lam));
+                        const air_index_result r = lxt::air_index_edlen(cond(t, p, rh, lam));
                         res.check(r.ok && !r.extrapolated, fmt("Edlen limit point t %g p %g RH %g rejected", t, p, rh) + ": " + r.error);
                     }
         std::printf("  range checks: %d out-of-range inputs rejected with a message naming the input; limits accepted\n",
                     n_rej);
-        std::printf("    e.g. \"%s\"\n", golden::air_index_edlen(cond(45, 101325, 50)).error.c_str());
+        std::printf("    e.g. \"%s\"\n", lxt::air_index_edlen(cond(45, 101325, 50)).error.c_str());
     }
 
     // ---- 7. shop-floor grid: Edlén - Ciddor ----------------------------------------------------
@@ -287,14 +287,14 @@ int main(int argc, char** argv) {
                 for (int h = 0; h < nh; ++h, ++k) {
                     const double t = 15.0 + i, p = 90e3 + 1e3 * j, rh = 10.0 * h;
                     const air_input in = cond(t, p, rh);
-                    const air_index_result c = golden::air_index_ciddor(in), e = golden::air_index_edlen(in),
-                                           ep = golden::air_index_edlen(in, plain);
+                    const air_index_result c = lxt::air_index_ciddor(in), e = lxt::air_index_edlen(in),
+                                           ep = lxt::air_index_edlen(in, plain);
                     if (!res.check(c.ok && e.ok && ep.ok, fmt("grid point t %g p %g RH %g not evaluated", t, p, rh))) continue;
                     d_nist(k) = e.n - c.n;
                     d_plain(k) = ep.n - c.n;
                     const double S = 1.0 / (0.632991 * 0.632991);
                     water_fac(k) = 1e-10 * (3.7345 - 0.0401 * S) * e.pv_pa * std::fabs(1.0 - 292.75 / (t + 273.15));
-                    const double uc = golden::ciddor_expanded_uncertainty(in), ue = golden::edlen_expanded_uncertainty(in);
+                    const double uc = lxt::ciddor_expanded_uncertainty(in), ue = lxt::edlen_expanded_uncertainty(in);
                     u_comb(k) = std::sqrt(uc * uc + ue * ue);
                     cond_of(k, 0) = t;
                     cond_of(k, 1) = p;
@@ -328,7 +328,7 @@ int main(int argc, char** argv) {
         const double pts[3][3] = {{20, 101325, 50}, {15, 95000, 20}, {30, 105000, 80}};
         for (const auto& q : pts) {
             const air_input in = cond(q[0], q[1], q[2]);
-            const air_index_result c = golden::air_index_ciddor(in), e = golden::air_index_edlen(in);
+            const air_index_result c = lxt::air_index_ciddor(in), e = lxt::air_index_edlen(in);
             res.check(c.ok && e.ok, "ppm condition not evaluated");
             std::printf("    %4.0f degC %8.3f kPa %3.0f %%RH: n = %.9f, %+.4f ppm (Edlen %+.4f ppm, %+.2f ppb)\n", q[0],
                         q[1] / 1e3, q[2], c.n, (1.0 / c.n - 1.0) * 1e6, (1.0 / e.n - 1.0) * 1e6, (e.n - c.n) * 1e9);

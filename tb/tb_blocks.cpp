@@ -20,7 +20,7 @@
 #include "hls/output_pacer.h"
 #include "hls/quad_decoder.h"
 #include "tb/tb_util.h"
-#include "tools/common/sim.h"
+#include "sysmodel/sim.h"
 
 namespace {
 

@@ -19,10 +19,10 @@
 #include <random>
 #include <string>
 
-#include "golden/air_index.h"
+#include "host/air_index.h"
 #include "golden/calibration.h"
 #include "tb/tb_util.h"
-#include "tools/common/compensation.h"
+#include "host/compensation.h"
 
 namespace {
 
@@ -158,11 +158,11 @@ int main(int argc, char** argv) {
     {
         // Register set for the nominal air (20 °C, 101.325 kPa, 50 %RH); the real air is warmer,
         // lower pressure and drier, so the real wavelength is longer and the reading short.
-        golden::air_input nominal, real;
+        lxt::air_input nominal, real;
         real.temp_c = 23.4;
         real.pressure_pa = 99200.0;
         real.rh_percent = 35.0;
-        const double n_set = golden::air_index_ciddor(nominal).n, n_true = golden::air_index_ciddor(real).n;
+        const double n_set = lxt::air_index_ciddor(nominal).n, n_true = lxt::air_index_ciddor(real).n;
         uint64_t R = 0;
         std::string err;
         res.check(lxt::ratio_from_index(632.991, n_set, 0.0, &R, &err), err);

@@ -25,8 +25,8 @@
 #include <vector>
 
 #include "tb/tb_util.h"
-#include "tools/common/compensation.h"
-#include "tools/common/sim.h"
+#include "host/compensation.h"
+#include "sysmodel/sim.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 8);
@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
     // table load in progress: words for the inactive bank, then a flip (and maybe map_en)
     std::vector<int32_t> load;
     size_t load_pos = 0;
-    golden::error_map_geom load_geom;
+    lxt::axis_settings::emap_t::geom_t load_geom;
     auto new_table = [&](int npts) {
         std::vector<int32_t> t(static_cast<size_t>(npts));
         const int kind = static_cast<int>(uni(0, 3));
@@ -70,7 +70,7 @@ int main(int argc, char** argv) {
         return t;
     };
     auto new_geom = [&]() {
-        golden::error_map_geom gm;
+        lxt::axis_settings::emap_t::geom_t gm;
         gm.spacing_log2 = static_cast<int>(uni(4, 10));
         gm.n_points = static_cast<int>(uni(2, 400));
         // comp ranges over about -9000 .. 33000 output counts here; the table sometimes covers
@@ -80,7 +80,7 @@ int main(int argc, char** argv) {
     };
     auto start_load = [&]() {
         load_geom = new_geom();
-        load = new_table(load_geom.n_points);
+        load = new_table(static_cast<int>(load_geom.n_points));
         load_pos = 0;
     };
 
@@ -90,7 +90,7 @@ int main(int argc, char** argv) {
     bool homed_once = false, map_started = false;
     long long flips = 0, drained_checks = 0, corr_rows = 0, cfg_err_rows = 0, mismatches = 0;
     long long bad_geom_left = 0;
-    golden::error_map_geom saved_geom;
+    lxt::axis_settings::emap_t::geom_t saved_geom;
     long long drain_wait = 0;
 
     for (long long t = 0; t < cycles; ++t) {

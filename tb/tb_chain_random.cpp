@@ -22,7 +22,7 @@
 #include <random>
 
 #include "tb/tb_util.h"
-#include "tools/common/sim.h"
+#include "sysmodel/sim.h"
 
 namespace {
 

@@ -24,8 +24,8 @@
 #include <vector>
 
 #include "tb/tb_util.h"
-#include "tools/common/regmap.h"
-#include "tools/common/sim.h"
+#include "host/regmap.h"
+#include "sysmodel/sim.h"
 
 namespace {
 
@@ -37,7 +37,7 @@ struct run {
     explicit run(const lxt::axis_settings& s) : ax(s) {}
 };
 
-lxt::axis_settings settings_of(const lxt::reg_image& img) { return lxt::golden_from(img); }
+lxt::axis_settings settings_of(const lxt::reg_image& img) { return lxt::settings_from(img); }
 
 }  // namespace
 

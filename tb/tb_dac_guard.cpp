@@ -18,9 +18,9 @@
 #include "golden/axis_chain.h"
 #include "hls/axis_core.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/regmap_table.h"
-#include "tools/common/sim.h"
+#include "host/dds_table.h"
+#include "host/regmap_table.h"
+#include "sysmodel/sim.h"
 
 namespace {
 

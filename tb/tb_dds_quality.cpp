@@ -12,7 +12,7 @@
 #include "golden/dds_analysis.h"
 #include "hls/dds_sincos.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
+#include "host/dds_table.h"
 
 int main(int argc, char** argv) {
     tbu::result res("tb_dds_quality", tbu::seed_from(argc, argv, 0));

@@ -10,7 +10,7 @@
 #include "golden/dds_sincos.h"
 #include "hls/dds_sincos.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
+#include "host/dds_table.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 11);

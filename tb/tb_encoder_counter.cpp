@@ -33,7 +33,7 @@
 #include "golden/encoder_counter.h"
 #include "hls/encoder_counter.h"
 #include "tb/tb_util.h"
-#include "tools/common/counters_cmd.h"
+#include "tools/laserax/counters_cmd.h"
 
 namespace {
 

@@ -26,7 +26,7 @@
 
 #include "golden/gantry_model.h"
 #include "tb/tb_util.h"
-#include "tools/common/gantry.h"
+#include "sysmodel/gantry.h"
 
 namespace {
 

@@ -12,9 +12,9 @@
 
 #include "hls/axis_core.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/sim.h"
-#include "tools/common/vectors.h"
+#include "host/dds_table.h"
+#include "sysmodel/sim.h"
+#include "tools/laserax/vectors.h"
 
 int main(int argc, char** argv) {
     tbu::result res("tb_generated_files", tbu::seed_from(argc, argv, 0));

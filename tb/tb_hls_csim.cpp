@@ -2,7 +2,7 @@
 // ctest-args-valgrind: --calls 12000
 // tb_hls_csim — testbench of the synthesis top function laserax_top() (also the Vitis HLS C
 // simulation testbench of scripts/run_hls.tcl). It uses only the top function (through the
-// generated header-only tools/common/laserax_top_call.h, which passes the registers of an
+// generated header-only sysmodel/laserax_top_call.h, which passes the registers of an
 // lx::axis_regs as the top's one-scalar-per-register arguments), the golden chain and the standard
 // library, so it compiles the same with -DLASERAX_USE_AP_TYPES.
 //
@@ -17,7 +17,7 @@
 
 #include "golden/axis_chain.h"
 #include "hls/laserax_top.h"
-#include "tools/common/laserax_top_call.h"
+#include "sysmodel/laserax_top_call.h"
 
 int main(int argc, char** argv) {
     long calls = 400000;

@@ -10,7 +10,7 @@
 #include <functional>
 
 #include "tb/tb_util.h"
-#include "tools/common/sim.h"
+#include "sysmodel/sim.h"
 
 int main(int argc, char** argv) {
     tbu::result res("tb_invalid_config", tbu::seed_from(argc, argv, 0));

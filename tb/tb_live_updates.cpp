@@ -7,7 +7,7 @@
 // (a time-compressed "few hundred ms") a new air reading (random walk of T, p, RH with steps of up
 // to 0.5 degC, 300 Pa, 5 %RH, exaggerated so that updates move the position) and workpiece
 // temperature (steps up to 1 degC) is turned into the ratio and comp_offset registers by the host
-// helper (tools/common/compensation; thermal origin 7.5 mm, mid-travel) and written while the
+// helper (host/compensation; thermal origin 7.5 mm, mid-travel) and written while the
 // axis moves or stands. Checks:
 //   * hls == golden on every call, and the integrity invariant of lxt::dual_axis (controller
 //     decode == out_pos, comp == floor((N*R + OFF)/2^32) with the registers in force,
@@ -23,8 +23,8 @@
 #include <random>
 
 #include "tb/tb_util.h"
-#include "tools/common/compensation.h"
-#include "tools/common/sim.h"
+#include "host/compensation.h"
+#include "sysmodel/sim.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 23);

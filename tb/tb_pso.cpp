@@ -29,7 +29,7 @@
 #include "golden/pso.h"
 #include "hls/pso.h"
 #include "tb/tb_util.h"
-#include "tools/common/pso_cmd.h"
+#include "tools/laserax/pso_cmd.h"
 
 namespace {
 

@@ -17,7 +17,7 @@
 #include <random>
 
 #include "tb/tb_util.h"
-#include "tools/common/compensation.h"
+#include "host/compensation.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 17);

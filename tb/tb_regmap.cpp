@@ -1,5 +1,5 @@
 // tb_regmap — the register map (regmap/laserax_regs.csv -> docs/REGISTERS.md) and the host helper
-// tools/common/regmap.h.
+// host/regmap.h.
 //
 // 1. Defaults: a default-constructed lx::axis_regs and golden::axis_regs, read through the
 //    generated accessors, equal the table's reset values (this ties the hand-written structs to
@@ -45,18 +45,19 @@
 #include <string>
 #include <vector>
 
-#include "golden/air_index.h"
-#include "golden/thermal.h"
+#include "host/air_index.h"
+#include "host/thermal.h"
 #include "hls/axis_core.h"
 #include "hls/error_map.h"
 #include "hls/laserax_regmap.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/compensate_cmd.h"
-#include "tools/common/laserax_regs_c.h"
-#include "tools/common/regmap.h"
-#include "tools/common/regmap_table.h"
-#include "tools/common/sim.h"
+#include "host/dds_table.h"
+#include "tools/laserax/compensate_cmd.h"
+#include "host/laserax_regs_c.h"
+#include "host/regmap.h"
+#include "sysmodel/model_regs.h"
+#include "host/regmap_table.h"
+#include "sysmodel/sim.h"
 
 namespace {
 
@@ -532,7 +533,7 @@ int main(int argc, char** argv) {
             in.pressure_pa = uni(90e3, 110e3);
             in.rh_percent = uni(0, 90);
             in.co2_ppm = uni(300, 600);
-            in.equation = (t % 2) ? golden::air_equation::edlen : golden::air_equation::ciddor;
+            in.equation = (t % 2) ? lxt::air_equation::edlen : lxt::air_equation::ciddor;
             in.alpha_ppm_per_c = (t % 17 == 0) ? 0.0 : uni(0, 25);
             in.material_temp_c = (t % 23 == 0) ? 20.0 : uni(10, 30);
             in.origin_um = uni(-2e6, 2e6);
@@ -557,15 +558,15 @@ int main(int argc, char** argv) {
             if (!res.check(b.ok, "compensation_from_image: " + b.error)) continue;
             res.check(b.register_ppm == co.register_ppm, "register ppm differs");
             // pressure bound from the ratio LSB
-            golden::air_input ai;
+            lxt::air_input ai;
             ai.wavelength_nm = in.wavelength_nm;
             ai.temp_c = in.air_temp_c;
             ai.rh_percent = in.rh_percent;
             ai.co2_ppm = in.co2_ppm;
             ai.pressure_pa = in.pressure_pa + 50.0;
-            const double n_up = golden::air_index(in.equation, ai).n;
+            const double n_up = lxt::air_index(in.equation, ai).n;
             ai.pressure_pa = in.pressure_pa - 50.0;
-            const double n_dn = golden::air_index(in.equation, ai).n;
+            const double n_dn = lxt::air_index(in.equation, ai).n;
             const double dndp = (n_up - n_dn) / 100.0;
             const double bound_p = 0.5 / static_cast<double>(co.ratio) * co.n / dndp + 1e-6;
             bound_min = std::min(bound_min, bound_p);
@@ -825,7 +826,7 @@ int main(int argc, char** argv) {
         in.air_temp_c = 25;
         in.pressure_pa = 98500;
         in.rh_percent = 40;
-        in.alpha_ppm_per_c = golden::find_material("steel")->alpha_ppm_per_c;
+        in.alpha_ppm_per_c = lxt::find_material("steel")->alpha_ppm_per_c;
         in.material_temp_c = 25;
         in.origin_um = -150000;
         lxt::reg_image img;

@@ -18,7 +18,7 @@
 #include <cmath>
 
 #include "tb/tb_util.h"
-#include "tools/common/homing.h"
+#include "sysmodel/homing.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed0 = tbu::seed_from(argc, argv, 100);

@@ -12,7 +12,7 @@
 #include <set>
 
 #include "tb/tb_util.h"
-#include "tools/common/sim.h"
+#include "sysmodel/sim.h"
 
 namespace {
 

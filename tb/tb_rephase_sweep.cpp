@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "tb/tb_util.h"
-#include "tools/common/sim.h"
+#include "sysmodel/sim.h"
 
 int main(int argc, char** argv) {
     const uint64_t seed = tbu::seed_from(argc, argv, 1);  // deterministic sweep; seed unused

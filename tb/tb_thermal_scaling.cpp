@@ -1,4 +1,4 @@
-// tb_thermal_scaling — workpiece expansion (golden/thermal), its two parameterisations, the fold
+// tb_thermal_scaling — workpiece expansion (host/thermal), its two parameterisations, the fold
 // into the pulse-multiplier ratio register, and the host helper / `laserax compensate`.
 //
 // 1. Presets, lookup, and rejection of out-of-range alpha / temperature.
@@ -32,13 +32,13 @@
 #include <string>
 #include <vector>
 
-#include "golden/air_index.h"
+#include "host/air_index.h"
 #include "golden/pulse_multiplier.h"
-#include "golden/thermal.h"
+#include "host/thermal.h"
 #include "tb/tb_util.h"
-#include "tools/common/compensate_cmd.h"
-#include "tools/common/compensation.h"
-#include "tools/common/sim.h"
+#include "tools/laserax/compensate_cmd.h"
+#include "host/compensation.h"
+#include "sysmodel/sim.h"
 
 namespace {
 
@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
 
     // ---- 1. presets and limits -----------------------------------------------------------------
     size_t npre = 0;
-    const golden::material_preset* pre = golden::material_presets(&npre);
+    const lxt::material_preset* pre = lxt::material_presets(&npre);
     {
         const struct {
             const char* name;
@@ -107,35 +107,35 @@ int main(int argc, char** argv) {
         } want[] = {{"steel", 11.5}, {"cast-iron", 10.5}, {"aluminium", 23.1}, {"granite", 7.9}, {"invar", 1.2}};
         res.check(npre == 5, "expected 5 material presets");
         for (const auto& w : want) {
-            const golden::material_preset* m = golden::find_material(w.name);
+            const lxt::material_preset* m = lxt::find_material(w.name);
             res.check(m && m->alpha_ppm_per_c == w.alpha, std::string("preset ") + w.name);
         }
-        res.check(golden::find_material("STEEL") != nullptr && golden::find_material("aluminum") != nullptr,
+        res.check(lxt::find_material("STEEL") != nullptr && lxt::find_material("aluminum") != nullptr,
                   "material lookup is not case-insensitive / does not know 'aluminum'");
-        res.check(golden::find_material("unobtanium") == nullptr, "unknown material found");
-        golden::thermal_params tp;
-        res.check(!golden::make_thermal(301.0, 20.0, 0, &tp).ok, "alpha 301 ppm/degC accepted");
-        res.check(!golden::make_thermal(11.5, 80.5, 0, &tp).ok, "material temperature 80.5 degC accepted");
-        res.check(!golden::make_thermal(11.5, -20.5, 0, &tp).ok, "material temperature -20.5 degC accepted");
-        res.check(!golden::make_thermal(std::nan(""), 20.0, 0, &tp).ok, "alpha NaN accepted");
-        res.check(!golden::make_thermal(11.5, 20.0, (int64_t(1) << 53) + 1, &tp).ok, "origin beyond 2^53 accepted");
-        res.check(golden::make_thermal(-300.0, 80.0, -(int64_t(1) << 53), &tp).ok, "limits rejected");
+        res.check(lxt::find_material("unobtanium") == nullptr, "unknown material found");
+        lxt::thermal_params tp;
+        res.check(!lxt::make_thermal(301.0, 20.0, 0, &tp).ok, "alpha 301 ppm/degC accepted");
+        res.check(!lxt::make_thermal(11.5, 80.5, 0, &tp).ok, "material temperature 80.5 degC accepted");
+        res.check(!lxt::make_thermal(11.5, -20.5, 0, &tp).ok, "material temperature -20.5 degC accepted");
+        res.check(!lxt::make_thermal(std::nan(""), 20.0, 0, &tp).ok, "alpha NaN accepted");
+        res.check(!lxt::make_thermal(11.5, 20.0, (int64_t(1) << 53) + 1, &tp).ok, "origin beyond 2^53 accepted");
+        res.check(lxt::make_thermal(-300.0, 80.0, -(int64_t(1) << 53), &tp).ok, "limits rejected");
         // steel at 25 °C: alpha (20 - T) = -57.5 ppm, K169 = -5.75 (seed 002 units of 1e-5)
-        res.check(golden::make_thermal(11.5, 25.0, 1000, &tp).ok, "steel at 25 degC rejected");
-        const golden::encoder_scaling es = golden::to_encoder_scaling(tp);
-        res.check(es.k168 == 1000 && es.k169_e7 == -57500000 && golden::k169_value(es) == -5.75,
+        res.check(lxt::make_thermal(11.5, 25.0, 1000, &tp).ok, "steel at 25 degC rejected");
+        const lxt::encoder_scaling es = lxt::to_encoder_scaling(tp);
+        res.check(es.k168 == 1000 && es.k169_e7 == -57500000 && lxt::k169_value(es) == -5.75,
                   "steel at 25 degC: K168/K169 " + s64(es.k168) + " " + s64(es.k169_e7));
-        res.check(std::fabs(golden::temp_from_k169(-5.75, 11.5) - 25.0) < 1e-12, "temp_from_k169 inverse");
+        res.check(std::fabs(lxt::temp_from_k169(-5.75, 11.5) - 25.0) < 1e-12, "temp_from_k169 inverse");
         // 100 000 counts (7.8125 mm) from the origin: correction -5.75 counts -> floor(100000 - 5.75)
-        res.check(golden::thermal_output_counts(tp, 101000) == 100994 && golden::encoder_scaling_output_counts(es, 101000) == 100994,
+        res.check(lxt::thermal_output_counts(tp, 101000) == 100994 && lxt::encoder_scaling_output_counts(es, 101000) == 100994,
                   "worked example 100000 counts steel 25 degC");
-        res.check(golden::thermal_output_counts(tp, -99000) == -98995, "worked example -100000 counts");
+        res.check(lxt::thermal_output_counts(tp, -99000) == -98995, "worked example -100000 counts");
         // steel at 17 °C, 2 000 000 counts from the origin: correction exactly +69 counts (in double
         // the seed's form gives 68.999999999999986 and would floor to +68)
-        golden::thermal_params t17;
-        res.check(golden::make_thermal(11.5, 17.0, 0, &t17).ok, "steel at 17 degC rejected");
-        res.check(golden::thermal_output_counts(t17, 2000000) == 2000069 &&
-                      golden::encoder_scaling_output_counts(golden::to_encoder_scaling(t17), 2000000) == 2000069,
+        lxt::thermal_params t17;
+        res.check(lxt::make_thermal(11.5, 17.0, 0, &t17).ok, "steel at 17 degC rejected");
+        res.check(lxt::thermal_output_counts(t17, 2000000) == 2000069 &&
+                      lxt::encoder_scaling_output_counts(lxt::to_encoder_scaling(t17), 2000000) == 2000069,
                   "steel at 17 degC, 2e6 counts: not +69");
     }
 
@@ -155,13 +155,13 @@ int main(int argc, char** argv) {
             else if (tk == 1) temp = static_cast<double>(irange(-200, 800)) / 10.0;
             else temp = static_cast<double>(irange(-20000, 80000)) / 1000.0;
             const int64_t origin = rng() % 4 == 0 ? 0 : irange(-posmax, posmax);
-            golden::thermal_params tp;
-            if (!res.check(golden::make_thermal(alpha_ppm, temp, origin, &tp).ok, "make_thermal rejected a legal value")) continue;
-            const golden::encoder_scaling es = golden::to_encoder_scaling(tp);
-            if (golden::k169_e7_from_physical(alpha_ppm, temp) != es.k169_e7) ++k169_bad;
+            lxt::thermal_params tp;
+            if (!res.check(lxt::make_thermal(alpha_ppm, temp, origin, &tp).ok, "make_thermal rejected a legal value")) continue;
+            const lxt::encoder_scaling es = lxt::to_encoder_scaling(tp);
+            if (lxt::k169_e7_from_physical(alpha_ppm, temp) != es.k169_e7) ++k169_bad;
             // position: random, or one where the correction is an exact integer (a tie for floor)
             int64_t pos;
-            const i128 prod = i128(tp.alpha_e9) * i128(golden::kRefTempMc - tp.temp_mc);
+            const i128 prod = i128(tp.alpha_e9) * i128(lxt::kRefTempMc - tp.temp_mc);
             if (rng() % 2 == 0 && prod != 0) {
                 // smallest d with d * prod divisible by 1e12
                 i128 g1 = prod < 0 ? -prod : prod, g2 = i128(1000000000000LL);
@@ -183,8 +183,8 @@ int main(int argc, char** argv) {
             } else {
                 pos = irange(-posmax, posmax);
             }
-            const int64_t o1 = golden::thermal_output_counts(tp, pos);
-            const int64_t o2 = golden::encoder_scaling_output_counts(es, pos);
+            const int64_t o1 = lxt::thermal_output_counts(tp, pos);
+            const int64_t o2 = lxt::encoder_scaling_output_counts(es, pos);
             if (o1 != o2) {
                 ++mism_exact;
                 res.check(false, "forms differ: pos " + s64(pos) + " origin " + s64(origin) + " alpha " +
@@ -224,7 +224,7 @@ int main(int argc, char** argv) {
             ci.air_temp_c = uni(15.0, 30.0);
             ci.pressure_pa = uni(90e3, 110e3);
             ci.rh_percent = uni(0.0, 90.0);
-            ci.equation = rng() % 2 ? golden::air_equation::ciddor : golden::air_equation::edlen;
+            ci.equation = rng() % 2 ? lxt::air_equation::ciddor : lxt::air_equation::edlen;
             ci.alpha_ppm_per_c = rng() % 4 == 0 ? uni(-5.0, 30.0) : pre[rng() % npre].alpha_ppm_per_c;
             ci.material_temp_c = uni(10.0, 35.0);
             const lxt::comp_outputs co = lxt::compute_compensation(ci);
@@ -265,9 +265,9 @@ int main(int argc, char** argv) {
                 }
                 // two-stage (air register, then the exact expansion correction about raw count 0 on
                 // the output counts): -1 <= folded - two-stage <= 2 (see the derivation in the report)
-                golden::thermal_params tz = co.thermal;
+                lxt::thermal_params tz = co.thermal;
                 tz.origin = 0;
-                const int64_t q = golden::thermal_output_counts(tz, mult_out(n, r0));
+                const int64_t q = lxt::thermal_output_counts(tz, mult_out(n, r0));
                 const int64_t dfs = hw - q;
                 fold_lo = std::min(fold_lo, static_cast<int>(dfs));
                 fold_hi = std::max(fold_hi, static_cast<int>(dfs));
@@ -319,15 +319,15 @@ int main(int argc, char** argv) {
         long n_checks = 0, near_int = 0, bad = 0, differ = 0;
         for (long long k = 0; k < samples / 4; ++k) {
             const int64_t scale = irange(1, 16);  // output counts per raw count, exact
-            golden::thermal_params tp;
+            lxt::thermal_params tp;
             const double alpha_ppm = static_cast<double>(irange(-50000, 250000)) / 1000.0;
             const double temp = static_cast<double>(irange(-20000, 80000)) / 1000.0;
             const int64_t origin = k % 5 == 0 ? 0 : irange(-(int64_t(1) << 34), int64_t(1) << 34);  // +-1342 m
-            if (!res.check(golden::make_thermal(alpha_ppm, temp, origin, &tp).ok, "make_thermal rejected a legal input")) continue;
-            const golden::encoder_scaling es = golden::to_encoder_scaling(tp);
-            golden::encoder_scaling es2;  // the seed-002 parameters as a user would enter them
+            if (!res.check(lxt::make_thermal(alpha_ppm, temp, origin, &tp).ok, "make_thermal rejected a legal input")) continue;
+            const lxt::encoder_scaling es = lxt::to_encoder_scaling(tp);
+            lxt::encoder_scaling es2;  // the seed-002 parameters as a user would enter them
             es2.k168 = origin;
-            es2.k169_e7 = golden::k169_e7_from_physical(alpha_ppm, temp);
+            es2.k169_e7 = lxt::k169_e7_from_physical(alpha_ppm, temp);
             int64_t off = 0, off2 = 0;
             std::string err;
             if (!res.check(lxt::comp_offset_from_scaling(es, &off, &err) && lxt::comp_offset_from_scaling(es2, &off2, &err), err)) continue;
@@ -338,8 +338,8 @@ int main(int argc, char** argv) {
             const uint64_t r = static_cast<uint64_t>((rnum * 2 + den) / (den * 2));
             const int64_t n = k % 7 == 0 ? (k % 2 ? INT32_MAX : INT32_MIN) : irange(INT32_MIN, INT32_MAX);
             const int64_t x = scale * n;
-            const int64_t exact = golden::thermal_output_counts(tp, x);
-            res.check(exact == golden::encoder_scaling_output_counts(es2, x), "thermal forms differ");
+            const int64_t exact = lxt::thermal_output_counts(tp, x);
+            res.check(exact == lxt::encoder_scaling_output_counts(es2, x), "thermal forms differ");
             const int64_t hw = floor_div(i128(n) * i128(r) + off, i128(1) << 32);
             golden::pulse_multiplier pm;
             pm.reset();
@@ -408,7 +408,7 @@ int main(int argc, char** argv) {
             ci.pressure_pa = uni(60e3, 120e3);
             ci.rh_percent = uni(0.0, 100.0);
             ci.wavelength_nm = rng() % 2 ? 632.991 : uni(350.0, 650.0);
-            ci.equation = rng() % 2 ? golden::air_equation::ciddor : golden::air_equation::edlen;
+            ci.equation = rng() % 2 ? lxt::air_equation::ciddor : lxt::air_equation::edlen;
             ci.alpha_ppm_per_c = uni(-10.0, 30.0);
             ci.material_temp_c = uni(0.0, 40.0);
             ci.origin_um = uni(-1e6, 1e6);
@@ -434,10 +434,10 @@ int main(int argc, char** argv) {
         // invalid settings are reported, not extrapolated
         lxt::comp_inputs bad;
         bad.air_temp_c = 45.0;
-        bad.equation = golden::air_equation::edlen;
+        bad.equation = lxt::air_equation::edlen;
         lxt::comp_outputs co = lxt::compute_compensation(bad);
         res.check(!co.ok && co.error.find("temperature") != std::string::npos, "Edlen at 45 degC accepted: " + co.error);
-        bad.equation = golden::air_equation::ciddor;
+        bad.equation = lxt::air_equation::ciddor;
         co = lxt::compute_compensation(bad);
         res.check(co.ok && !co.edlen.ok, "Ciddor at 45 degC rejected or Edlen evaluated");
         bad.material_temp_c = 95.0;
@@ -466,7 +466,7 @@ int main(int argc, char** argv) {
             ci.air_temp_c = 30;
             ci.pressure_pa = 105000;
             ci.rh_percent = 80;
-            ci.equation = golden::air_equation::edlen;
+            ci.equation = lxt::air_equation::edlen;
             ci.alpha_ppm_per_c = 23.1;
             ci.material_temp_c = 25;
             ci.origin_um = 150000;

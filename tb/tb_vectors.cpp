@@ -21,9 +21,9 @@
 
 #include "hls/axis_core.h"
 #include "tb/tb_util.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/sim.h"
-#include "tools/common/vectors.h"
+#include "host/dds_table.h"
+#include "sysmodel/sim.h"
+#include "tools/laserax/vectors.h"
 
 namespace {
 

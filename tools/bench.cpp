@@ -13,8 +13,8 @@
 
 #include "golden/axis_chain.h"
 #include "hls/axis_core.h"
-#include "tools/common/sim.h"
-#include "tools/common/vectors.h"
+#include "sysmodel/sim.h"
+#include "tools/laserax/vectors.h"
 
 namespace {
 

@@ -8,7 +8,7 @@
 #include <iostream>
 #include <string>
 
-#include "tools/common/dds_table.h"
+#include "host/dds_table.h"
 
 int main(int argc, char** argv) {
     int period = 256, amplitude = 32767;

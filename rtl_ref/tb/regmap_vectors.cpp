@@ -1,6 +1,6 @@
 // regmap_vectors.cpp — vector files for the register map in RTL: the AXI4-Lite slave
 // rtl_ref/laserax_regs.v alone and the IP top rtl_ref/laserax_axil.v (slave + chain). Expected
-// values come from the C++ host helper (lxt::reg_image, tools/common/regmap.h) and the bit-true
+// values come from the C++ host helper (lxt::reg_image, host/regmap.h) and the bit-true
 // chain (hls/axis_core.h), never from the Verilog.
 //
 //   laserax_regs.hex  one row per clock: the AXI4-Lite inputs, the expected AXI outputs and every
@@ -51,9 +51,10 @@
 
 #include "hls/axis_core.h"
 #include "rtl_ref/tb/vecgen.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/regmap.h"
-#include "tools/common/vectors.h"
+#include "host/dds_table.h"
+#include "host/regmap.h"
+#include "sysmodel/model_regs.h"
+#include "tools/laserax/vectors.h"
 
 namespace {
 

@@ -59,10 +59,10 @@
 #include "hls/axis_core.h"
 #include "hls/encoder_counter.h"
 #include "hls/pso.h"
-#include "tools/common/pso_cmd.h"
+#include "tools/laserax/pso_cmd.h"
 #include "rtl_ref/tb/vecgen.h"
-#include "tools/common/dds_table.h"
-#include "tools/common/vectors.h"
+#include "host/dds_table.h"
+#include "tools/laserax/vectors.h"
 
 namespace {
 

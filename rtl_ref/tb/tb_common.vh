@@ -9,7 +9,7 @@
 //   i_rst = 1 for RESET_EDGES edges with idle inputs;
 //   for k = 0 .. rows-1: at the falling edge, release i_rst and apply row k's inputs;
 //                        1 ns after the next rising edge, compare row k's outputs.
-// So row 0 is the first call after reset, as in tools/common/vectors.cpp.
+// So row 0 is the first call after reset, as in tools/laserax/vectors.cpp.
 
     localparam integer RESET_EDGES = 3;
     localparam integer MAX_SHOWN   = 10;   // mismatch lines printed

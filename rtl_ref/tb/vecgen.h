@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "tools/common/cli_util.h"
-#include "tools/common/vectors.h"
+#include "tools/laserax/cli_util.h"
+#include "tools/laserax/vectors.h"
 
 namespace vecgen {
 
