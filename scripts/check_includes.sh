@@ -3,8 +3,11 @@
 #
 # Usage: scripts/check_includes.sh [--includes | --lint | --all | --selftest] [ROOT]
 #   --includes (default)  include rules (CTest: include_rules)
-#       golden/  must not include anything from hls/ or rtl_ref/ (the golden models are written
-#                from docs/DESIGN.md, never from the bit-true code);
+#       golden/  must not include anything from hls/, rtl_ref/ or host/ (the golden models are
+#                written from docs/DESIGN.md, never from the bit-true code or the host driver);
+#       host/    the driver library a user links into controller software: may include only host/
+#                headers (quoted) and system headers — nothing from golden/, tools/, tb/, hls/,
+#                sysmodel/, rtl_ref/ or fuzz/;
 #       hls/     must not include anything from golden/, tb/ or tools/, and may include only
 #                hls/ headers, <cstdint>, <cstddef>, <climits>, <type_traits>, <utility> (compile-time
 #                std::index_sequence only) and the Vitis headers
@@ -35,7 +38,7 @@ for arg in "$@"; do
         --lint)     mode=lint ;;
         --all)      mode=all ;;
         --selftest) mode=selftest ;;
-        -h|--help)  sed -n '2,27p' "$0"; exit 0 ;;
+        -h|--help)  sed -n '2,30p' "$0"; exit 0 ;;
         -*)         echo "check_includes.sh: unknown option $arg" >&2; exit 2 ;;
         *)          root="$arg" ;;
     esac
@@ -89,7 +92,13 @@ function report(rule, msg) {
 function hasword(s, w) { return match(s, "(^|[^A-Za-z0-9_])" w "([^A-Za-z0-9_]|$)") }
 function check_include(folder, t, quoted,   base) {
     if (folder == "golden") {
-        if (t ~ /^(\.\.\/)*(hls|rtl_ref)\//) report("include", "golden/ must not include hls/ or rtl_ref/")
+        if (t ~ /^(\.\.\/)*(hls|rtl_ref|host)\//) report("include", "golden/ must not include hls/, rtl_ref/ or host/")
+        return
+    }
+    if (folder == "host") {
+        if (!quoted) return
+        if (t ~ /^host\/[^.\/][^\/]*$/) return
+        report("include", "host/ may include only host/ headers (nothing from golden/, tools/, tb/, hls/, sysmodel/, rtl_ref/, fuzz/)")
         return
     }
     if (folder != "hls" || exempt) return
@@ -223,10 +232,20 @@ selftest() {
     expect includes fail golden_hls     <<<'golden/g.cpp|#include "hls/a.h"'
     expect includes fail golden_hls_rel <<<'golden/sub/g.h|#include "../hls/a.h"'
     expect includes fail golden_rtl     <<<'golden/g.h|#include "rtl_ref/x.h"'
+    expect includes fail golden_host    <<<'golden/g.cpp|#include "host/regmap.h"'
+    expect includes pass host_clean     <<<'host/r.cpp|#include "host/r.h"\n#include <cmath>\n#include <string>\n// #include "golden/g.h" in a comment'
+    expect includes fail host_golden    <<<'host/r.h|#include "golden/axis_chain.h"'
+    expect includes fail host_tools     <<<'host/r.cpp|#include "tools/laserax/cli_util.h"'
+    expect includes fail host_tb        <<<'host/r.cpp|#include "tb/tb_util.h"'
+    expect includes fail host_hls       <<<'host/r.h|#include "hls/axis_core.h"'
+    expect includes fail host_sysmodel  <<<'host/r.h|#include "sysmodel/sim.h"'
+    expect includes fail host_relative  <<<'host/r.h|#include "../golden/g.h"'
+    expect includes fail host_bare      <<<'host/r.h|#include "r2.h"'
+    expect includes fail host_ifdef     <<<'host/r.h|#ifndef __SYNTHESIS__\n#include "golden/g.h"\n#endif'
     expect includes fail golden_hls_ifn <<<'golden/g.h|#ifndef __SYNTHESIS__\n#include "hls/a.h"\n#endif'
     expect includes fail hls_golden     <<<'hls/a.h|#include "golden/g.h"'
     expect includes fail hls_tb         <<<'hls/a.h|#include "tb/x.h"'
-    expect includes fail hls_tools      <<<'hls/a.h|#include "tools/common/x.h"'
+    expect includes fail hls_tools      <<<'hls/a.h|#include "tools/laserax/x.h"'
     expect includes fail hls_vector     <<<'hls/a.h|#include <vector>'
     expect includes fail hls_cmath      <<<'hls/a.cpp|#include <cmath>'
     expect includes fail hls_stdint_h   <<<'hls/a.h|#include <stdint.h>'
@@ -263,9 +282,9 @@ selftest() {
 }
 
 case "$mode" in
-    includes) run_check includes include_rules golden hls ;;
+    includes) run_check includes include_rules golden hls host ;;
     lint)     run_check lint lint_hls hls ;;
-    all)      rc=0; run_check includes include_rules golden hls || rc=1
+    all)      rc=0; run_check includes include_rules golden hls host || rc=1
               run_check lint lint_hls hls || rc=1; exit "$rc" ;;
     selftest) selftest ;;
 esac
