@@ -1,5 +1,7 @@
-# laserax — top-level entry points. Every target works on a fresh Debian machine: `deps`
-# installs what is missing (as root) or prints the apt command to run.
+# laserax — top-level entry points. Every target works on a fresh Debian machine: each one first
+# checks the tools it needs (scripts/setup_deps.sh PROFILE) and installs what is missing (as root)
+# or prints the apt command to run; `deps` checks everything. `run` and `vectors` build only the
+# laserax program, `bench` only bench; `build` and `test` build every target.
 #
 #   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | formal | clean
 #
@@ -23,26 +25,39 @@ MAKEFLAGS  += --no-print-directory
 all: build
 
 help:
-	@sed -n '1,8p' Makefile | sed 's/^# \{0,1\}//'
+	@sed -n '1,10p' Makefile | sed 's/^# \{0,1\}//'
 
+# deps PROFILE: build (compiler, cmake, Eigen), run (+ Debian python3 with numpy, matplotlib),
+# synth (+ iverilog, yosys, nextpnr-ice40), test (+ z3, clang/libFuzzer, valgrind); see the script.
 deps:
-	@bash scripts/setup_deps.sh
-
-build: deps
+	@bash scripts/setup_deps.sh all
+define configure
 	cmake -S . -B $(BUILD_DIR) -DCMAKE_BUILD_TYPE=$(BUILD_TYPE) $(CMAKE_ARGS)
+endef
+
+build:
+	@bash scripts/setup_deps.sh build
+	$(configure)
 	cmake --build $(BUILD_DIR) -j$(JOBS)
 
-# The program writes its outputs under out/ (trace.csv, trace.vcd, events.csv).
-run: build
-	@test -x $(BUILD_DIR)/laserax || { echo "make run: $(BUILD_DIR)/laserax was not built (no tools/laserax/laserax.cpp yet?)" >&2; exit 1; }
+# The program writes its outputs under out/ (trace.csv, trace.vcd, events.csv). Builds the laserax
+# target only (and the libraries it links).
+run:
+	@bash scripts/setup_deps.sh run
+	$(configure)
+	cmake --build $(BUILD_DIR) -j$(JOBS) --target laserax
 	$(BUILD_DIR)/laserax run $(ARGS)
 
 # Release tests (all but label soak), then the ASan+UBSan build in $(ASAN_DIR) (all but labels
 # soak and slow_asan), then one summary line. ASAN=0 skips the sanitizer pass.
-test: build
+test:
+	@bash scripts/setup_deps.sh test
+	@$(MAKE) build
 	@BUILD_DIR=$(BUILD_DIR) ASAN_DIR=$(ASAN_DIR) JOBS=$(JOBS) ASAN=$(ASAN) bash scripts/run_tests.sh
 
-soak: build
+soak:
+	@bash scripts/setup_deps.sh test
+	@$(MAKE) build
 	ctest --test-dir $(BUILD_DIR) --output-on-failure -j$(JOBS) -L '^soak$$'
 
 # libFuzzer targets (fuzz/*.cpp, clang++) built in $(BUILD_DIR)/fuzz and run FUZZ_SECONDS each on
@@ -50,27 +65,34 @@ soak: build
 FUZZ_SECONDS ?= 300
 # Every formal proof with both engines, the slow ones included (docs/FORMAL.md; about 10 min):
 # Yosys' SAT engine (the default list and output_pacer_sum is left to z3) and yosys-smtbmc + z3.
-formal: deps
+formal:
+	@bash scripts/setup_deps.sh test
 	bash scripts/formal.sh
 	bash scripts/formal.sh output_pacer_sum
 	bash scripts/formal.sh --engine smtbmc quad_decoder quad_decoder_pins output_pacer pulse_multiplier \
 	    pulse_multiplier_mul dds_sincos pulse_multiplier_seq output_pacer_sum rephase rephase_adj rephase_div error_map
 
-fuzz: deps
+fuzz:
+	@bash scripts/setup_deps.sh test
 	FUZZ_SECONDS=$(FUZZ_SECONDS) bash scripts/fuzz.sh long $(BUILD_DIR)/fuzz
 
-bench: build
-	@test -x $(BUILD_DIR)/bench || { echo "make bench: $(BUILD_DIR)/bench was not built (no tools/bench.cpp yet?)" >&2; exit 1; }
+bench:
+	@bash scripts/setup_deps.sh build
+	$(configure)
+	cmake --build $(BUILD_DIR) -j$(JOBS) --target bench
 	$(BUILD_DIR)/bench
 	@if command -v valgrind >/dev/null; then bash scripts/bench_ipc.sh $(BUILD_DIR)/bench; \
 	 else echo "make bench: valgrind missing (make deps): no instructions-per-clock figures"; fi
 
-vectors: build
-	@test -x $(BUILD_DIR)/laserax || { echo "make vectors: $(BUILD_DIR)/laserax was not built (no tools/laserax/laserax.cpp yet?)" >&2; exit 1; }
+vectors:
+	@bash scripts/setup_deps.sh run
+	$(configure)
+	cmake --build $(BUILD_DIR) -j$(JOBS) --target laserax
 	$(BUILD_DIR)/laserax vectors --out $(OUT)/vectors
 
 # Plots out/trace.csv (and out/events.csv when present); runs `make run` first if there is no trace.
-plot: deps
+plot:
+	@bash scripts/setup_deps.sh run
 	@test -f $(OUT)/trace.csv || $(MAKE) --no-print-directory run
 	$(PYTHON) scripts/plot_homing.py $(OUT)/trace.csv $(OUT)/homing.png
 
@@ -86,6 +108,8 @@ SYNTH_DEVICE ?= hx8k
 SYNTH_FREQ   ?= 100
 SYNTH_ARGS   ?=
 .PHONY: synth
-synth: build
+synth:
+	@bash scripts/setup_deps.sh synth
+	@$(MAKE) build
 	$(PYTHON) scripts/synth_report.py --build $(BUILD_DIR) --out $(OUT)/synth --device $(SYNTH_DEVICE) \
 	    --freq $(SYNTH_FREQ) --jobs $(JOBS) $(SYNTH_ARGS)

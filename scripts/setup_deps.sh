@@ -1,5 +1,12 @@
 #!/usr/bin/env bash
-# setup_deps.sh — make sure the build, test, RTL and plotting tools are present.
+# setup_deps.sh — make sure the tools a make target needs are present.
+#
+# Usage: scripts/setup_deps.sh [PROFILE]   (the Makefile passes its target's profile)
+#   build   g++, cmake, make, Eigen 3                               (make build, make bench)
+#   run     build + Debian's /usr/bin/python3 with numpy and matplotlib  (make run, vectors, plot)
+#   synth   run + iverilog, yosys, nextpnr-ice40                    (make synth)
+#   test    synth + z3, clang with libFuzzer, valgrind              (make test, soak, fuzz, formal)
+#   all     the same as test (default; `make deps`)
 #
 # Quick when everything is there (a few `command -v` / file tests and one python import, no apt).
 # Missing Debian packages are installed with apt-get when running as root; otherwise the exact
@@ -11,6 +18,17 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 
 PY=/usr/bin/python3
+profile="${1:-all}"
+case "$profile" in
+    build|run|synth|test|all) ;;
+    *) echo "setup_deps.sh: unknown profile '$profile' (build, run, synth, test, all)" >&2; exit 2 ;;
+esac
+want() {  # want LEVEL: true when the profile includes that level (build < run < synth < test = all)
+    local order=(build run synth test) p l i
+    for i in "${!order[@]}"; do [ "${order[$i]}" = "$1" ] && l=$i; done
+    [ "$profile" = all ] && p=3 || for i in "${!order[@]}"; do [ "${order[$i]}" = "$profile" ] && p=$i; done
+    [ "$p" -ge "$l" ]
+}
 
 # Prints the Debian packages that are missing, one per line.
 missing_packages() {
@@ -18,9 +36,19 @@ missing_packages() {
     command -v cmake          >/dev/null 2>&1 || echo cmake
     command -v make           >/dev/null 2>&1 || echo make
     [ -f /usr/include/eigen3/Eigen/Core ]     || echo libeigen3-dev
+    if want run; then
+        if [ ! -x "$PY" ]; then
+            echo python3; echo python3-numpy; echo python3-matplotlib
+        elif ! "$PY" -c 'import numpy, matplotlib' >/dev/null 2>&1; then
+            "$PY" -c 'import numpy'      >/dev/null 2>&1 || echo python3-numpy
+            "$PY" -c 'import matplotlib' >/dev/null 2>&1 || echo python3-matplotlib
+        fi
+    fi
+    want synth || return 0
     command -v iverilog       >/dev/null 2>&1 || echo iverilog
     command -v yosys          >/dev/null 2>&1 || echo yosys
     command -v nextpnr-ice40  >/dev/null 2>&1 || echo nextpnr-ice40
+    want test || return 0
     command -v z3             >/dev/null 2>&1 || echo z3      # formal proofs, yosys-smtbmc engine
     command -v clang++        >/dev/null 2>&1 || echo clang
     # libFuzzer runtime (make fuzz, CTest fuzz_short): Debian's clang ships it in libclang-rt-N-dev
@@ -29,17 +57,20 @@ missing_packages() {
         echo "libclang-rt-$(clang++ -dumpversion | cut -d. -f1)-dev"
     fi
     command -v valgrind       >/dev/null 2>&1 || echo valgrind
-    if [ ! -x "$PY" ]; then
-        echo python3; echo python3-numpy; echo python3-matplotlib
-    elif ! "$PY" -c 'import numpy, matplotlib' >/dev/null 2>&1; then
-        "$PY" -c 'import numpy'      >/dev/null 2>&1 || echo python3-numpy
-        "$PY" -c 'import matplotlib' >/dev/null 2>&1 || echo python3-matplotlib
-    fi
+}
+
+present() {
+    case "$profile" in
+        build) echo "g++ cmake make eigen3" ;;
+        run)   echo "g++ cmake make eigen3 $PY+numpy+matplotlib" ;;
+        synth) echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40" ;;
+        *)     echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40 z3 valgrind clang+libFuzzer" ;;
+    esac
 }
 
 mapfile -t missing < <(missing_packages)
 if [ "${#missing[@]}" -eq 0 ]; then
-    echo "deps: all present (g++ cmake make eigen3 iverilog yosys nextpnr-ice40 z3 valgrind clang+libFuzzer $PY+numpy+matplotlib)"
+    echo "deps ($profile): all present ($(present))"
     exit 0
 fi
 
