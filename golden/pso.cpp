@@ -17,7 +17,7 @@ int sgn(int64_t v) { return (v > 0) - (v < 0); }
 
 }  // namespace
 
-pso::pso() : ram_(kArrDepth, 0), ram_m2_(kArrDepth, 0) { reset(); }
+pso::pso() : ram_(kArrDepth, 0), ram_m2_(kArrDepth, 0), ram_g2_(kArrDepth, 0) { reset(); }
 
 uint64_t pso::inc_max() { return static_cast<uint64_t>(floorl(kPulseHzMax * kQ / kClockHz)); }
 
@@ -60,7 +60,7 @@ void pso::reset_run() {
     arr_len_ = 1;
     t_ = 0;
     for (int i = 0; i < kAxes; ++i) p_[i] = s_[i] = 0;
-    closed_ = phi_ = fired_ = frozen_ = 0;
+    closed_ = phi_ = fired_ = frozen_ = thr_ = 0;
     for (int k = 0; k < kFireLat; ++k) {
         est_hist_[k] = 0;
         inwin_hist_[k] = false;
@@ -82,18 +82,12 @@ void pso::reset() {
     overlap_st_ = rate_over_st_ = spacing_st_ = freq_st_ = false;
 }
 
-long double pso::threshold(const pso_regs& r) const {
-    return arr_en_ ? counts(ram_[static_cast<size_t>(idx_)]) : counts(r.fire_dist);
-}
-
 pso::out pso::step(const pso_in& in, const pso_regs& presented) {
     // register stage: this call works with the values presented in the previous call
     const pso_regs r = force_;
     force_ = presented;
-    // the array entry of the next fire as the RAM stood after the call before the previous one
-    // (the fire of this call uses it; a write of the previous call or of this one acts from a
-    // later fire)
-    const uint64_t entry_m2 = ram_m2_[static_cast<size_t>(idx_)];
+    // the RAM as it stood after call t-2 (a fire of this call takes the next threshold from it)
+    ram_g2_ = ram_m2_;
     ram_m2_ = ram_;  // the RAM after the previous call: "after call n-2" of the next call
     if (r.arr_we) ram_[static_cast<size_t>(r.arr_addr) % kArrDepth] = r.arr_data;
     out o;
@@ -117,16 +111,16 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
             arr_wrap_ = r.arr_wrap;
         }
         const int64_t t = t_;
-        // threshold of this call's fire: fire_dist of the call before the previous one, or the
-        // entry as the RAM stood after it
-        const long double thr = arr_en_ ? counts(entry_m2) : counts(fd_m2_);
-        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 4)
+        // the start of the run takes the first threshold: fire_dist of this call, or entry 0 as
+        // the RAM stands after this call's write
+        if (t == 0) thr_ = arr_en_ ? counts(ram_[0]) : counts(r.fire_dist);
+        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 5)
 
-        // ---- fire on the estimate of call t - 4 ----
+        // ---- fire on the estimate of call t - 5 ----
         const bool was_done = done_;
-        o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr;
+        o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr_;
         if (o.fire) {
-            fired_ += thr;
+            fired_ += thr_;
             if (arr_en_) {
                 if (idx_ + 1 >= arr_len_) {
                     if (arr_wrap_) idx_ = 0;
@@ -135,7 +129,13 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
                     ++idx_;
                 }
             }
-            if (done_) frozen_ = est_old - fired_;
+            if (done_) {
+                frozen_ = est_old - fired_;
+            } else {
+                // the threshold of the next fire, taken at this fire: fire_dist of call t-2, or
+                // the entry of the next index as the RAM stood after call t-2
+                thr_ = arr_en_ ? counts(ram_g2_[static_cast<size_t>(idx_)]) : counts(fd_m2_);
+            }
         }
         o.dist = was_done ? frozen_ : est_old - fired_;
         o.in_win = inwin_hist_[kFireLat - 1];
@@ -155,8 +155,8 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
             if (ovl_cnt_ < 65535) ++ovl_cnt_;
         }
         if (o.freq_err) freq_st_ = true;
-        // the threshold of the next fire as seen in this call, after its fire (spacing sample)
-        const long double thr_now = threshold(r);
+        // the threshold of the next fire as it stands after this call's fire (spacing sample)
+        const long double thr_now = thr_;
 
         // ---- this call's motion ----
         long double est;

@@ -12,15 +12,17 @@
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
 //   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (the BRAM's address
-//                                  register is A's s), increments x (into the remainder) and y
-//                                  (estimate step, open chord included).
-//   stage B1 (R of the last call)  x - thr, y - thr for both candidate thresholds (the next
-//                                  fire's, and the one after it).
-//   stage B2 (B1 of the last call) decide: fire when rem + (y - thr) >= 0, rem' = rem + x (- thr):
-//                                  one add of the remainder per result; the candidate is picked
-//                                  by the registered decision of the last call.
+//                                  register is A's s), the estimate step Y = chord + one - (the
+//                                  open chord, unless a reversal closed it).
+//   stage B1 (R of the last call)  the loop operands: Y, and Y - thr for the two candidate
+//                                  thresholds of the fire after the next (the index before and
+//                                  after the move of the decision being taken in B2).
+//   stage B2 (B1 of the last call) the loop on u = value - thr: decide the entry in u (fire when
+//                                  u >= 0) and add the next entry's operand, picked by that sign
+//                                  (u + Y - thr' after a fire, u + Y otherwise: the threshold is
+//                                  taken at a fire, docs/PSO_COUNTERS.md §2.5).
 //   stage B3 (B2 of the last call) apply the decision: fire / emit outputs, pulse timer, flags,
-//                                  counters, dist = rem + (y - x), index outputs.
+//                                  counters, dist = u (+ thr without a fire), index outputs.
 //
 // With K = 1 every step closes its window and the increment is the per-call magnitude
 // 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
@@ -30,8 +32,8 @@
 // remainder 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
 // (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
 // stage; the configuration check is formed on the presented values and registered).
-// Latency: a step at call t can fire at call t+4 (FIRE_LAT; the fire/emit/pulse
-// outputs of call t+4); rate_over is an output of the command's call; spacing_err of run call
+// Latency: a step at call t can fire at call t+5 (FIRE_LAT; the fire/emit/pulse
+// outputs of call t+5); rate_over is an output of the command's call; spacing_err of run call
 // 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
@@ -65,12 +67,12 @@ struct pso_cfg {
     static constexpr int S_MAX = N_AXES * K_MAX * K_MAX;             // 768
     static constexpr int W_S = clog2p1(S_MAX);                       // 10, ROM address
     static constexpr int W_CHORD = clog2p1(2 * K_MAX - 1) + D_FRAC;  // 37: sqrt(3)*K < 2K - 1
-    static constexpr int W_INCR = W_CHORD + 1;                       // 38: x, y <= two chords
+    static constexpr int W_INCR = W_CHORD + 1;                       // 38: Y, estimate step (< 2 chords)
     static constexpr int W_ADDR = clog2p1(ARR_DEPTH - 1);            // 6
     static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
     static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
-    static constexpr int FIRE_LAT = 4;                               // calls from a step to its fire
+    static constexpr int FIRE_LAT = 5;                               // calls from a step to its fire
     static constexpr int REG_LAT = 1;                                // calls from presenting a register to its use
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
@@ -255,6 +257,7 @@ public:
         out_t o;  // every field 0 / false (default member initialisers)
         if (!cfg_ok) {
             reset();
+            thr_ = start_thr(rp);
             o.cfg_err = true;
             return o;
         }
@@ -267,6 +270,7 @@ public:
         }
         if (!r.enable) {
             reset_track();
+            thr_ = start_thr(rp);
             fill_status(o);
             return o;
         }
@@ -279,12 +283,18 @@ public:
             run_q_ = true;
         }
         // ---- stage B1 thresholds (read before B2 moves the index) ----
-        // thr0: the threshold of the next decision if this call's B2 does not fire; thr1 if it
-        // does (array: the entry after idx). The RAM is read after this call's write.
+        // the thresholds of the fire after the next: if this call's B2 does not move the index,
+        // entry next(idx) (thF0), else next^2(idx) (thF1); fire_dist in force otherwise. The RAM
+        // is read after this call's write. The first operands of a run take the start
+        // threshold thr_.
         cfg::len_t nx = idx_ + 1;
         if (nx >= arr_len_q_) nx = 0;
-        const cfg::dist_t thr0 = arr_en_q_ ? arr_[idx_.to_uint()] : r.fire_dist;
-        const cfg::dist_t thr1 = arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
+        cfg::len_t nx2 = nx + 1;
+        if (nx2 >= arr_len_q_) nx2 = 0;
+        const bool first = r_v_ && !b_v_;
+        const cfg::dist_t thF0 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
+        const cfg::dist_t thF1 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
+        const cfg::dist_t thr_in = thr_;  // the threshold of the next fire (spacing sample)
 
         // ---- stage B3 (from the B2 registers): apply the decision of the last call ----
         const bool fire = c_fire_;
@@ -305,51 +315,67 @@ public:
         }
         if (freq_err) freq_st_ = true;
         const bool in_win_used = c_inwin_;
-        // rem_ is the remainder after the last decision, c_dy_ its y - x (the chord it left open)
-        if (c_live_) dist_ = rem_ + cfg::rem_t(c_dy_.to_uint64());
+        // c_u_ is u of the last decision, c_tm_ its threshold if it did not fire (else 0)
+        if (c_live_) dist_ = c_u_ + cfg::rem_t(c_tm_.to_uint64());
         idx_o_ = idx_;
         done_o_ = done_;
 
-        // ---- stage B2 (from the B1 registers): decide, remainder, array index ----
-        const int64_t rem_v = rem_.to_int64();
-        const int64_t ym = (b_fire1_ ? b_ym1_ : b_ym0_).to_int64();
-        const int64_t xm = (b_fire1_ ? b_xm1_ : b_xm0_).to_int64();
-        const bool dec = b_v_ && !done_ && rem_v + ym >= 0;  // value - thr >= 0
-        c_live_ = !done_;
+        // ---- stage B2 (from the B1 registers): the loop on u, decision, array index ----
+        const bool pos = u_ >= 0;
+        const bool dec = u_v_ && !done_ && pos;  // value - thr >= 0
+        const bool last_stop = arr_en_q_ && idx_ + 1 >= arr_len_q_ && !arr_wrap_q_;
+        const bool take = b_v_ && pos && !done_ && !last_stop;  // a fire (or the run start) takes thr
+        const cfg::rem_t opF = adv_ ? b_opF1_ : b_opF0_;
+        const cfg::dist_t thF = adv_ ? b_thF1_ : b_thF0_;
         c_fire_ = dec;
-        c_inwin_ = b_inwin_;
-        c_dy_ = b_dy_;
-        if (!done_) rem_ = dec ? rem_v + xm : rem_v + static_cast<int64_t>(b_x_.to_uint64());
+        c_inwin_ = u_inwin_;
+        c_live_ = u_v_ && !done_;
+        c_u_ = u_;
+        c_tm_ = pos ? cfg::dist_t(0) : thr_;
+        u_ = pos ? cfg::rem_t(u_.to_int64() + opF.to_int64()) : cfg::rem_t(u_.to_int64() + static_cast<int64_t>(b_y_.to_uint64()));
+        if (take) thr_ = thF;
+        bool moved = false;
         if (dec && arr_en_q_) {
             if (idx_ + 1 >= arr_len_q_) {
-                if (arr_wrap_q_) idx_ = 0;
-                else done_ = true;
+                if (arr_wrap_q_) {
+                    idx_ = 0;
+                    moved = true;
+                } else {
+                    done_ = true;
+                }
             } else {
                 idx_ = idx_ + 1;
+                moved = true;
             }
         }
-        b_fire1_ = dec;
+        adv_ = moved;
+        u_v_ = b_v_;
+        u_inwin_ = b_inwin_;
 
-        // ---- stage B1 (from the R registers): candidate differences ----
-        const int64_t x_v = static_cast<int64_t>(r_x_.to_uint64());
-        const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
-        const int64_t t0 = static_cast<int64_t>(thr0.to_uint64());
-        const int64_t t1 = static_cast<int64_t>(thr1.to_uint64());
-        b_x_ = r_x_;
-        b_dy_ = part_;  // y - x of R's increments
-        b_xm0_ = x_v - t0;
-        b_ym0_ = y_v - t0;
-        b_xm1_ = x_v - t1;
-        b_ym1_ = y_v - t1;
-        b_inwin_ = r_inwin_;
+        // ---- stage B1 (from the R registers): the loop operands (0 until R holds data) ----
+        if (r_v_) {
+            const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
+            b_y_ = r_y_;
+            b_opF0_ = y_v - static_cast<int64_t>(thF0.to_uint64());
+            b_opF1_ = y_v - static_cast<int64_t>(thF1.to_uint64());
+            b_thF0_ = thF0;
+            b_thF1_ = thF1;
+        } else {
+            b_y_ = 0;
+            b_opF0_ = 0;
+            b_opF1_ = 0;
+            b_thF0_ = 0;
+            b_thF1_ = 0;
+        }
+        b_inwin_ = r_v_ && r_inwin_;
         b_v_ = r_v_;
 
-        // ---- stage R: chord ROM read at the address stage A wrote, increments ----
+        // ---- stage R: chord ROM read at the address stage A wrote, the estimate step ----
         const uint64_t chord = pso_chord(a_s_).to_uint64();
-        const uint64_t pr = a_rev_ ? part_.to_uint64() : 0;
         const uint64_t one = a_pulse_ ? cfg::ONE : 0;
-        r_y_ = pr + chord + one;  // (a generator pulse comes with chord 0 and pr 0)
-        r_x_ = a_kclose_ ? r_y_ : cfg::incr_t(pr + one);
+        // Y = est - est of the previous entry: the new chord (plus a generator pulse), less the
+        // open chord it extends (a reversal closed that one, a K close left none); >= 0
+        r_y_ = chord + one - (a_rev_ ? uint64_t(0) : part_.to_uint64());
         part_ = a_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
         r_inwin_ = a_inwin_;
         r_v_ = a_v_;
@@ -374,7 +400,7 @@ public:
                 sp_full_ = true;
                 sp_inc_ = inc;
                 sp_min_ = r.min_period;
-                sp_thr_ = thr0;
+                sp_thr_ = thr_in;
                 sp_hi_ = 0;
                 sp_lo_ = 0;
                 sp_k_ = 1;
@@ -436,6 +462,13 @@ public:
     }
 
 private:
+    // While the tracking state is in reset: the threshold a run starting in the next call takes
+    // (fire_dist in force then, or entry 0 as the RAM stands after the next call's write).
+    cfg::dist_t start_thr(const pso_regs& rp) const {
+        if (!rp.arr_en) return rp.fire_dist;
+        return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : arr_[0];
+    }
+
     void reset_track() {
         for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
         a_rev_ = false;
@@ -444,27 +477,29 @@ private:
         a_pulse_ = false;
         a_inwin_ = false;
         a_v_ = false;
-        r_x_ = 0;
         r_y_ = 0;
         r_inwin_ = false;
         r_v_ = false;
         part_ = 0;
-        b_x_ = 0;
-        b_dy_ = 0;
-        b_xm0_ = 0;
-        b_ym0_ = 0;
-        b_xm1_ = 0;
-        b_ym1_ = 0;
+        b_y_ = 0;
+        b_opF0_ = 0;
+        b_opF1_ = 0;
+        b_thF0_ = 0;
+        b_thF1_ = 0;
         b_inwin_ = false;
         b_v_ = false;
-        b_fire1_ = false;
-        rem_ = 0;
+        u_ = 0;
+        u_v_ = false;
+        u_inwin_ = false;
+        thr_ = 0;
+        adv_ = false;
         idx_ = 0;
         done_ = false;
         c_fire_ = false;
         c_inwin_ = false;
         c_live_ = false;
-        c_dy_ = 0;
+        c_u_ = 0;
+        c_tm_ = 0;
         dist_ = 0;
         idx_o_ = 0;
         done_o_ = false;
@@ -523,21 +558,24 @@ private:
     cfg::sphi_t sp_hi_;
     cfg::gap_t sp_lo_;
     // stage R
-    cfg::incr_t r_x_, r_y_;
-    cfg::chord_t part_;  // chord of the open window (y - x of R's increments)
+    cfg::incr_t r_y_;    // Y: the estimate step of the entry
+    cfg::chord_t part_;  // chord of the open window
     bool r_inwin_, r_v_;
-    // stage B1
-    cfg::incr_t b_x_;
-    cfg::chord_t b_dy_;
-    cfg::rem_t b_xm0_, b_ym0_, b_xm1_, b_ym1_;
+    // stage B1 (the loop operands)
+    cfg::incr_t b_y_;
+    cfg::rem_t b_opF0_, b_opF1_;   // Y - thF0, Y - thF1
+    cfg::dist_t b_thF0_, b_thF1_;  // thresholds after a fire: index not moved / moved by the last decision
     bool b_inwin_, b_v_;
-    // stage B2 (the decision and the state it moves)
-    bool b_fire1_;  // decision of the last call (picks the candidates)
-    cfg::rem_t rem_;
+    // stage B2 (the loop, the decision and the state it moves)
+    cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
+    bool u_v_, u_inwin_;
+    cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
+    bool adv_;           // the last call's decision moved the index (picks the B1 candidate)
     cfg::len_t idx_;
     bool done_;
     bool c_fire_, c_inwin_, c_live_;
-    cfg::chord_t c_dy_;
+    cfg::rem_t c_u_;     // u of the decision
+    cfg::dist_t c_tm_;   // its threshold if it did not fire, else 0
     // stage B3 (outputs)
     cfg::rem_t dist_;
     cfg::len_t idx_o_;

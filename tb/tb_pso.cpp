@@ -11,13 +11,15 @@
 // accuracy:  firing position against the ideal continuous path (point at k * distance of arc
 //            length), in nm, for K = 1, 4, 8, 16 on lines, arcs, reversals, polylines (2D and
 //            3D), printed as a table; regression bounds for the default K = 16 (beyond the
-//            FIRE_LAT = 4 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
+//            FIRE_LAT = 5 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
 //            distances, window gating, pulse width and overlap (no fire lost: fire_cnt counts
 //            every emit), laser frequency flag, part-speed 24 MHz clamp and its flag, minimum
-//            spacing flag, every bad configuration flagged with no pulse.
+//            spacing flag, every bad configuration flagged with no pulse; the threshold of a fire
+//            is taken at the previous fire (a live distance change acts from the next fire: taken
+//            when in force 2 calls before that fire, not 1 call before).
 // command:   `laserax pso` (cmd_pso) on its demo path returns 0 (bit-exact) into the build dir.
 #include <algorithm>
 #include <cmath>
@@ -261,9 +263,11 @@ void test_accuracy(tbu::result& res, std::mt19937_64& rng) {
     const int ks[] = {1, 4, 8, 16};
     std::printf("[tb_pso] firing position error vs the ideal path (nm; 1 count = 78.125 nm; firing distance random\n"
                 "         20..200 counts; speeds 0.02..0.5 counts/clock = 0.16..3.9 m/s; position = axes when the pulse\n"
-                "         leaves; 'beyond 4 clk' = error minus the travel of the 4 clocks of latency; 'along' < 0: early)\n");
-    std::printf("  %-13s %3s %6s %9s %8s %8s %9s %12s\n", "paths", "K", "fires", "max", "mean", "rms", "along",
-                "beyond 4 clk");
+                "         leaves; 'beyond %d clk' = error minus the travel of the %d clocks of latency; 'along' < 0: early)\n",
+                lx::pso_cfg::FIRE_LAT, lx::pso_cfg::FIRE_LAT);
+    char beyond[24];
+    std::snprintf(beyond, sizeof beyond, "beyond %d clk", lx::pso_cfg::FIRE_LAT);
+    std::printf("  %-13s %3s %6s %9s %8s %8s %9s %12s\n", "paths", "K", "fires", "max", "mean", "rms", "along", beyond);
     for (const shape& sh : shapes) {
         // the same paths for every K
         std::vector<lxt::pso_path> paths;
@@ -361,7 +365,7 @@ golden::pso_in steps(int a, int b, int c) {
 void test_directed(tbu::result& res) {
     // remainder carry: 1 count per call on x, distance 2.5 counts: fire k after count ceil(2.5 k);
     // the registers presented in call 0 are in force from call 1 (REG_LAT), so the step of call 0
-    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + 4 (FIRE_LAT 4)
+    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + FIRE_LAT - 1 + REG_LAT
     {
         pair_run p{{}, {}, &res, "carry"};
         golden::pso_regs r;
@@ -371,7 +375,7 @@ void test_directed(tbu::result& res) {
         r.fire_dist = 5 * kQ / 2;
         r.pulse_w = 1;
         std::vector<long long> fires;
-        for (int t = 0; t < 200; ++t)
+        for (int t = 0; t < 196 + lx::pso_cfg::FIRE_LAT; ++t)  // fire 78 (count 195) the last
             if (p.step(steps(1, 0, 0), r).fire) fires.push_back(t);
         bool ok = fires.size() == 78;
         for (size_t k = 1; ok && k <= fires.size(); ++k)
@@ -381,7 +385,7 @@ void test_directed(tbu::result& res) {
     }
     // K = 1: per-call magnitudes; a synchronous diagonal (x and y step together) advances sqrt2
     // per call, a 3D one sqrt3: distance 10 counts is reached after ceil(10/sqrt2) = 8,
-    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 = 3 calls later (plus REG_LAT: the run starts
+    // ceil(10/sqrt3) = 6 calls, the fire FIRE_LAT - 1 calls later (plus REG_LAT: the run starts
     // in call 1)
     for (int dims = 2; dims <= 3; ++dims) {
         pair_run p{{}, {}, &res, "K=1 diagonal"};
@@ -429,6 +433,30 @@ void test_directed(tbu::result& res) {
         const std::vector<long long> want = {4 + L, 10 + L, 13 + L, 40 + L};
         res.check(fires == want && last.arr_done, "array: fires at listed distances wrong (" +
                                                       std::to_string(fires.size()) + " fires)");
+    }
+    // threshold taken at the previous fire: x moves one count per call (position t after call t),
+    // distance 10 counts: fire 1 in call 10 + L (L = FIRE_LAT). Distance 4 counts from call p on:
+    // presented in call 7 + L it is in force in call 8 + L = (fire 1) - 2 and is taken for fire
+    // 2 (fires at positions 10, 14, 18); presented one call later it is not (10, 20, 24). Under
+    // the earlier rule (thr of a fire = fire_dist two calls before it) both would fire at 14.
+    for (int late = 0; late <= 1; ++late) {
+        pair_run p{{}, {}, &res, late ? "live distance (late)" : "live distance"};
+        golden::pso_regs r;
+        r.enable = true;
+        r.axis_mask = 1;
+        r.pulse_w = 1;
+        constexpr long long L = lx::pso_cfg::FIRE_LAT;
+        const long long p_call = 7 + L + late;
+        std::vector<long long> fires;
+        for (long long t = 0; t < 60 && fires.size() < 3; ++t) {
+            r.fire_dist = (t >= p_call ? 4 : 10) * kQ;
+            if (p.step(steps(1, 0, 0), r).fire) fires.push_back(t);
+        }
+        const std::vector<long long> want =
+            late ? std::vector<long long>{10 + L, 20 + L, 24 + L} : std::vector<long long>{10 + L, 14 + L, 18 + L};
+        res.check(fires == want, std::string("threshold taken at the previous fire") + (late ? " (late change)" : "") +
+                                     ": fires at " + (fires.size() > 1 ? std::to_string(fires[1]) : "-") + ", " +
+                                     (fires.size() > 2 ? std::to_string(fires[2]) : "-"));
     }
     // window: x moves 0..99 at 1 count/call, distance 2 counts, window x in [20, 39]: emits
     // only for fires whose step positions lie in the window
@@ -527,6 +555,40 @@ void test_directed(tbu::result& res) {
         r.fire_dist = 130 * kQ;
         for (int t = 0; t < 100000; ++t) o = b.step(in, r);
         res.check(!o.spacing_st && !o.freq_st && o.fire_cnt > 0, "min spacing: 130 counts flagged or no fire");
+        // after the array is done: part-speed at INC_MAX (0.24 count per clock), min_period 20
+        // (4.8 counts), entries 3 and 6 counts without wrap. A sample holds the threshold of the
+        // next fire: 3 before fire 1, then 6 (taken at fire 1); fire 2 makes the array done and
+        // takes none, so every later sample holds 6. Flagged: exactly the samples before fire 1.
+        pair_run d{{}, {}, &res, "spacing after done"};
+        golden::pso_regs w;
+        w.part_speed = true;
+        w.pulse_w = 1;
+        for (int j = 0; j < 2; ++j) {
+            golden::pso_regs x = w;
+            x.arr_we = true;
+            x.arr_addr = j;
+            x.arr_data = (j == 0 ? 3ULL : 6ULL) * kQ;
+            d.step(golden::pso_in{}, x);
+        }
+        w.enable = true;
+        w.arr_en = true;
+        w.arr_len = 2;
+        w.min_period = 20;
+        in.ps_inc = lx::pso_cfg::INC_MAX;
+        const long long run0 = 2 + lx::pso_cfg::REG_LAT;  // call of run call 0
+        std::vector<long long> fire_calls, flags;
+        for (long long t = 2; t < 200; ++t) {
+            o = d.step(in, w);
+            if (o.fire) fire_calls.push_back(t);
+            if (o.spacing_err) flags.push_back(t);
+        }
+        std::vector<long long> want_flags;
+        if (fire_calls.size() == 2)
+            for (long long smp = run0; smp < fire_calls[0] && smp + lx::pso_cfg::SP_LAT < 200; smp += lx::pso_cfg::SP_LAT)
+                want_flags.push_back(smp + lx::pso_cfg::SP_LAT);
+        res.check(fire_calls.size() == 2 && o.arr_done && flags == want_flags && !flags.empty(),
+                  "spacing after done: " + std::to_string(fire_calls.size()) + " fires, " + std::to_string(flags.size()) +
+                      " flags (want " + std::to_string(want_flags.size()) + ")");
     }
     // bad configurations: each one raises cfg_err (from call 1: call 0 works with the reset values,
     // REG_LAT) and no pulse leaves
