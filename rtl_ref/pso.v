@@ -23,31 +23,33 @@
 //       phase accumulator (clamped to INC_MAX), pulse count; window operands; minimum-spacing
 //       shift-add (sample every 17 calls).
 //   R   chord ROM (769 x 37 bits, filled at elaboration by the same digit-by-digit square root
-//       as hls/pso.h): its data output feeds y = (a_rev ? part : 0) + chord (+1.0 for a
-//       generator pulse), x = a_kclose ? y : ...; part' = a_kclose ? 0 : chord; the window
+//       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (a_rev ?
+//       0 : part), the growth of the estimate; part' = a_kclose ? 0 : chord; the window
 //       compares.
-//   B1  x - thr, y - thr for thr0 (the next decision's threshold if this call's B2 does not
-//       fire) and thr1 (if it does): fire_dist, or the array entries idx and next(idx).
-//   B2  decision dec = b_v && !done && rem + (y - thr) >= 0; rem' = rem + x (- thr). The
-//       remainder is two registers (rem1: the last call decided a fire, rem0: it did not) picked
-//       by the registered decision of the last call, which also picks the candidate
-//       differences: each case is one add of two registers, the pick comes after the add, and
-//       the remainder's next values do not depend on this call's decision. Array index. The
-//       decision goes into registers only (b_fire1, c_fire, the index move).
+//   B1  the loop operands: Y, and Y - thF for the two candidate thresholds of the fire after the
+//       next (entries next(idx), next^2(idx) of this call's index, or fire_dist; the first
+//       operands of a run take the start threshold thr); all 0 while R holds no data.
+//   B2  the loop on u = value - thr of the entry held: the decision is u >= 0, the sign of the
+//       registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry out of lo
+//       added into hi at the next update, and a flag "hi[27:0] all ones" formed beside the
+//       update without a carry chain: sign = hi[28] ^ (c & ones)); u' = u + (u >= 0 ? Y - thF
+//       : Y), both sums formed from registers and picked by the sign: one 29-bit chain and a
+//       select. A fire (or the run start) takes the next threshold (thr). Array index. The
+//       decision goes into registers only (c_fire, the index move).
 //   B3  applies the decision of the last call (c_fire): fire / emit, pulse timer, overlap /
-//       frequency flags, counters, dist = rem + c_dy (rem after that decision, c_dy its y - x),
-//       the index and done outputs.
-// A step in call t fires in call t + 4.
+//       frequency flags, counters, dist = u (+ thr if it did not fire) resolved from the
+//       registered halves, the index and done outputs.
+// A step in call t fires in call t + 5.
 //
 // Array RAM (64 x 56): four copies (one read port each, the write port shared), read in call
-// t - 2 at idx, next(idx), next^2(idx), next^3(idx) of that call. Threshold prefetch: in call
-// t - 1 three of the four (picked by the registered index move of call t - 2) are completed with
-// the writes in force in calls t - 1 and t (forwarded: the first was written after the read,
-// the second is presented in call t - 1), or replaced by fire_dist in force in call t, and
-// registered (th0..th2: the entries idx, next(idx), next^2(idx) of call t - 1). B1 in call t
-// picks two of them with the index move of call t - 1. A call that resets the tracking state
-// prepares entry 0 (from a copy register, entry0) for the first call of the next run, and loads
-// next(0).. next^3(0) for the length presented (in force in that first call).
+// t - 2 at next(idx) .. next^4(idx) of that call. Threshold prefetch: in call t - 1 three of the
+// four (picked by the registered index move of call t - 2) are completed with the writes in
+// force in calls t - 1 and t (forwarded: the first was written after the read, the second is
+// presented in call t - 1), or replaced by fire_dist in force in call t, and registered
+// (th1..th3: the entries next(idx) .. next^3(idx) of call t - 1). B1 in call t picks two of
+// them with the index move of call t - 1. The threshold register thr is loaded, while the
+// tracking state is in reset, with the start threshold of a run beginning in the next call
+// (fire_dist presented, or entry 0 from a copy register, entry0, with the presented write).
 //
 // Widths (pso_cfg): distances Q24.32 (56 unsigned), remainder and dist 58 signed, chord 37,
 // x / y 38, travel 6 signed, K 5, positions 38 signed, part-speed rate Q0.32, pulse width and
@@ -127,6 +129,7 @@ module pso (
     localparam integer W_PROD   = 48;   // inc * min_period
     localparam integer W_SPHI   = 33;
     localparam [W_INC-1:0] INC_MAX = 32'd1030792151;  // floor(0.24 * 2^32): 24 MHz
+    localparam integer LH       = W_REM / 2;   // 29: halves of u and of the carry-select adds
 
     // ---- chord ROM contents: round(sqrt(s) * 2^32), digit-by-digit (as pso_chord_rom) ---------
     function [W_CHORD-1:0] round_sqrt;
@@ -159,17 +162,17 @@ module pso (
     end
 
     // ---- array RAM: four copies with one read port each ----------------------------------------
-    reg [W_DIST-1:0] arr0 [0:63];
     reg [W_DIST-1:0] arr1 [0:63];
     reg [W_DIST-1:0] arr2 [0:63];
     reg [W_DIST-1:0] arr3 [0:63];
+    reg [W_DIST-1:0] arr4 [0:63];
     integer ai;
     initial begin
         for (ai = 0; ai < 64; ai = ai + 1) begin
-            arr0[ai] = {W_DIST{1'b0}};
             arr1[ai] = {W_DIST{1'b0}};
             arr2[ai] = {W_DIST{1'b0}};
             arr3[ai] = {W_DIST{1'b0}};
+            arr4[ai] = {W_DIST{1'b0}};
         end
     end
 
@@ -191,9 +194,9 @@ module pso (
     reg [63:0]              bad_q;        // entry below 2 counts (or never written), after the
                                           //   writes presented so far
     reg [W_DIST-1:0]        entry0_q;     // copy of entry 0 (the RAM after the last edge)
-    reg [W_DIST-1:0]        rd0_q, rd1_q, rd2_q, rd3_q;   // array read data (BRAM output registers)
-    reg                     fw0_q, fw1_q, fw2_q, fw3_q;   // the write presented with the read hit its address
-    reg [W_DIST-1:0]        th0_q, th1_q, th2_q;          // thresholds: entries idx .. next^2(idx)
+    reg [W_DIST-1:0]        rd1_q, rd2_q, rd3_q, rd4_q;   // array read data (BRAM output registers)
+    reg                     fw1_q, fw2_q, fw3_q, fw4_q;   // the write presented with the read hit its address
+    reg [W_DIST-1:0]        th1_q, th2_q, th3_q;          // thresholds: entries next(idx) .. next^3(idx)
                                                           //   of the last call, or fire_dist
     reg                     adv_q;        // the last call moved the index
     // run state and latched mode registers
@@ -223,26 +226,30 @@ module pso (
     reg [W_SPHI-1:0]        sp_hi_q;
     reg [W_GAP-1:0]         sp_lo_q;
     // stage R
-    reg [W_INCR-1:0]        r_x_q, r_y_q;
-    reg [W_CHORD-1:0]       part_q;       // chord of the open window (y - x)
+    reg [W_INCR-1:0]        r_y_q;        // Y: the growth of the estimate
+    reg [W_CHORD-1:0]       part_q;       // chord of the open window
     reg                     r_v_q;
     reg                     r_wen_q;      // window enable, and the window compares in halves:
     reg [5:0]               r_wc_q;       //   hls r_inwin = !r_wen || (lo <= w && w <= hi), below
     // stage B1
-    reg [W_INCR-1:0]        b_x_q;
-    reg [W_CHORD-1:0]       b_dy_q;
-    reg [W_REM-1:0]         b_xm0_q, b_ym0_q, b_xm1_q, b_ym1_q;
+    reg [W_INCR-1:0]        b_y_q;
+    reg [W_REM-1:0]         b_opf0_q, b_opf1_q;   // Y - thF0, Y - thF1
+    reg [W_DIST-1:0]        b_thf0_q, b_thf1_q;   // the thresholds after a fire: the index not
+                                                  //   moved / moved by the last call's decision
     reg                     b_inwin_q, b_v_q;
-    // stage B2
-    reg                     b_fire1_q;        // decision of the last call
-    reg                     e1_q, e0_q;       // b_v && !done && b_fire1, b_v && !done && !b_fire1
-    reg [W_REM-1:0]         rem1_q, rem0_q;   // the remainder: rem1 if the last call decided a
-                                              //   fire (b_fire1), else rem0
+    // stage B2 (u carry-deferred: value = (hi + c) * 2^29 + lo, ao = &hi[27:0])
+    reg [LH-1:0]            u_hi_q, u_lo_q;
+    reg                     u_c_q, u_ao_q;
+    reg                     u_v_q, u_inwin_q;
+    reg                     e_q;          // u_v && !done
+    reg [W_DIST-1:0]        thr_q;        // threshold of the next fire
     reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
-    reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q;   //   next, next^2, next^3 of it
+    reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it
     reg                     done_q;
     reg                     c_fire_q, c_inwin_q, c_live_q;   // decision, its window, made while
-    reg [W_CHORD-1:0]       c_dy_q;                          //   not done; its y - x
+                                                             //   not done
+    reg [LH-1:0]            c_hic_q, c_lo_q;   // u of the decision, resolved: {hi + c, lo}
+    reg [W_DIST-1:0]        c_tm_q;       // its threshold if it did not fire, else 0
     // stage B3
     reg [W_REM-1:0]         dist_q;
     reg [6:0]               idx_o_q;
@@ -297,7 +304,6 @@ module pso (
 
     // carry-select W_REM-bit add with carry-in: low 29 bits, upper 29 bits for carry 0 and 1
     // ({a, c} + {b, c}: the carry-in through bit 0 of one adder)
-    localparam integer LH = W_REM / 2;
     function [W_REM-1:0] csel;
         input [W_REM-1:0] a, b;
         input             cin;
@@ -312,18 +318,44 @@ module pso (
         end
     endfunction
 
-    // carry-select W_INCR-bit add (low 19 bits, upper 19 bits for carry 0 and 1)
+    // carry-select W_INCR-bit add with carry-in (low 19 bits, upper 19 bits for carry 0 and 1)
     localparam integer LY = W_INCR / 2;
     function [W_INCR-1:0] csel19;
         input [W_INCR-1:0] a, b;
-        reg [LY:0]          lo;
+        input              cin;
+        reg [LY+1:0]        lo;
         reg [W_INCR-LY-1:0] hi0;
         reg [W_INCR-LY:0]   hi1;
         begin
-            lo  = {1'b0, a[LY-1:0]} + {1'b0, b[LY-1:0]};
+            lo  = {1'b0, a[LY-1:0], cin} + {1'b0, b[LY-1:0], cin};
             hi0 = a[W_INCR-1:LY] + b[W_INCR-1:LY];
             hi1 = {a[W_INCR-1:LY], 1'b1} + {b[W_INCR-1:LY], 1'b1};
-            csel19 = {lo[LY] ? hi1[W_INCR-LY:1] : hi0, lo[LY-1:0]};
+            csel19 = {lo[LY+1] ? hi1[W_INCR-LY:1] : hi0, lo[LY:1]};
+        end
+    endfunction
+
+    // upper half of u: a + b + c (LH bits, one chain: {a, c} + {b, c})
+    function [LH-1:0] hi_add;
+        input [LH-1:0] a, b;
+        input          c;
+        reg   [LH:0]   t;
+        begin
+            t = {a, c} + {b, c};
+            hi_add = t[LH:1];
+        end
+    endfunction
+
+    // bits LH-2..0 of a + b + c all ones, without a carry chain: with p = ~(a ^ b), g = a & b,
+    // the sum is all ones iff the carry into each bit is p of that bit: c = p[0] and
+    // p[i+1] = g[i] (the carry out of bit i when its carry-in is p[i])
+    function ones_lo;
+        input [LH-2:0] a, b;
+        input          c;
+        reg   [LH-2:0] pp, gg;
+        begin
+            pp = ~(a ^ b);
+            gg = a & b;
+            ones_lo = (c == pp[0]) && (pp[LH-2:1] == gg[LH-3:0]);
         end
     endfunction
 
@@ -363,89 +395,87 @@ module pso (
 
     // ---- array index ---------------------------------------------------------------------------
     // The index of this call (after the decisions up to the last call) is idx_l: the registers
-    // idx_p .. nx3_p hold it before the last call's move and adv_q is that move, so a decision
+    // idx_p .. nx4_p hold it before the last call's move and adv_q is that move, so a decision
     // goes into one register (adv_q) and not into the index registers.
     wire [6:0]       idx_l  = adv_q ? nx_p_q : idx_p_q;
     wire [6:0]       nx_l   = adv_q ? nx2_p_q : nx_p_q;
     wire [6:0]       nx2_l  = adv_q ? nx3_p_q : nx2_p_q;
-    wire [6:0]       nx3_l  = adv_q ? next_idx(nx3_p_q, len_q) : nx3_p_q;
+    wire [6:0]       nx3_l  = adv_q ? nx4_p_q : nx3_p_q;
+    wire [6:0]       nx4_l  = adv_q ? next_idx(nx4_p_q, len_q) : nx4_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
-    // read data of the last call (addresses idx .. next^3(idx) of that call), the write presented
-    // with the read forwarded (it was made after the read: read-before-write), shifted by one
-    // entry when the last call moved the index: entries idx .. next^2(idx) of this call, after
-    // the write in force in this call
-    wire [W_DIST-1:0] e0 = fw0_q ? f_data_q : rd0_q;
+    // read data of the last call (addresses next(idx) .. next^4(idx) of that call), the write
+    // presented with the read forwarded (it was made after the read: read-before-write),
+    // shifted by one entry when the last call moved the index: entries next(idx) .. next^3(idx)
+    // of this call, after the write in force in this call
     wire [W_DIST-1:0] e1 = fw1_q ? f_data_q : rd1_q;
     wire [W_DIST-1:0] e2 = fw2_q ? f_data_q : rd2_q;
     wire [W_DIST-1:0] e3 = fw3_q ? f_data_q : rd3_q;
-    wire [W_DIST-1:0] g0 = adv_q ? e1 : e0;
+    wire [W_DIST-1:0] e4 = fw4_q ? f_data_q : rd4_q;
     wire [W_DIST-1:0] g1 = adv_q ? e2 : e1;
     wire [W_DIST-1:0] g2 = adv_q ? e3 : e2;
-    // the write presented in this call (in force in the next) forwarded; a call that resets the
-    // tracking state prepares entry 0 for the first call of a run (idx = 0 then)
-    wire              pw0 = i_arr_we && (i_arr_addr == (rst_trk ? 6'd0 : idx_l[5:0]));
+    wire [W_DIST-1:0] g3 = adv_q ? e4 : e3;
+    // the write presented in this call (in force in the next) forwarded
     wire              pw1 = i_arr_we && (i_arr_addr == nx_l[5:0]);
     wire              pw2 = i_arr_we && (i_arr_addr == nx2_l[5:0]);
-    wire [W_DIST-1:0] h0  = pw0 ? i_arr_data : rst_trk ? entry0_q : g0;
+    wire              pw3 = i_arr_we && (i_arr_addr == nx3_l[5:0]);
     wire [W_DIST-1:0] h1  = pw1 ? i_arr_data : g1;
     wire [W_DIST-1:0] h2  = pw2 ? i_arr_data : g2;
-    // array mode of the next call: the latched mode, or the one presented now if this call
-    // resets the tracking state (the next call may start a run); else fire_dist presented now
-    wire              en_n = rst_trk ? i_arr_en : arr_en_e;
-    wire [W_DIST-1:0] th0_d = en_n ? h0 : i_fire_dist;
-    wire [W_DIST-1:0] th1_d = en_n ? h1 : i_fire_dist;
-    wire [W_DIST-1:0] th2_d = en_n ? h2 : i_fire_dist;
+    wire [W_DIST-1:0] h3  = pw3 ? i_arr_data : g3;
+    // array mode of the next call (a run's calls 1, 2, ..: the latched mode), else fire_dist
+    // presented now; the next call's B1 makes the run's first operands (R is valid for the
+    // first time there): they take the start threshold thr (th1, picked with adv_q = 0)
+    wire              nf    = a_v_q && !r_v_q;
+    wire [W_DIST-1:0] th1_d = nf ? thr_q : arr_en_e ? h1 : i_fire_dist;
+    wire [W_DIST-1:0] th2_d = arr_en_e ? h2 : i_fire_dist;
+    wire [W_DIST-1:0] th3_d = arr_en_e ? h3 : i_fire_dist;
+    // the start threshold of a run beginning in the next call (loaded while the tracking state is
+    // in reset): fire_dist presented now, or entry 0 after the write presented now
+    wire [W_DIST-1:0] thr_st = i_arr_en ? ((i_arr_we && i_arr_addr == 6'd0) ? i_arr_data : entry0_q)
+                                        : i_fire_dist;
 
     // ---- stage B1 ------------------------------------------------------------------------------
-    // thresholds of the next fire if this call's B2 does not fire (thr0) and if it does (thr1):
-    // entries idx and next(idx) of this call, the index moved by the last call's fire (adv_q)
-    wire [W_DIST-1:0] thr0 = adv_q ? th1_q : th0_q;
-    wire [W_DIST-1:0] thr1 = adv_q ? th2_q : th1_q;
+    // thresholds of the fire after the next if this call's B2 does not move the index (thf0) and
+    // if it does (thf1): entries next(idx), next^2(idx) of this call (idx moved by adv_q)
+    wire [W_DIST-1:0] thf0 = adv_q ? th2_q : th1_q;
+    wire [W_DIST-1:0] thf1 = adv_q ? th3_q : th2_q;
+    // Y - thF = Y + ~thF + 1 (one carry-select add of two registers each)
+    wire [W_REM-1:0]  y58    = {{(W_REM-W_INCR){1'b0}}, r_y_q};
+    wire [W_REM-1:0]  opf0_d = csel(y58, ~{2'b00, thf0}, 1'b1);
+    wire [W_REM-1:0]  opf1_d = csel(y58, ~{2'b00, thf1}, 1'b1);
+    wire              b_clr  = rst_trk || !r_v_q;   // no operands before R holds data
 
-    // y - thr = y + ~thr + 1, x - thr likewise (one carry-select add of two registers each)
-    wire [W_REM-1:0]   nt0 = ~{2'b00, thr0};
-    wire [W_REM-1:0]   nt1 = ~{2'b00, thr1};
-    wire [W_REM-1:0]   y58 = {{(W_REM-W_INCR){1'b0}}, r_y_q};
-    wire [W_REM-1:0]   x58 = {{(W_REM-W_INCR){1'b0}}, r_x_q};
-    wire [W_REM-1:0]   ym0_d = csel(y58, nt0, 1'b1);
-    wire [W_REM-1:0]   ym1_d = csel(y58, nt1, 1'b1);
-    wire [W_REM-1:0]   xm0_d = csel(x58, nt0, 1'b1);
-    wire [W_REM-1:0]   xm1_d = csel(x58, nt1, 1'b1);
-
-    // ---- stage B2 ------------------------------------------------------------------------------
-    // The remainder is kept as two registers and the last call's decision (b_fire1) says which
-    // one holds it: rem1 = rem + xm of the last call (it fired), rem0 = rem + x (it did not). The
-    // candidate differences are picked by the same bit, so the value - thr of both cases is one
-    // add of two registers each (v1, v0), picked after the add; the remainder's next value does
-    // not wait for this call's decision (rem1' = rem + xm, rem0' = rem + x: b_fire1' = dec picks).
-    // hls freezes the remainder once the array is done; here it runs on (it is not seen: dist
-    // is only formed from a decision made while not done, c_live).
-    wire             f1   = b_fire1_q;
-    wire [W_REM-1:0] rem  = f1 ? rem1_q : rem0_q;
-    wire [W_REM-1:0] v1   = csel(rem1_q, b_ym1_q, 1'b0);      // value - thr if the last call fired
-    wire [W_REM-1:0] v0   = csel(rem0_q, b_ym0_q, 1'b0);      //   ... if it did not
-    // en1 = b_v && !done && f1 and en0 = b_v && !done && !f1 are registers (e1_q, e0_q, formed
-    // with the decision of the last call), so the decision is one gate after each sign
-    wire             dec  = (e1_q && !v1[W_REM-1]) || (e0_q && !v0[W_REM-1]);
-    wire [W_REM-1:0] rx1  = csel(rem1_q, b_xm1_q, 1'b0);
-    wire [W_REM-1:0] rx0  = csel(rem0_q, b_xm0_q, 1'b0);
-    wire [W_REM-1:0] rem1_d = f1 ? rx1 : rx0;                // rem + xm: used only after a fire
-    wire [W_REM-1:0] rem0_d = csel(rem, {{(W_REM-W_INCR){1'b0}}, b_x_q}, 1'b0);   // rem + x
-    // The index moves to next(idx) (idx_l .. nx3_l above); idx is the last entry iff
+    // ---- stage B2: the loop ----------------------------------------------------------------------
+    // u = (hi + c) * 2^29 + lo; its sign is hi[28] flipped by the deferred carry iff hi[27:0] is
+    // all ones (u_ao): one LUT of registers. Both sums are formed from registers (the fire
+    // candidate picked by adv_q, a register, before the add) and picked by the sign.
+    wire             pos    = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q));   // u >= 0
+    wire [W_REM-1:0] opf    = adv_q ? b_opf1_q : b_opf0_q;
+    wire [W_DIST-1:0] thf   = adv_q ? b_thf1_q : b_thf0_q;
+    wire [LH-1:0]    yhi    = {{(2*LH-W_INCR){1'b0}}, b_y_q[W_INCR-1:LH]};
+    wire [LH:0]      sf_lo  = {1'b0, u_lo_q} + {1'b0, opf[LH-1:0]};
+    wire [LH-1:0]    sf_hi  = hi_add(u_hi_q, opf[W_REM-1:LH], u_c_q);
+    wire             sf_ao  = ones_lo(u_hi_q[LH-2:0], opf[W_REM-2:LH], u_c_q);
+    wire [LH:0]      sn_lo  = {1'b0, u_lo_q} + {1'b0, b_y_q[LH-1:0]};
+    wire [LH-1:0]    sn_hi  = hi_add(u_hi_q, yhi, u_c_q);
+    wire             sn_ao  = ones_lo(u_hi_q[LH-2:0], yhi[LH-2:0], u_c_q);
+    wire             dec    = e_q && pos;                      // u_v && !done && u >= 0
+    // u resolved for dist (B3): hi + c, beside the loop
+    wire [LH-1:0]    u_hic  = u_hi_q + {{(LH-1){1'b0}}, u_c_q};
+    // The index moves to next(idx) (idx_l .. nx4_l above); idx is the last entry iff
     // next(idx) = 0.
     wire             last   = (nx_l == 7'd0);
     wire             adv_c  = arr_en_q && !(last && !arr_wrap_q);
     wire             done_c = arr_en_q && last && !arr_wrap_q;
     wire             adv    = dec && adv_c;
     wire             done_d = done_q || (dec && done_c);
-    wire             e1_d   = dec && r_v_q && !done_q && !done_c;   // b_v' && !done' && dec
-    wire             e0_d   = !dec && r_v_q && !done_q;
-    // a call that resets the tracking state: next(0), next^2(0), next^3(0) for the length
-    // presented (in force in the next call, which may start a run and latch it)
+    wire             take   = b_v_q && pos && !done_q && !done_c;   // a fire (or the run start)
+    // a call that resets the tracking state: next(0) .. next^4(0) for the length presented (in
+    // force in the next call, which may start a run and latch it)
     wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
+    wire [6:0]       nx4_0  = (i_arr_len > 7'd4) ? 7'd4 : (i_arr_len == 7'd3) ? 7'd1 : 7'd0;
 
     // ---- stage B3: the decision of the last call (registers only) ------------------------------
     wire             fire   = c_fire_q;
@@ -461,9 +491,8 @@ module pso (
     // clear acts first, an event of this call sets its flag again
     wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
     wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
-    // distance after the fire: the remainder after that decision (b_fire1 = c_fire picks) plus
-    // the chord it left open (= rem + ym after a fire, rem + y otherwise)
-    wire [W_REM-1:0] dist_n   = csel(rem, {{(W_REM-W_CHORD){1'b0}}, c_dy_q}, 1'b0);
+    // distance after the fire: u of that decision, plus its threshold if it did not fire
+    wire [W_REM-1:0] dist_n   = csel({c_hic_q, c_lo_q}, {2'b00, c_tm_q}, 1'b0);
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
@@ -559,14 +588,14 @@ module pso (
     wire b_inwin_d = r_v_q && (!r_wen_q || ((r_wc_q[5] || (r_wc_q[4] && r_wc_q[3])) &&
                                             (r_wc_q[2] || (r_wc_q[1] && r_wc_q[0]))));
 
-    // ---- stage R: increments from the ROM data ------------------------------------------------
+    // ---- stage R: the growth of the estimate from the ROM data -----------------------------------
     // rom_q is ROM[s] of the last call's stage A while a_v = 1 (the last call ran); while a_v = 0
-    // (a run's first call, or no run) y, x and part are stored as 0, as hls (a_s = 0 there).
-    // pr | cp and pr + cp: a generator pulse (1.0, bit 32) only comes with chord 0 and pr 0.
-    wire [W_INCR-1:0]  pr  = {1'b0, a_rev_q ? part_q : {W_CHORD{1'b0}}};
+    // (a run's first call, or no run) Y and part are stored as 0, as hls (a_s = 0 there).
+    // Y = chord + one - (a_rev ? 0 : part) = cp + ~pm + 1 (a generator pulse, 1.0 = bit 32, only
+    // comes with chord 0 and part 0, so chord + one = chord | one)
     wire [W_INCR-1:0]  cp  = {1'b0, rom_q | {a_pulse_q, {D_FRAC{1'b0}}}};
-    wire [W_INCR-1:0]  y_d = csel19(pr, cp);                          // pr + chord + one
-    wire [W_INCR-1:0]  x_d = a_kclose_q ? y_d : (pr | (cp & {W_INCR{a_pulse_q}}));   // pr + one
+    wire [W_INCR-1:0]  pm  = {1'b0, a_rev_q ? {W_CHORD{1'b0}} : part_q};
+    wire [W_INCR-1:0]  y_d = csel19(cp, ~pm, 1'b1);
     wire [W_CHORD-1:0] part_d = a_kclose_q ? {W_CHORD{1'b0}} : rom_q;
     wire               r_clr  = rst_trk || !a_v_q;
 
@@ -624,23 +653,23 @@ module pso (
     // write, no reset
     always @(posedge i_clk) begin
         if (i_arr_we) begin
-            arr0[i_arr_addr] <= i_arr_data;
             arr1[i_arr_addr] <= i_arr_data;
             arr2[i_arr_addr] <= i_arr_data;
             arr3[i_arr_addr] <= i_arr_data;
+            arr4[i_arr_addr] <= i_arr_data;
         end
-        rd0_q <= arr0[idx_l[5:0]];
         rd1_q <= arr1[nx_l[5:0]];
         rd2_q <= arr2[nx2_l[5:0]];
         rd3_q <= arr3[nx3_l[5:0]];
-        fw0_q <= i_arr_we && (i_arr_addr == idx_l[5:0]);
+        rd4_q <= arr4[nx4_l[5:0]];
         fw1_q <= i_arr_we && (i_arr_addr == nx_l[5:0]);
         fw2_q <= i_arr_we && (i_arr_addr == nx2_l[5:0]);
         fw3_q <= i_arr_we && (i_arr_addr == nx3_l[5:0]);
+        fw4_q <= i_arr_we && (i_arr_addr == nx4_l[5:0]);
         f_data_q <= i_arr_data;
-        th0_q <= th0_d;
         th1_q <= th1_d;
         th2_q <= th2_d;
+        th3_q <= th3_d;
     end
 
     // chord ROM: the block RAM registers this call's address s (stage A), its data is used in
@@ -653,13 +682,35 @@ module pso (
     always @(posedge i_clk) begin
         if (r_clr) begin
             r_y_q <= {W_INCR{1'b0}};
-            r_x_q <= {W_INCR{1'b0}};
             part_q <= {W_CHORD{1'b0}};
         end else begin
             r_y_q <= y_d;
-            r_x_q <= x_d;
             part_q <= part_d;
         end
+    end
+
+    // stage B1 registers: cleared with the tracking state and while R holds no data
+    always @(posedge i_clk) begin
+        if (b_clr) begin
+            b_y_q <= {W_INCR{1'b0}};
+            b_opf0_q <= {W_REM{1'b0}};
+            b_opf1_q <= {W_REM{1'b0}};
+            b_thf0_q <= {W_DIST{1'b0}};
+            b_thf1_q <= {W_DIST{1'b0}};
+        end else begin
+            b_y_q <= r_y_q;
+            b_opf0_q <= opf0_d;
+            b_opf1_q <= opf1_d;
+            b_thf0_q <= thf0;
+            b_thf1_q <= thf1;
+        end
+    end
+
+    // the threshold of the next fire: the start threshold while the tracking state is in reset,
+    // then taken at each fire
+    always @(posedge i_clk) begin
+        if (rst_trk) thr_q <= thr_st;
+        else if (take) thr_q <= thf;
     end
 
     always @(posedge i_clk) begin
@@ -697,23 +748,21 @@ module pso (
             r_wen_q <= 1'b0;
             r_wc_q <= 6'd0;
             r_v_q <= 1'b0;
-            b_x_q <= {W_INCR{1'b0}};
-            b_dy_q <= {W_CHORD{1'b0}};
-            b_xm0_q <= {W_REM{1'b0}};
-            b_ym0_q <= {W_REM{1'b0}};
-            b_xm1_q <= {W_REM{1'b0}};
-            b_ym1_q <= {W_REM{1'b0}};
             b_inwin_q <= 1'b0;
             b_v_q <= 1'b0;
-            b_fire1_q <= 1'b0;
-            e1_q <= 1'b0;
-            e0_q <= 1'b0;
-            rem1_q <= {W_REM{1'b0}};
-            rem0_q <= {W_REM{1'b0}};
+            u_hi_q <= {LH{1'b0}};
+            u_lo_q <= {LH{1'b0}};
+            u_c_q <= 1'b0;
+            u_ao_q <= 1'b0;
+            u_v_q <= 1'b0;
+            u_inwin_q <= 1'b0;
+            e_q <= 1'b0;
             c_fire_q <= 1'b0;
             c_inwin_q <= 1'b0;
             c_live_q <= 1'b0;
-            c_dy_q <= {W_CHORD{1'b0}};
+            c_hic_q <= {LH{1'b0}};
+            c_lo_q <= {LH{1'b0}};
+            c_tm_q <= {W_DIST{1'b0}};
             dist_q <= {W_REM{1'b0}};
             idx_o_q <= 7'd0;
             done_o_q <= 1'b0;
@@ -722,6 +771,7 @@ module pso (
             nx_p_q <= i_rst ? 7'd0 : nx_0;
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
+            nx4_p_q <= i_rst ? 7'd0 : nx4_0;
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             since_q <= {W_GAP{1'b1}};
@@ -759,10 +809,10 @@ module pso (
             sp_go_q <= sp_step && (sp_k_q == 5'd16) && sp_en_q;   // k = 0 and a sample held next
             if (sp_load) begin
                 sp_k_q <= 5'd1;
-                sp_en_q <= (f_min_period_q != 16'd0) && (thr0[W_DIST-1:W_PROD] == 8'd0);
+                sp_en_q <= (f_min_period_q != 16'd0) && (thr_q[W_DIST-1:W_PROD] == 8'd0);
                 sp_inc_q <= inc;
                 sp_m_q <= f_min_period_q >> 1;
-                sp_thr_q <= thr0[W_PROD-1:0];
+                sp_thr_q <= thr_q[W_PROD-1:0];
                 sp_hi_q <= sp_h0 >> 1;
                 sp_lo_q <= {sp_h0[0], {(W_GAP-1){1'b0}}};
             end else if (sp_step) begin
@@ -775,34 +825,33 @@ module pso (
                     sp_lo_q <= {sp_sh[0], sp_lo_q[W_GAP-1:1]};
                 end
             end
-            // R (r_y, r_x, part: above)
+            // R (r_y, part: above)
             r_wen_q <= a_wen_q;
             r_wc_q <= r_wc_d;
             r_v_q <= a_v_q;
             // B1
-            b_x_q <= r_x_q;
-            b_dy_q <= part_q;
-            b_xm0_q <= xm0_d;
-            b_ym0_q <= ym0_d;
-            b_xm1_q <= xm1_d;
-            b_ym1_q <= ym1_d;
             b_inwin_q <= b_inwin_d;
             b_v_q <= r_v_q;
             // B2
-            b_fire1_q <= dec;
-            e1_q <= e1_d;
-            e0_q <= e0_d;
-            rem1_q <= rem1_d;
-            rem0_q <= rem0_d;
+            u_hi_q <= pos ? sf_hi : sn_hi;
+            u_lo_q <= pos ? sf_lo[LH-1:0] : sn_lo[LH-1:0];
+            u_c_q <= pos ? sf_lo[LH] : sn_lo[LH];
+            u_ao_q <= pos ? sf_ao : sn_ao;
+            u_v_q <= b_v_q;
+            u_inwin_q <= b_inwin_q;
+            e_q <= b_v_q && !done_d;
             c_fire_q <= dec;
-            c_inwin_q <= b_inwin_q;
-            c_live_q <= !done_q;
-            c_dy_q <= b_dy_q;
+            c_inwin_q <= u_inwin_q;
+            c_live_q <= e_q;
+            c_hic_q <= u_hic;
+            c_lo_q <= u_lo_q;
+            c_tm_q <= pos ? {W_DIST{1'b0}} : thr_q;
             idx_p_q <= idx_l;
             adv_q <= adv;
             nx_p_q <= nx_l;
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
+            nx4_p_q <= nx4_l;
             done_q <= done_d;
             // B3
             if (c_live_q) dist_q <= dist_n;

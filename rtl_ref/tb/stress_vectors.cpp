@@ -943,9 +943,9 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
 // per call on every axis: fires in consecutive calls at small distances; reversals), enable
 // drops of 1..3 calls, clears, live distance changes, array writes while running (to the entry
-// of the next fire and the three after it, too: the prefetch and RAM forwarding of the RTL,
-// whose four read copies cover idx .. next^3(idx); one segment in 3
-// writes there in half of its calls). The first 120
+// of the next fire and the four after it, too: the prefetch and RAM forwarding of the RTL,
+// whose four read copies cover next(idx) .. next^4(idx) of the index two calls before; one
+// segment in 3 writes there in half of its calls). The first 120
 // calls are directed: an array run in part-speed with a spacing check, dropped for one call at
 // idx != 0 while entry 0 is rewritten, then restarted (the first call of a run samples entry 0
 // for the spacing check); again with entry 0 rewritten in the first call of the run. Calls
@@ -955,6 +955,12 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // without wrap: fires in consecutive calls up to done, and the call after done would fire again.
 // Calls 360..439: part-speed at INC_MAX with min_period 9 and the threshold exactly one 2^-32
 // count below INC_MAX x 9 (flagged), then exactly equal (not flagged): the product's last bit.
+// Calls 440..539: part-speed at INC_MAX, min_period 20 (4.8 counts), an array of 3 and 6 counts
+// without wrap: the spacing samples after done keep the last threshold (6: not flagged; the
+// fire that makes the array done takes none, entry 0 would be flagged). Calls 540..599: a 3D
+// diagonal with K = 1 on an array of five distinct entries just above 2 counts with wrap: runs
+// of up to six fires in consecutive calls, every index move picking a different entry (the
+// prefetch's deepest read, next^4 of the index two calls before).
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -1063,7 +1069,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
             }
             if (r.chance(hammer ? 2 : 50)) {  // a write while running: often the entry of the next fire or the one after
                 x.arr_we = true;
-                x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 3)) % 64 : r.range(0, 63));
+                x.arr_addr = static_cast<int>(r.chance(2) ? (last_idx + r.range(0, 4)) % 64 : r.range(0, 63));
                 x.arr_data = r.chance(30) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
                              : hammer    ? C::MIN_DIST + (r.u() & 0x1ffffffffULL)
                                          : draw_dist();
@@ -1149,6 +1155,42 @@ vec_table pso_stress(rng_t& r, long long calls) {
             x.pulse_w = 1;
             x.enable = n != 360 && n != 400;
             x.fire_dist = C::INC_MAX * 9 - (n < 400 ? 1 : 0);
+        }
+        if (n >= 440 && n < 540) {  // directed: spacing samples after done
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            in.ps_inc = C::INC_MAX;
+            x.part_speed = true;
+            x.min_period = 20;
+            x.pulse_w = 1;
+            x.arr_en = true;
+            x.arr_len = 2;
+            x.enable = n >= 443;
+            if (n < 442) {
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n - 440);
+                x.arr_data = (n == 440 ? 3ULL : 6ULL) << 32;
+            }
+        }
+        if (n >= 540 && n < 600) {  // directed: consecutive fires on distinct entries
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.axis_mask = 7;
+            x.win_k = 1;
+            x.pulse_w = 1;
+            x.arr_en = true;
+            x.arr_len = 5;
+            x.arr_wrap = true;
+            x.enable = n >= 546;
+            if (n < 545) {
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n - 540);
+                x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n - 540) << 20);
+            }
+            for (int a = 0; a < 3; ++a) {
+                in.step[a] = 1;
+                in.pos[a] = n;
+            }
         }
         const lx::pso::out_t o = m.step(lxt::pso_to_hls(in), lxt::pso_to_hls(x));
         last_idx = static_cast<int64_t>(o.idx.to_uint64());
