@@ -246,6 +246,9 @@ module pso (
     reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
     reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it
     reg                     done_q;
+    reg                     stop0_q, stop1_q;   // a fire ends the array (arr_en, no wrap, the last
+                                                //   entry) with the index before / after the last
+                                                //   call's move (picked by adv_q as idx_l)
     reg                     c_fire_q, c_inwin_q, c_live_q;   // decision, its window, made while
                                                              //   not done
     reg [LH-1:0]            c_hic_q, c_lo_q;   // u of the decision, resolved: {hi + c, lo}
@@ -279,7 +282,13 @@ module pso (
             assign used[ug] = (i_arr_len > ug);
         end
     endgenerate
-    wire        thr_ok  = i_arr_en ? (len_ok && ((bad_d & used) == 64'd0))
+    // (bad_d & used) == 0 without the written entry's data compare in front of the 64-input OR:
+    // the map before the presented write with the written entry masked, and the written entry
+    // alone (bad after the write iff wr_bad)
+    wire [63:0] hit     = i_arr_we ? wr_bit : 64'd0;
+    wire        bad_old = ((bad_q & ~hit & used) != 64'd0);
+    wire        bad_new = i_arr_we && wr_bad && (i_arr_len > {1'b0, i_arr_addr});
+    wire        thr_ok  = i_arr_en ? (len_ok && !bad_old && !bad_new)
                                    : (i_fire_dist[W_DIST-1:D_FRAC+1] != 23'd0);
     // win_low <= win_high: the sign of high - low (39 bits) as a carry-select subtract (19-bit low
     // part; the upper 20 bits with borrow 0 and 1)
@@ -415,20 +424,28 @@ module pso (
     wire [W_DIST-1:0] g1 = adv_q ? e2 : e1;
     wire [W_DIST-1:0] g2 = adv_q ? e3 : e2;
     wire [W_DIST-1:0] g3 = adv_q ? e4 : e3;
-    // the write presented in this call (in force in the next) forwarded
-    wire              pw1 = i_arr_we && (i_arr_addr == nx_l[5:0]);
-    wire              pw2 = i_arr_we && (i_arr_addr == nx2_l[5:0]);
-    wire              pw3 = i_arr_we && (i_arr_addr == nx3_l[5:0]);
-    wire [W_DIST-1:0] h1  = pw1 ? i_arr_data : g1;
-    wire [W_DIST-1:0] h2  = pw2 ? i_arr_data : g2;
-    wire [W_DIST-1:0] h3  = pw3 ? i_arr_data : g3;
+    // the write presented in this call (in force in the next) forwarded: its address compared
+    // with both index registers, picked by adv_q after the compare; the forward is the last
+    // select (pwk: the write hits entry k of the next call in array mode; th1 of the run's first
+    // operands is the start threshold)
+    wire              nf    = a_v_q && !r_v_q;   // the next call's B1 makes the run's first operands
+    wire              pwe   = i_arr_we && arr_en_e;
+    wire              eq1   = (i_arr_addr == nx_p_q[5:0]);
+    wire              eq2   = (i_arr_addr == nx2_p_q[5:0]);
+    wire              eq3   = (i_arr_addr == nx3_p_q[5:0]);
+    wire              eq4   = (i_arr_addr == nx4_p_q[5:0]);
+    wire              pw1   = pwe && !nf && (adv_q ? eq2 : eq1);
+    wire              pw2   = pwe && (adv_q ? eq3 : eq2);
+    wire              pw3   = pwe && (adv_q ? eq4 : eq3);
     // array mode of the next call (a run's calls 1, 2, ..: the latched mode), else fire_dist
-    // presented now; the next call's B1 makes the run's first operands (R is valid for the
-    // first time there): they take the start threshold thr (th1, picked with adv_q = 0)
-    wire              nf    = a_v_q && !r_v_q;
-    wire [W_DIST-1:0] th1_d = nf ? thr_q : arr_en_e ? h1 : i_fire_dist;
-    wire [W_DIST-1:0] th2_d = arr_en_e ? h2 : i_fire_dist;
-    wire [W_DIST-1:0] th3_d = arr_en_e ? h3 : i_fire_dist;
+    // presented now; the first operands of a run take the start threshold thr (th1, picked
+    // with adv_q = 0)
+    wire [W_DIST-1:0] q1    = nf ? thr_q : arr_en_e ? g1 : i_fire_dist;
+    wire [W_DIST-1:0] q2    = arr_en_e ? g2 : i_fire_dist;
+    wire [W_DIST-1:0] q3    = arr_en_e ? g3 : i_fire_dist;
+    wire [W_DIST-1:0] th1_d = pw1 ? i_arr_data : q1;
+    wire [W_DIST-1:0] th2_d = pw2 ? i_arr_data : q2;
+    wire [W_DIST-1:0] th3_d = pw3 ? i_arr_data : q3;
     // the start threshold of a run beginning in the next call (loaded while the tracking state is
     // in reset): fire_dist presented now, or entry 0 after the write presented now
     wire [W_DIST-1:0] thr_st = i_arr_en ? ((i_arr_we && i_arr_addr == 6'd0) ? i_arr_data : entry0_q)
@@ -455,7 +472,9 @@ module pso (
     wire [LH-1:0]    yhi    = {{(2*LH-W_INCR){1'b0}}, b_y_q[W_INCR-1:LH]};
     wire [LH:0]      sf_lo  = {1'b0, u_lo_q} + {1'b0, opf[LH-1:0]};
     wire [LH-1:0]    sf_hi  = hi_add(u_hi_q, opf[W_REM-1:LH], u_c_q);
-    wire             sf_ao  = ones_lo(u_hi_q[LH-2:0], opf[W_REM-2:LH], u_c_q);
+    wire             sf_ao0 = ones_lo(u_hi_q[LH-2:0], b_opf0_q[W_REM-2:LH], u_c_q);   // (both
+    wire             sf_ao1 = ones_lo(u_hi_q[LH-2:0], b_opf1_q[W_REM-2:LH], u_c_q);   //  candidates)
+    wire             sf_ao  = adv_q ? sf_ao1 : sf_ao0;
     wire [LH:0]      sn_lo  = {1'b0, u_lo_q} + {1'b0, b_y_q[LH-1:0]};
     wire [LH-1:0]    sn_hi  = hi_add(u_hi_q, yhi, u_c_q);
     wire             sn_ao  = ones_lo(u_hi_q[LH-2:0], yhi[LH-2:0], u_c_q);
@@ -463,10 +482,10 @@ module pso (
     // u resolved for dist (B3): hi + c, beside the loop
     wire [LH-1:0]    u_hic  = u_hi_q + {{(LH-1){1'b0}}, u_c_q};
     // The index moves to next(idx) (idx_l .. nx4_l above); idx is the last entry iff
-    // next(idx) = 0.
-    wire             last   = (nx_l == 7'd0);
-    wire             adv_c  = arr_en_q && !(last && !arr_wrap_q);
-    wire             done_c = arr_en_q && last && !arr_wrap_q;
+    // next(idx) = 0: "a fire here ends the array" is formed a call ahead for both index moves
+    // (stop0, stop1, registers) and picked as the index is
+    wire             done_c = adv_q ? stop1_q : stop0_q;
+    wire             adv_c  = arr_en_q && !done_c;
     wire             adv    = dec && adv_c;
     wire             done_d = done_q || (dec && done_c);
     wire             take   = b_v_q && pos && !done_q && !done_c;   // a fire (or the run start)
@@ -476,6 +495,11 @@ module pso (
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
     wire [6:0]       nx4_0  = (i_arr_len > 7'd4) ? 7'd4 : (i_arr_len == 7'd3) ? 7'd1 : 7'd0;
+    // stop0 / stop1 of the next call: the latched modes (or the ones in force in the next call
+    // when it starts a run) and next(idx) = 0 for the index registers written now
+    wire             stop_m = run_q ? (arr_en_q && !arr_wrap_q) : (f_arr_en_q && !f_arr_wrap_q);
+    wire             stop0_d = stop_m && (nx_l == 7'd0);
+    wire             stop1_d = stop_m && (nx2_l == 7'd0);
 
     // ---- stage B3: the decision of the last call (registers only) ------------------------------
     wire             fire   = c_fire_q;
@@ -507,7 +531,11 @@ module pso (
     wire [16:0]      pi_hi0    = {1'b0, ph_q[31:16]} + {1'b0, i_ps_inc[31:16]};
     wire [17:0]      pi_hi1    = {1'b0, ph_q[31:16], 1'b1} + {1'b0, i_ps_inc[31:16], 1'b1};
     wire [W_INC:0]   ph_in     = {pi_lo[16] ? pi_hi1[17:1] : pi_hi0, pi_lo[15:0]};   // ph + i_ps_inc
-    wire [W_INC:0]   ph_max    = {1'b0, ph_q} + {1'b0, INC_MAX};
+    // ph + INC_MAX likewise in 16-bit halves (carry-select)
+    wire [16:0]      pm_lo     = {1'b0, ph_q[15:0]} + {1'b0, INC_MAX[15:0]};
+    wire [16:0]      pm_hi0    = {1'b0, ph_q[31:16]} + {1'b0, INC_MAX[31:16]};
+    wire [17:0]      pm_hi1    = {1'b0, ph_q[31:16], 1'b1} + {1'b0, INC_MAX[31:16], 1'b1};
+    wire [W_INC:0]   ph_max    = {pm_lo[16] ? pm_hi1[17:1] : pm_hi0, pm_lo[15:0]};
     wire [W_INC:0]   ph_sum    = over ? ph_max : ph_in;
     wire             ps_pulse  = ps_e && ph_sum[W_INC];
     wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
@@ -772,6 +800,8 @@ module pso (
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
             nx4_p_q <= i_rst ? 7'd0 : nx4_0;
+            stop0_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx_0 == 7'd0);
+            stop1_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx2_0 == 7'd0);
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             since_q <= {W_GAP{1'b1}};
@@ -852,6 +882,8 @@ module pso (
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
             nx4_p_q <= nx4_l;
+            stop0_q <= stop0_d;
+            stop1_q <= stop1_d;
             done_q <= done_d;
             // B3
             if (c_live_q) dist_q <= dist_n;
