@@ -537,7 +537,11 @@ module pso (
     wire [17:0]      pm_hi1    = {1'b0, ph_q[31:16], 1'b1} + {1'b0, INC_MAX[31:16], 1'b1};
     wire [W_INC:0]   ph_max    = {pm_lo[16] ? pm_hi1[17:1] : pm_hi0, pm_lo[15:0]};
     wire [W_INC:0]   ph_sum    = over ? ph_max : ph_in;
-    wire             ps_pulse  = ps_e && ph_sum[W_INC];
+    // the carries alone (each a pick of two chain outputs by the low half's carry), so that the
+    // pulse is one gate after them
+    wire             c_in      = pi_lo[16] ? pi_hi1[17] : pi_hi0[16];
+    wire             c_max     = pm_lo[16] ? pm_hi1[17] : pm_hi0[16];
+    wire             ps_pulse  = ps_e && (over ? c_max : c_in);
     wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
     wire signed [W_POS-1:0] ps_cnt1  = ps_cnt_q + 38'sd1;
     // (written as a toggle mask, so that the pulse is a data input of each bit's gate rather
