@@ -29,7 +29,7 @@
 // removes the staircase over-estimate of diagonal moves (see the document for figures).
 //
 // Widths (all derived from the primaries in pso_cfg): distances Q24.32 (56 bits unsigned),
-// remainder 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
+// u (value - thr) and dist 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
 // (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
 // stage; the configuration check is formed on the presented values and registered).
 // Latency: a step at call t can fire at call t+5 (FIRE_LAT; the fire/emit/pulse

@@ -51,7 +51,7 @@
 // tracking state is in reset, with the start threshold of a run beginning in the next call
 // (fire_dist presented, or entry 0 from a copy register, entry0, with the presented write).
 //
-// Widths (pso_cfg): distances Q24.32 (56 unsigned), remainder and dist 58 signed, chord 37,
+// Widths (pso_cfg): distances Q24.32 (56 unsigned), u (value - thr) and dist 58 signed, chord 37,
 // x / y 38, travel 6 signed, K 5, positions 38 signed, part-speed rate Q0.32, pulse width and
 // laser minimum period 16, fire counter 32 (wraps), overlap counter 16 (saturates).
 `timescale 1ns / 1ps
@@ -113,7 +113,7 @@ module pso (
     // ---- fixed widths (hls: pso_cfg) ---------------------------------------------------------
     localparam integer D_FRAC   = 32;   // fraction bits of every distance
     localparam integer W_DIST   = 56;   // Q24.32 unsigned
-    localparam integer W_REM    = 58;   // remainder, signed
+    localparam integer W_REM    = 58;   // u (value - thr) and dist, signed
     localparam integer K_MAX    = 16;   // longest tracking window
     localparam integer W_K      = 5;
     localparam integer S_MAX    = 768;  // 3 K_MAX^2
