@@ -373,7 +373,7 @@ public:
         // ---- stage R: chord ROM read at the address stage A wrote, the estimate step ----
         const uint64_t chord = pso_chord(a_s_).to_uint64();
         const uint64_t one = a_pulse_ ? cfg::ONE : 0;
-        // Y = est - est of the previous entry: the new chord (plus a generator pulse), less the
+        // Y = est - est of the previous entry: this entry's chord (plus a generator pulse), less the
         // open chord it extends (a reversal closed that one, a K close left none); >= 0
         r_y_ = chord + one - (a_rev_ ? uint64_t(0) : part_.to_uint64());
         part_ = a_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
