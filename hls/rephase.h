@@ -329,9 +329,9 @@ private:
         out_pos_ = out_pos_ + ostep;
 
         // 6. reference mark: u = dir * (paced - B) from homing on, mark = u in [0, L]
-        // (the test for a count is the register of the previous call, mp / mn: u and L do not
-        // change in the call before a count; without a count the mark register itself, which in
-        // stage 3 is the test of u)
+        // (the test for a count is made on u and L of the previous call, mt_u / mt_len: they do
+        // not change in the call before a count; rtl_ref/ registers that test, mp_q / mn_q.
+        // Without a count it is the mark register itself, which in stage 3 is the test of u)
         const bool in_rng = s > 0   ? (mt_u_ >= -1 && mt_u_ < pos_t(mt_len_))
                             : s < 0 ? (mt_u_ >= 1 && mt_u_ <= pos_t(pos_t(mt_len_) + 1))
                                     : mark_;
