@@ -49,10 +49,12 @@ module input_filter #(
     // the stability counter cnt of hls/input_filter.h is kept as cnt + 2 (c2, W_CNT + 1 bits:
     // cnt < max(N,1) <= 2^W_CNT - 1, so cnt + 2 <= 2^W_CNT), the value the pass compare needs
     reg [W_CNT:0]   c2_q;
+    reg             cnz_q;      // c2 != 2 (cnt != 0), kept beside c2 so the glitch test is one LUT
     reg [1:0]       fill_q;
 
     reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d, take_d;
     reg [W_CNT:0]   c2_d;
+    reg             cnz_d;
     reg [1:0]       fill_d;
 
     // Pass decision of the next edge (DESIGN 4.1 `ready`), with this edge's N: cnt' + 1 >= max(N,1).
@@ -69,8 +71,9 @@ module input_filter #(
         s2_d     = s1_q;
         valid_d  = valid_q;
         c2_d     = c2_q;
+        cnz_d    = cnz_q;
         fill_d   = fill_q;
-        glitch_d = valid_q && (s2_q == f_q) && (c2_q != C2_ZERO);
+        glitch_d = valid_q && (s2_q == f_q) && cnz_q;
         if (!valid_q) begin
             if (fill_q == 2'd2) begin
                 valid_d = 1'b1;          // first sample: f loaded (take), not filtered
@@ -78,11 +81,14 @@ module input_filter #(
                 fill_d = fill_q + 2'd1;
             end
         end else if (s2_q == f_q) begin
-            c2_d = C2_ZERO;
+            c2_d  = C2_ZERO;
+            cnz_d = 1'b0;
         end else if (ready_q) begin
-            c2_d = C2_ZERO;              // f loaded (take)
+            c2_d  = C2_ZERO;             // f loaded (take)
+            cnz_d = 1'b0;
         end else begin
-            c2_d = c2_q + 1'b1;          // cnt + 1 < max(N(t-1),1) <= 2^W_CNT - 1: fits
+            c2_d  = c2_q + 1'b1;         // cnt + 1 < max(N(t-1),1) <= 2^W_CNT - 1: fits
+            cnz_d = 1'b1;                // c2 >= 2, so c2 + 1 >= 3
         end
         ready_d = (valid_q && s2_q != f_q && !ready_q) ? rdy_inc : rdy_0;
         // the branches above that load f, as one register: f_d is then take ? s2 : f (one LUT
@@ -101,6 +107,7 @@ module input_filter #(
             ready_q  <= 1'b0;
             take_q   <= 1'b0;
             c2_q     <= C2_ZERO;
+            cnz_q    <= 1'b0;
             fill_q   <= 2'd0;
         end else begin
             s1_q     <= s1_d;
@@ -111,6 +118,7 @@ module input_filter #(
             ready_q  <= ready_d;
             take_q   <= take_d;
             c2_q     <= c2_d;
+            cnz_q    <= cnz_d;
             fill_q   <= fill_d;
         end
     end
@@ -135,6 +143,7 @@ module input_filter #(
     always @* if (f_init_if) begin
         assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
         assert(c2_q >= C2_ZERO && c2_q <= C2_MAX);
+        assert(cnz_q == (c2_q != C2_ZERO));
         if (!valid_q) assert(c2_q == C2_ZERO);
         if (!ready_q) assert(c2_q < C2_MAX);
     end

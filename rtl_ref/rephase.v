@@ -116,6 +116,7 @@ module rephase (
     (* keep *) reg [1:0]   us_q;               // {s_neg, s_pos || s_neg}: the step of u
     (* keep *) reg [1:0]   as_q;               // the step of adj: sgn(lag) when pstep == 0
     reg                    op_one_q, op_zero_q; // out_pos's low half is all ones / zero
+    reg                    pa_ones_q, pa_zero_q, pa_one_q; // paced's low half is all ones / 0 / 1
     (* keep *) reg         bw_c_q, bw_z_q;     // !fwd_q, copies for the C and Z adds
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
     reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
@@ -282,6 +283,30 @@ module rephase (
     // and +1, zero and 0, ...01 and -1
     wire op_one_n  = osu_q ? (op_h1 && !op_b0) : osd_q ? (op_h0 && !op_b0) : (op_h1 && op_b0);
     wire op_zero_n = osu_q ? (op_h1 && op_b0) : osd_q ? (op_h0 && op_b0) : (op_h0 && !op_b0);
+    // the paced counter adds the late pstep itself (s in -2..1), as pos_step does, but the low
+    // half's wrap tests are registers (pa_ones_q: all ones, pa_zero_q: 0, pa_one_q: 1), formed
+    // in the call before from equalities of the register and the step of that call, so the late
+    // step meets them in one LUT in front of the high half's select: up at all ones with +1,
+    // down at 0 with -1 or -2, and at 1 with -2. Equal to pos_step(paced, pstep) for every s.
+    wire [W_LO-1:0]         pa_lo  = paced_q[W_LO-1:0] + {{(W_LO-2){i_pstep[1]}}, i_pstep};
+    wire [W_POS-W_LO-1:0]   pa_hi  = paced_q[W_POS-1:W_LO];
+    wire                    pa_up  = i_pstep == 2'sd1 && pa_ones_q;
+    wire                    pa_dn  = i_pstep[1] && (pa_zero_q || (!i_pstep[0] && pa_one_q));
+    wire signed [W_POS-1:0] paced_nx = {pa_up ? pa_hi + 1'b1 : pa_dn ? pa_hi - 1'b1 : pa_hi, pa_lo};
+    // equalities of the low half: bits [W_LO-1:2] all ones / zero, then the two low bits
+    wire                    pa_h1  = paced_q[W_LO-1:2] == {(W_LO-2){1'b1}};
+    wire                    pa_h0  = paced_q[W_LO-1:2] == {(W_LO-2){1'b0}};
+    wire [1:0]              pa_b   = paced_q[1:0];
+    // the next low half (low + s) is all ones: low = ones - s; zero: low = -s; one: low = 1 - s
+    reg                     pa_ones_n, pa_zero_n, pa_one_n;
+    always @* begin
+        case (i_pstep)
+            2'sd0:   begin pa_ones_n = pa_h1 && pa_b == 2'd3; pa_zero_n = pa_h0 && pa_b == 2'd0; pa_one_n = pa_h0 && pa_b == 2'd1; end
+            2'sd1:   begin pa_ones_n = pa_h1 && pa_b == 2'd2; pa_zero_n = pa_h1 && pa_b == 2'd3; pa_one_n = pa_h0 && pa_b == 2'd0; end
+            -2'sd1:  begin pa_ones_n = pa_h0 && pa_b == 2'd0; pa_zero_n = pa_h0 && pa_b == 2'd1; pa_one_n = pa_h0 && pa_b == 2'd2; end
+            default: begin pa_ones_n = pa_h0 && pa_b == 2'd1; pa_zero_n = pa_h0 && pa_b == 2'd2; pa_one_n = pa_h0 && pa_b == 2'd3; end
+        endcase
+    end
     // the steps of adj and u from their own registers (sign-extended)
     wire signed [W_POS-1:0] adj_st = {{(W_POS-1){as_q[1]}}, as_q[0]};
     wire signed [W_POS-1:0] u_st   = {{(W_POS-1){us_q[1]}}, us_q[0]};
@@ -361,7 +386,7 @@ module rephase (
         first_d    = 1'b0;
 
         // 1. taps
-        paced_d    = pos_step(paced_q, i_pstep);
+        paced_d    = paced_nx;
         fwd_last_d = pz ? fwd_last_q : pfwd;
         // 3. phase
         w_d        = w_n;
@@ -400,16 +425,17 @@ module rephase (
                 dnew_d  = 1'b1;
             end
         end else if (stage_q == 2'd2) begin
-            if (tr_back) begin
-                stage_d = 2'd1;                                 // back past A
-            end else if (homing) begin
-                stage_d = 2'd3;
-                b_d     = bs_q;
-                c_d     = c_hom;
-                z_d     = z_hom;
-                len_d   = i_mark_len;
-                len1_d  = {1'b0, i_mark_len} + 1'b1;
-            end
+            if (homing)       stage_d = 2'd3;
+            else if (tr_back) stage_d = 2'd1;                   // back past A
+        end
+        // the homing count (hom_q: stage 2, no leave, a count up from tr = P - 1, so never
+        // the step back past A) loads B, C, Z and L: their enable is the flip-flop itself
+        if (homing) begin
+            b_d     = bs_q;
+            c_d     = c_hom;
+            z_d     = z_hom;
+            len_d   = i_mark_len;
+            len1_d  = {1'b0, i_mark_len} + 1'b1;
         end
         // tr' > 0 without a compare after the tr add (tr >= 0 always: the step back past A
         // leaves with tr' = 0): 0 at A and on that step; +1 gives tr' >= 1; -1 gives tr' > 0 iff
@@ -417,7 +443,7 @@ module rephase (
         if (stage_q == 2'd1)      tr_pos_d = 1'b0;
         else if (stage_q == 2'd2) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
         else                      tr_pos_d = tr_pos_q;
-        if (dnew_q) d_d = d_cur;
+        if (dnew_q) d_d = d_new;      // (= d_cur there: the sum straight into the register)
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
         bs_d      = bs_nx;
         // at_last' = (tr' == P - 1), from the case that formed tr'
@@ -460,6 +486,9 @@ module rephase (
             out_pos_q  <= {W_POS{1'b0}};
             op_one_q   <= 1'b0;
             op_zero_q  <= 1'b1;
+            pa_ones_q  <= 1'b0;
+            pa_zero_q  <= 1'b1;
+            pa_one_q   <= 1'b0;
             adj_q      <= {W_POS{1'b0}};
             fwd_last_q <= 1'b1;
             sw_prev_q  <= 1'b0;
@@ -506,6 +535,9 @@ module rephase (
             out_pos_q  <= out_pos_d;
             op_one_q   <= op_one_n;
             op_zero_q  <= op_zero_n;
+            pa_ones_q  <= pa_ones_n;
+            pa_zero_q  <= pa_zero_n;
+            pa_one_q   <= pa_one_n;
             adj_q      <= adj_d;
             fwd_last_q <= fwd_last_d;
             sw_prev_q  <= i_sw;
@@ -793,6 +825,10 @@ module rephase (
             if (!f_pnz) assert(mp_q == (u_q >= -38'sd1 && u_q < f_lq) && mn_q == (u_q >= 38'sd1 && u_q <= f_lq + 38'sd1));
             assert(op_one_q == (out_pos_q[W_LO-1:0] == {W_LO{1'b1}}) &&
                    op_zero_q == (out_pos_q[W_LO-1:0] == {W_LO{1'b0}}));
+            assert(pa_ones_q == (paced_q[W_LO-1:0] == {W_LO{1'b1}}) &&
+                   pa_zero_q == (paced_q[W_LO-1:0] == {W_LO{1'b0}}) &&
+                   pa_one_q == (paced_q[W_LO-1:0] == {{(W_LO-1){1'b0}}, 1'b1}));
+            assert(paced_nx == pos_step(paced_q, i_pstep));
             assert(ostep_q != -2'sd2);
             assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
             // the per-pstep forms of the extra-count test are the test itself
