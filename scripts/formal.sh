@@ -164,6 +164,8 @@ MUTATIONS=(
   "rep_mark_len|rephase.v|rephase|s/wire        mp_n   = u_m1 || (u_hz \&\& u_lt);/wire        mp_n   = u_m1 || (u_hz \&\& u_le1);/"
   "rep_hom_lv|rephase.v|rephase|s/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !(i_unhome_nx || i_rehome_nx)/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !i_unhome_nx/"
   "rep_mark_hold|rephase.v|rephase|s/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mark_q;/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mp_q;/"
+  "rep_paced_wrap|rephase.v|rephase|s/pa_zero_n = pa_h1 \&\& pa_b == 2'd3;/pa_zero_n = pa_h1 \&\& pa_b == 2'd2;/"
+  "if_glitch_flag|input_filter.v|quad_decoder|s/cnz_d = 1'b1; /cnz_d = 1'b0; /"
   "rep_back_a|rephase.v|rephase|s/wire        tr_back  = (s_neg \&\& tr_is0)/wire        tr_back  = (s_neg \&\& tr_is0 \&\& 1'b0)/"
   "rep_snx_fwd|rephase.v|rephase|s/(!i_pstep_nx\[1\] == (i_rst || fwd_d))/(!i_pstep_nx[1] == (i_rst || fwd_q))/"
   "rep_extra_lost|rephase.v|rephase|s/adj_d     = adj_q + adj_st;/adj_d     = adj_q;/"
