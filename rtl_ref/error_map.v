@@ -356,18 +356,26 @@ module error_map (
     reg signed [W_ME-1:0]   m_e;
     reg                     m_act, m_inr, m_err;
     wire [4:0]              m_j    = ph - (PH_LOAD + 5'd1);    // step index (mod 32)
-    wire                    m_step = m_j < N_STEP;
+    // M's two enables (load, step) are flip-flops, decoded in the call before from the next
+    // phase, so the enables of its ~70 flip-flops do not wait for a phase subtract and compare
+    wire [4:0]              ph_nx  = i_rst ? 5'd0 : ph + 5'd1;
+    wire [4:0]              m_j_nx = ph_nx - (PH_LOAD + 5'd1);
+    reg                     m_ld_q, m_step_q;                  // ph == PH_LOAD, m_j < N_STEP
+    always @(posedge i_clk) begin
+        m_ld_q   <= ph_nx == PH_LOAD;
+        m_step_q <= m_j_nx < N_STEP;
+    end
     wire signed [W_MHI-1:0] m_add  = m_v[0] ? {m_diff[W_DIFF-1], m_diff} : {W_MHI{1'b0}};
     wire signed [W_MHI-1:0] m_s    = m_hi + m_add;
     always @(posedge i_clk) begin
-        if (ph == PH_LOAD) begin
+        if (m_ld_q) begin
             m_hi   <= {W_MHI{1'b0}};
             m_b    <= 1'b0;
             m_v    <= d_v;
             m_diff <= {d_o[W_CORR-1], d_o} - {d_e[W_CORR-1], d_e};
             m_e    <= {d_e[W_CORR-1], d_e} + {{(W_ME-F){1'b0}}, 1'b1, {(F-1){1'b0}}};
             m_inr  <= d_inr;
-        end else if (m_step) begin
+        end else if (m_step_q) begin
             m_hi   <= m_s >>> 1;
             m_b    <= m_s[0];
             m_v    <= m_v >> 1;
@@ -375,7 +383,7 @@ module error_map (
         if (i_rst) begin
             m_act <= 1'b0;
             m_err <= 1'b0;
-        end else if (ph == PH_LOAD) begin
+        end else if (m_ld_q) begin
             m_act <= d_act;
             m_err <= d_err;
         end
@@ -461,6 +469,7 @@ module error_map (
             assert(f_sum + {{(24-W_CDELTA){delta_q[W_CDELTA-1]}}, delta_q} == {{(24-W_C){corr_q[W_C-1]}}, corr_q});
             // 2. (and its helper: the stage-G value reaches corr one call after it is formed)
             if (ph != PH_G + 5'd1) assert(g_corr == corr_q);
+            assert(m_ld_q == (ph == PH_LOAD) && m_step_q == (m_j < N_STEP));  // the decoded enables
             if (ph != PH_G + 5'd2) assert(delta_q == {W_CDELTA{1'b0}});
             // 3.
             if (f_off >= 7'd82) assert(corr_q == {W_C{1'b0}} && delta_q == {W_CDELTA{1'b0}} && !active_oq);
