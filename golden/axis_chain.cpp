@@ -28,10 +28,12 @@ void axis_chain::reset() {
     const int64_t keep_offset = offset_held_;
     error_map keep_map = std::move(emap_);  // the map tables are RAM, not reset
     const axis_regs keep_regs = in_force_;  // the register stage is not chain state
+    const bool keep_tbl_we = prev_tbl_we_;
     const bool keep_powered = powered_;
     dds_sincos keep_dds = std::move(dds_);  // keeps its memo of the codes (a pure function)
     *this = axis_chain{};
     in_force_ = keep_regs;
+    prev_tbl_we_ = keep_tbl_we;
     powered_ = keep_powered;
     emap_ = std::move(keep_map);
     emap_.reset();
@@ -47,6 +49,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
     // DESIGN 4.7 register stage: this call runs on the registers presented in the previous call
     // (in_force_, read in place); the registers presented now are in force from the next call
     const axis_out o = run(pins);
+    prev_tbl_we_ = in_force_.tbl_we;  // 0 after the power-up call (no registers in force)
     in_force_ = presented;
     return o;
 }
@@ -69,7 +72,8 @@ axis_out axis_chain::run(const axis_pins& pins) {
     // DESIGN 4.7: a change of the period register between two running calls is a
     // reconfiguration: the call in which the new value appears is a safe-state call.
     const bool period_changed = was_running_ && regs.period != last_period_;
-    const bool running = config_ok(regs) && ratio_held_ != 0 && !period_changed;
+    // DESIGN 4.6 / 4.7: the call after a table write is a safe-state call too
+    const bool running = config_ok(regs) && !prev_tbl_we_ && ratio_held_ != 0 && !period_changed;
     last_period_ = regs.period;
     was_running_ = running;
     if (!running) {

@@ -84,7 +84,8 @@ struct axis_out {
 
 // DESIGN 4.7: 8 <= P <= 4096, P % 8 == 0, ratio != 0, 2 <= pace_m, 12 <= dac_width <= 18,
 // 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P, tbl_we == 0,
-// min_spacing > max(glitch_n, 1) (count integrity, DESIGN 4.2).
+// min_spacing > max(glitch_n, 1) (count integrity, DESIGN 4.2). (The chain also holds the safe
+// state in the call after one with tbl_we = 1: that needs the previous call, see axis_chain.)
 bool config_ok(const axis_regs& r);
 
 class axis_chain {
@@ -122,6 +123,7 @@ private:
     // DESIGN 4.7 register stage: the registers presented in a call are in force in the next one;
     // the first call after power-up has none in force (power-up call). Not part of reset().
     axis_regs in_force_{};
+    bool prev_tbl_we_ = false;   // tbl_we in force in the previous call (DESIGN 4.6, 4.7)
     bool powered_ = false;
 };
 

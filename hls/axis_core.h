@@ -204,6 +204,7 @@ public:
             safe_out(false);  // power-up call: no registers in force, every block in reset
             powered_ = true;
         }
+        tblw_q_ = regs_q_.tbl_we;  // the table write in force in this call (false in the power-up call)
         // the register load and its check; skipped when the presented block is the one in force
         // (same bytes: same values, so the same check; the C-simulation shortcut above)
         same_q_ = LASERAX_REGS_SAME(presented, regs_q_);
@@ -242,7 +243,9 @@ private:
             // state). Coming out of reset or of an invalid configuration the blocks are already
             // reset.
             const bool period_changed = run_q_ && regs.period != period_q_;
-            const bool ok = chk_q_.ok && ratio_h_ != 0 && !period_changed;
+            // (a table write in force in the previous call holds the safe state one more call,
+            // DESIGN §4.6: no running call reads a word in the call of its write or the next)
+            const bool ok = chk_q_.ok && !tblw_q_ && ratio_h_ != 0 && !period_changed;
             period_q_ = regs.period;
             run_q_ = ok;
             if (!ok) {
@@ -358,6 +361,7 @@ private:
     };
     reg_check chk_q_ = check(axis_regs{});
     bool powered_ = false;            // false until the power-up call
+    bool tblw_q_ = false;             // tbl_we in force in the previous call (DESIGN §4.6, §4.7)
     bool same_q_ = false;  // regs_q_ holds the block in force in the previous call too (not reloaded)
 
     static reg_check check(const axis_regs& r) {

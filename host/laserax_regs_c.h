@@ -118,7 +118,7 @@
 #define LASERAX_REG_CLEAR_WORDS 1
 #define LASERAX_REG_CLEAR_SIGNED 0
 #define LASERAX_REG_CLEAR_RESET 0LL
-/* tbl_we: quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1; each such clock is in the safe state (cfg_err: DESIGN 4.6), so load the table while tbl_period != period. Bad value: a write while running puts that clock in the safe state (cfg_err, the chain restarts un-homed); the table is never changed under a running chain without a flag */
+/* tbl_we: quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1; each such clock and the clock after it are in the safe state (cfg_err: DESIGN 4.6), so load the table while tbl_period != period. Bad value: a write while running puts that clock and the next in the safe state (cfg_err, the chain restarts un-homed); the table is never changed under a running chain without a flag */
 #define LASERAX_REG_TBL_WE_OFFSET 0x90u
 #define LASERAX_REG_TBL_WE_WIDTH 1
 #define LASERAX_REG_TBL_WE_WORDS 1

@@ -145,7 +145,7 @@ inline constexpr reg_info kRegs[kNumRegs] = {
     {"clear", 0x88, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "clear", "clear",
      "clears the sticky flags illegal_st / ovs_edge_st / ovs_backlog_st / glitch_st / lerr_alarm and err_cnt (an event in the same clock wins). Bad value: held at 1, the flags are cleared every clock but every event still sets its flag in its own clock (never hidden)"},
     {"tbl_we", 0x90, 1, false, 0LL, access::port, "-", false, 0LL, 0LL, 1LL, check::cfg, "", "tbl_we", "tbl_we",
-     "quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1; each such clock is in the safe state (cfg_err: DESIGN 4.6), so load the table while tbl_period != period. Bad value: a write while running puts that clock in the safe state (cfg_err, the chain restarts un-homed); the table is never changed under a running chain without a flag"},
+     "quarter-wave table write enable: writes tbl_data to tbl_addr in every clock while 1; each such clock and the clock after it are in the safe state (cfg_err: DESIGN 4.6), so load the table while tbl_period != period. Bad value: a write while running puts that clock and the next in the safe state (cfg_err, the chain restarts un-homed); the table is never changed under a running chain without a flag"},
     {"tbl_addr", 0x98, 10, false, 0LL, access::port, "table words", true, 0LL, 1023LL, 1LL, check::none, "", "tbl_addr", "",
      "quarter-wave table address 0 .. P/4-1. Bad value: an address >= P/4 writes a word the current period does not read"},
     {"tbl_data", 0xA0, 17, false, 0LL, access::port, "DAC codes", true, 0LL, 131071LL, 1LL, check::none, "", "tbl_data", "",

@@ -38,7 +38,14 @@ module dds_sincos #(
     // INIT_FILE: $readmemh image of the table RAM at configuration time (1024 words of 17 bits,
     // the P = 256 / amp = 32767 table written by `lutgen --hex` or `laserax vectors`).
     // Must not be empty.
-    parameter INIT_FILE = "dds_table_p256.hex"
+    parameter INIT_FILE = "dds_table_p256.hex",
+    // WRITE_BYPASS: 1 (default, the block of hls/dds_sincos.h): a table write and the step in one
+    // call, and a read of a word written in this or the previous call, see the new word (the RAM
+    // is read-first; muxes on the read data). 0: no bypass, for a parent that never reads a word
+    // in the call of its write or the call after it (laserax_top: the call of a write and the
+    // next are safe-state calls, DESIGN 4.6), which saves the muxes and the delayed write port.
+    // Legal values 0, 1.
+    parameter integer WRITE_BYPASS = 1
 ) (
     input  wire               i_clk,
     input  wire               i_rst,        // synchronous, active high: dds_sincos::reset()
@@ -82,6 +89,9 @@ module dds_sincos #(
     generate
         if (INIT_FILE == "") begin : g_bad_init_file
             dds_sincos_PARAMETER_INIT_FILE_must_not_be_empty u_param_error ();
+        end
+        if (WRITE_BYPASS != 0 && WRITE_BYPASS != 1) begin : g_bad_write_bypass
+            dds_sincos_PARAMETER_WRITE_BYPASS_must_be_0_or_1 u_param_error ();
         end
     endgenerate
 
@@ -171,8 +181,8 @@ module dds_sincos #(
     wire             wn_mir = i_tbl_we && i_tbl_addr == a_mir_q;
     wire             wp_dir = wp_we_q && wp_addr_q == a_dir_q;     // a write of the previous edge
     wire             wp_mir = wp_we_q && wp_addr_q == a_mir_q;
-    wire [W_TBL-1:0] w_dir  = wn_dir ? i_tbl_data : (wp_dir ? wp_data_q : t_dir_q);
-    wire [W_TBL-1:0] w_mir  = wn_mir ? i_tbl_data : (wp_mir ? wp_data_q : t_mir_q);
+    wire [W_TBL-1:0] w_dir  = (WRITE_BYPASS == 0) ? t_dir_q : wn_dir ? i_tbl_data : (wp_dir ? wp_data_q : t_dir_q);
+    wire [W_TBL-1:0] w_mir  = (WRITE_BYPASS == 0) ? t_mir_q : wn_mir ? i_tbl_data : (wp_mir ? wp_data_q : t_mir_q);
 
     // ---- output stage: quadrant mapping of the read stage ----------------------------------------
     wire [W_DAC-1:0] t_dir = {1'b0, s1_dir_q};

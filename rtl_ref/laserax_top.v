@@ -21,7 +21,9 @@
 // period is first in force after a running call, every block is reset at the edge (the C++
 // axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz = ref_mark = 0, stage 1. A table
 // write (tbl_we = 1) fails the check, so it is made only in a safe-state edge, in which the DDS is
-// in reset (hls: dds_.write() only in the safe state of axis_core::step(); DESIGN 4.6).
+// in reset (hls: dds_.write() only in the safe state of axis_core::step(); DESIGN 4.6), and the
+// next call is a safe-state call too, so no running call reads a word in the call of its write or
+// the next one: the DDS is instantiated without its write bypass.
 //
 // i_rst (synchronous, active high) is the power-up state of the C++ object: the first edge after
 // it is the power-up call (blocks in reset, cfg_err = 0, no registers in force yet). The table
@@ -287,7 +289,9 @@ module laserax_top #(
     // (this call runs when !safe_q; r_period is the period in force in it)
     reg         safe_q;                               // this call is in the safe state
     reg         cfg_err_q, run_out_q;
-    wire        safe_next = !cfg_ok || (!safe_q && i_period != r_period);
+    // the call after a table write in force is a safe-state call too (DESIGN 4.6, 4.7): r_tbl_we
+    // is the write in force in this call (none in the power-up call)
+    wire        safe_next = !cfg_ok || (r_tbl_we && !pup_q) || (!safe_q && i_period != r_period);
     wire        blk_rst   = i_rst || safe_q;          // every block held in reset
     always @(posedge i_clk) begin
         if (i_rst) begin
@@ -384,7 +388,8 @@ module laserax_top #(
     wire [17:0]        dac_hi_d = r_dac_hi;
     wire signed [17:0] dds_sin, dds_cos;
     wire               dds_sin_over, dds_cos_over;   // |code| > dac_hi, registered with the codes
-    dds_sincos #(.INIT_FILE(INIT_FILE)) u_dds (
+    // no write bypass: a table write holds the safe state in its call and the next (DESIGN 4.6)
+    dds_sincos #(.INIT_FILE(INIT_FILE), .WRITE_BYPASS(0)) u_dds (
         .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period), .i_qtr_m1(r_qtr_m1),
         .i_amplitude(r_amplitude), .i_tbl_we(r_tbl_we), .i_tbl_addr(r_tbl_addr),
         .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos),

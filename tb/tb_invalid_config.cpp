@@ -7,6 +7,8 @@
 //   moving: cfg_err = 1, alarm = 1, sin = cos = 0, no mark, no A/B/Z, stage 1, hls == golden;
 //   after the register is restored the chain restarts from reset and tracks again.
 // * A period change while running costs exactly one safe-state call (and power-up none).
+// * A DDS table write presented while running holds the safe state in the call in which it is in
+//   force and in the next one, then the chain runs again (DESIGN 4.6, 4.7), in hls and golden.
 #include <functional>
 
 #include "tb/tb_util.h"
@@ -116,6 +118,39 @@ int main(int argc, char** argv) {
             if (t == 2002) res.check(!ax.hls().cfg_err, "period change: more than one safe-state call");
         }
         res.check(safe_calls == 1, "period change: " + std::to_string(safe_calls) + " safe-state calls (power-up must cost none)");
+    }
+    {  // a table write: safe state in the call it is in force and in the next one (DESIGN 4.6)
+        lxt::axis_settings s;
+        s.glitch_n = 0;
+        lx::axis_regs hr = lxt::to_hls(s);
+        golden::axis_regs gr = lxt::to_golden(s);
+        lx::axis_core core;
+        golden::axis_chain gold;
+        gold.reset();
+        int safe_h = 0, safe_g = 0;
+        for (int t = 0; t < 200; ++t) {
+            const bool we = t == 100;  // presented in call 100, in force in call 101
+            hr.tbl_we = gr.tbl_we = we;
+            hr.tbl_addr = 0;   // T[0] = 0 for every table: the write leaves the table as it is
+            hr.tbl_data = 0;
+            lx::axis_pins hp;
+            golden::axis_pins gp;
+            const lx::axis_out h = core.step(hp, hr);
+            const golden::axis_out g = gold.step(gp, gr);
+            if (t >= 99 && t <= 103) {
+                const bool want = t == 101 || t == 102;
+                res.expect(h.cfg_err == want && g.cfg_err == want, [&] {
+                    return "table write: call " + std::to_string(t) + " cfg_err hls " + std::to_string(h.cfg_err) +
+                           " golden " + std::to_string(g.cfg_err) + ", want " + std::to_string(want);
+                });
+            }
+            if (t > 1) {
+                safe_h += h.cfg_err;
+                safe_g += g.cfg_err;
+            }
+        }
+        res.check(safe_h == 2 && safe_g == 2, "table write: " + std::to_string(safe_h) + " / " + std::to_string(safe_g) +
+                                                  " safe-state calls (hls / golden), want 2");
     }
     return res.finish();
 }
