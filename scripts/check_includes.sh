@@ -8,6 +8,12 @@
 #       host/    the driver library a user links into controller software: may include only host/
 #                headers (quoted) and system headers — nothing from golden/, tools/, tb/, hls/,
 #                sysmodel/, rtl_ref/ or fuzz/;
+#       sysmodel/ system models and test glue above the IP models: quoted includes only from
+#                sysmodel/, hls/, golden/ and host/ (paths from the repo root) — nothing from
+#                tools/, tb/, rtl_ref/ or fuzz/;
+#       tools/   the laserax program and the other tools: quoted includes only from tools/,
+#                sysmodel/, hls/, golden/ and host/ (paths from the repo root) — nothing from
+#                tb/, rtl_ref/ or fuzz/;
 #       hls/     must not include anything from golden/, tb/ or tools/, and may include only
 #                hls/ headers, <cstdint>, <cstddef>, <climits>, <type_traits>, <utility> (compile-time
 #                std::index_sequence only) and the Vitis headers
@@ -38,7 +44,7 @@ for arg in "$@"; do
         --lint)     mode=lint ;;
         --all)      mode=all ;;
         --selftest) mode=selftest ;;
-        -h|--help)  sed -n '2,30p' "$0"; exit 0 ;;
+        -h|--help)  sed -n '2,36p' "$0"; exit 0 ;;
         -*)         echo "check_includes.sh: unknown option $arg" >&2; exit 2 ;;
         *)          root="$arg" ;;
     esac
@@ -99,6 +105,18 @@ function check_include(folder, t, quoted,   base) {
         if (!quoted) return
         if (t ~ /^host\/[^.\/][^\/]*$/) return
         report("include", "host/ may include only host/ headers (nothing from golden/, tools/, tb/, hls/, sysmodel/, rtl_ref/, fuzz/)")
+        return
+    }
+    if (folder == "sysmodel") {
+        if (!quoted) return
+        if (t ~ /^(sysmodel|hls|golden|host)\/[^.\/]/ && t !~ /\.\./) return
+        report("include", "sysmodel/ may include only sysmodel/, hls/, golden/, host/ headers (nothing from tools/, tb/, rtl_ref/, fuzz/)")
+        return
+    }
+    if (folder == "tools") {
+        if (!quoted) return
+        if (t ~ /^(tools|sysmodel|hls|golden|host)\/[^.\/]/ && t !~ /\.\./) return
+        report("include", "tools/ may include only tools/, sysmodel/, hls/, golden/, host/ headers (nothing from tb/, rtl_ref/, fuzz/)")
         return
     }
     if (folder != "hls" || exempt) return
@@ -242,6 +260,21 @@ selftest() {
     expect includes fail host_relative  <<<'host/r.h|#include "../golden/g.h"'
     expect includes fail host_bare      <<<'host/r.h|#include "r2.h"'
     expect includes fail host_ifdef     <<<'host/r.h|#ifndef __SYNTHESIS__\n#include "golden/g.h"\n#endif'
+    expect includes pass sysmodel_clean <<<'sysmodel/s.cpp|#include "sysmodel/s.h"\n#include "hls/a.h"\n#include "golden/g.h"\n#include "host/r.h"\n#include <vector>\n// #include "tools/laserax/x.h" in a comment'
+    expect includes fail sysmodel_tools <<<'sysmodel/s.cpp|#include "tools/laserax/vectors.h"'
+    expect includes fail sysmodel_tb    <<<'sysmodel/s.h|#include "tb/tb_util.h"'
+    expect includes fail sysmodel_rtl   <<<'sysmodel/s.h|#include "rtl_ref/x.vh"'
+    expect includes fail sysmodel_fuzz  <<<'sysmodel/s.h|#include "fuzz/f.h"'
+    expect includes fail sysmodel_rel   <<<'sysmodel/s.h|#include "../tools/laserax/x.h"'
+    expect includes fail sysmodel_bare  <<<'sysmodel/s.h|#include "s2.h"'
+    expect includes fail sysmodel_ifdef <<<'sysmodel/s.h|#ifndef __SYNTHESIS__\n#include "tools/laserax/x.h"\n#endif'
+    expect includes pass tools_clean    <<<'tools/laserax/c.cpp|#include "tools/laserax/c.h"\n#include "sysmodel/s.h"\n#include "hls/a.h"\n#include "golden/g.h"\n#include "host/r.h"\n#include <cstdio>'
+    expect includes fail tools_tb       <<<'tools/laserax/c.cpp|#include "tb/tb_util.h"'
+    expect includes fail tools_tb_top   <<<'tools/bench.cpp|#include "tb/tb_util.h"'
+    expect includes fail tools_rtl      <<<'tools/lutgen.cpp|#include "rtl_ref/x.vh"'
+    expect includes fail tools_fuzz     <<<'tools/laserax/c.cpp|#include "fuzz/f.h"'
+    expect includes fail tools_rel      <<<'tools/laserax/c.cpp|#include "../../tb/tb_util.h"'
+    expect includes fail tools_bare     <<<'tools/laserax/c.cpp|#include "c.h"'
     expect includes fail golden_hls_ifn <<<'golden/g.h|#ifndef __SYNTHESIS__\n#include "hls/a.h"\n#endif'
     expect includes fail hls_golden     <<<'hls/a.h|#include "golden/g.h"'
     expect includes fail hls_tb         <<<'hls/a.h|#include "tb/x.h"'
@@ -282,9 +315,9 @@ selftest() {
 }
 
 case "$mode" in
-    includes) run_check includes include_rules golden hls host ;;
+    includes) run_check includes include_rules golden hls host sysmodel tools ;;
     lint)     run_check lint lint_hls hls ;;
-    all)      rc=0; run_check includes include_rules golden hls host || rc=1
+    all)      rc=0; run_check includes include_rules golden hls host sysmodel tools || rc=1
               run_check lint lint_hls hls || rc=1; exit "$rc" ;;
     selftest) selftest ;;
 esac
