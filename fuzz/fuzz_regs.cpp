@@ -1,5 +1,5 @@
 // fuzz_regs — libFuzzer target: register-write sequences interleaved with clocks, hls against
-// golden (lxt::dual_axis: lx::axis_core and golden::axis_chain stepped together and compared on
+// golden (lxt::dual_axis: lx::laserax_top and golden::laserax_top stepped together and compared on
 // every output and tap, plus the position-integrity invariants; the DDS table is reloaded when
 // the period or amplitude changes, as a host would).
 //

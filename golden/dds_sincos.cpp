@@ -93,7 +93,7 @@ dds_sincos::out dds_sincos::step(int ostep, int64_t period, int64_t amplitude) {
         c1_ = last_c_;
         ph_ = mod(ph_ + ostep, P);
     } else {
-        // invalid configuration (never reached through axis_chain): hold, no division by 0
+        // invalid configuration (never reached through laserax_top): hold, no division by 0
         s1_ = 0;
         c1_ = 0;
         ph_ = 0;

@@ -24,7 +24,7 @@
 // so the mirror address T[P/4 - r] of a call's codes is formed with the period of the previous
 // call (qtr_prev_), and so is the up count's wrap test r == P/4 - 1 (a registered flag in
 // rtl_ref: no compare with the period in front of the read address). The period only changes
-// through the safe state in axis_core (which resets this block), so this is visible only to a
+// through the safe state in laserax_top (which resets this block), so this is visible only to a
 // caller that changes the period of a running dds_sincos, as the rtl_ref stress vectors do.
 #ifndef LASERAX_HLS_DDS_SINCOS_H
 #define LASERAX_HLS_DDS_SINCOS_H

@@ -8,7 +8,7 @@
 
 #include <type_traits>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 
 namespace lx {
 namespace regmap {

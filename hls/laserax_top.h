@@ -1,44 +1,390 @@
-// laserax_top.h — declaration of the synthesis top (see laserax_top.cpp).
+// laserax_top.h — the single-axis chain: quad_decoder -> pulse_multiplier -> output_pacer ->
+// rephase -> dds_sincos, with the error_map beside the pacer input, plus the switch debounce,
+// the configuration check and the digital A/B/Z outputs (DESIGN §4.7, register map §5).
 //
-// GENERATED FILE - do not edit. Source: regmap/laserax_regs.csv. Command: /usr/bin/python3 scripts/gen_regmap.py
+// One call of step() is one clock. Between two blocks there is exactly one register stage: a
+// block consumes the outputs its upstream block returned at the previous call (held in out_, the
+// outputs of the previous call, and in the *_q members for those no output shows).
+// qa/qb/qz/ref_mark take the rephase outputs of three calls ago so that they change in the same
+// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1, DESIGN 4.7).
+//
+// A class rather than a free function so that a testbench (or a gantry model) can instantiate
+// several axes; hls/laserax_axil.cpp wraps one static instance as the synthesis top.
 #ifndef LASERAX_HLS_LASERAX_TOP_H
 #define LASERAX_HLS_LASERAX_TOP_H
 
-#include "hls/axis_core.h"
+#include "hls/axis_config.h"
+#include "hls/dds_sincos.h"
+#include "hls/error_map.h"
+#include "hls/input_filter.h"
+#include "hls/output_pacer.h"
+#include "hls/pulse_multiplier.h"
+#include "hls/quad_decoder.h"
+#include "hls/rephase.h"
 
-// Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
-// s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
-void laserax_top(bool a, bool b, bool sw, bool lerr,
-                 lx::uint<13> period,
-                 lx::uint<13> tbl_period,
-                 lx::uint<37> ratio,
-                 lx::sint<64> comp_offset,
-                 lx::uint<8> glitch_n,
-                 lx::uint<16> sw_debounce,
-                 lx::uint<16> min_spacing,
-                 lx::uint<16> pace_m,
-                 lx::uint<32> backlog_thr,
-                 lx::uint<13> mark_len,
-                 lx::uint<5> dac_width,
-                 lx::uint<18> amplitude,
-                 bool rehome,
-                 bool clear,
-                 bool tbl_we,
-                 lx::uint<10> tbl_addr,
-                 lx::uint<17> tbl_data,
-                 bool map_en,
-                 bool bank_sel,
-                 lx::sint<38> map_origin0,
-                 lx::uint<5> map_k0,
-                 lx::uint<11> map_n0,
-                 lx::sint<38> map_origin1,
-                 lx::uint<5> map_k1,
-                 lx::uint<11> map_n1,
-                 bool map_we,
-                 lx::uint<10> map_addr,
-                 lx::sint<24> map_data,
-                 bool comp_sync,
-                 bool comp_commit,
-                 lx::axis_out& out);
+// C simulation with the own integer back end: the register stage compares the presented block with
+// the one in force byte-wise (std::memcmp) to skip the reload and the configuration check when
+// nothing changed (issue 13: simulation speed; DESIGN §4.7). Synthesis and the vendor types take
+// the plain path (reload and check every call), which computes the same.
+#if !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && !defined(LASERAX_USE_AC_TYPES)
+#include <cstring>
+namespace lx {
+// Byte equality of two objects of a size that is a multiple of 16 (GCC / Clang: inline 16-byte
+// compares, b 16-byte aligned; std::memcmp elsewhere).
+template <typename T>
+inline bool same_bytes16(const T& a, const T& b) {
+#if defined(__GNUC__) || defined(__clang__)
+    static_assert(sizeof(T) % 16 == 0, "same_bytes16: size a multiple of 16");
+    typedef signed char v16 __attribute__((vector_size(16)));
+    const char* pa = reinterpret_cast<const char*>(&a);
+    const v16* pb = static_cast<const v16*>(__builtin_assume_aligned(&b, 16));  // b: 16-byte aligned
+    v16 eq = v16{} == v16{};  // all ones
+#pragma GCC unroll 16
+    for (unsigned i = 0; i < sizeof(T) / 16; ++i) {
+        v16 x;
+        std::memcpy(&x, pa + 16 * i, 16);
+        eq &= x == pb[i];
+    }
+    typedef long long v2 __attribute__((vector_size(16)));
+    const v2 w = reinterpret_cast<v2>(eq);
+    return (w[0] & w[1]) == -1;
+#else
+    return std::memcmp(&a, &b, sizeof(T)) == 0;
+#endif
+}
+}  // namespace lx
+#define LASERAX_REGS_SAME(a, b) (::lx::same_bytes16((a), (b)))
+#else
+#define LASERAX_REGS_SAME(a, b) false
+#endif
+
+namespace lx {
+
+struct laserax_top_cfg {
+    static constexpr int W_DEBOUNCE = 16;  // switch debounce length register
+    // Reset ratio: round(632.991 nm / 1.000271 / 78.125 nm * 2^32), i.e. one raw count of a
+    // HeNe wavelength in standard air, in output counts of 20 um / 256. Checked against the
+    // formula by tb/tb_axis_config.
+    static constexpr unsigned long long RATIO_DEFAULT = 34789620252ULL;
+    static constexpr int PERIOD_DEFAULT = 256;
+    static constexpr int AMP_DEFAULT = 32767;
+    using debounce_t = uint<W_DEBOUNCE>;
+    using dacw_t = uint<axis_widths::W_DACW>;
+};
+
+// s_axilite register block (docs/REGISTERS.md, from regmap/laserax_regs.csv). Reset values are
+// the defaults below; they must equal the CSV's reset column (checked by tb_regmap).
+struct axis_regs {
+    period_t period = laserax_top_cfg::PERIOD_DEFAULT;
+    ratio_t ratio = laserax_top_cfg::RATIO_DEFAULT;
+    offset_t comp_offset = 0;  // Q32.32 output counts added to N * R (thermal origin, K168)
+    // Commit of the wide compensation registers (DESIGN §4.7): with comp_sync = 0 ratio and
+    // comp_offset act in the call they are written; with comp_sync = 1 only in a call with
+    // comp_commit = 1 (a bus host writes the words, then pulses comp_commit: no torn value).
+    bool comp_sync = false;
+    bool comp_commit = false;
+    quad_decoder_cfg::glitch_t glitch_n = 2;
+    laserax_top_cfg::debounce_t sw_debounce = 16;
+    quad_decoder_cfg::spacing_t min_spacing = 8;
+    output_pacer_cfg::pace_t pace_m = 4;
+    output_pacer_cfg::thr_t backlog_thr = 4096;
+    period_t mark_len = laserax_top_cfg::PERIOD_DEFAULT / 4;
+    laserax_top_cfg::dacw_t dac_width = 16;
+    dds_sincos_cfg::amp_t amplitude = laserax_top_cfg::AMP_DEFAULT;
+    period_t tbl_period = laserax_top_cfg::PERIOD_DEFAULT;
+    bool rehome = false;
+    bool clear = false;
+    bool tbl_we = false;
+    tbl_addr_t tbl_addr = 0;
+    tbl_word_t tbl_data = 0;
+    // position error map (docs/ERROR_MAP.md §8): map_en, bank_sel, the two bank geometries and
+    // the table write port (writes the bank not selected in the call). Reset: map disabled.
+    error_map_regs emap;
+};
+
+struct axis_pins {
+    bool a = false, b = false, sw = false, lerr = false;
+};
+
+struct axis_out {
+    dac_t sin = 0, cos = 0;
+    bool ref_mark = false, qa = false, qb = false, qz = false;
+    // status
+    bool cfg_err = false;
+    rephase_cfg::stage_t stage = 0;
+    bool homed = false, lerr_alarm = false, illegal_st = false;
+    quad_decoder_cfg::errcnt_t err_cnt = 0;
+    bool ovs_edge_st = false, ovs_backlog_st = false, glitch_st = false, alarm = false;
+    bool dac_clip_st = false;  // sticky: a DDS code outside +-(2^(dac_width-1) - 1) was clamped (DAC range guard)
+    // taps: registered outputs of each block at this call
+    raw_t raw_count = 0;
+    step_t step = 0;
+    pos_t comp_pos = 0;
+    delta_t delta = 0;
+    backlog_t backlog = 0;
+    step_t pstep = 0;
+    pos_t paced_pos = 0;
+    step_t ostep = 0;
+    pos_t out_pos = 0, adj = 0, a_pos = 0, b_pos = 0, c_pos = 0, z_pos = 0;
+    rephase_cfg::ph_t d = 0;
+    bool rep_mark = false;
+    // error map (docs/ERROR_MAP.md §8)
+    bool map_cfg_err = false;               // map_en with an invalid geometry of the selected bank
+    error_map_cfg::corr_t corr = 0;     // correction of the last sampled comp (sampled in call t-28), output counts
+    error_map_cfg::cdelta_t map_delta = 0;  // corr(t) - corr(t-1), added to the pacer input
+};
+
+// The pacer's two addends mul_q_.delta and emap_q_.delta (summed inside the pacer) together stay
+// in delta_t: a multiplier delta is at most one step (< 2^5) plus a re-base
+// |N| * |R' - R| / 2^32 <= 2^31 * 2^37 / 2^32 = 2^36 plus an offset change
+// |OFF' - OFF| / 2^32 <= 2^32, and |map delta| < 2^(W_CDELTA-1) = 2^17, so the sum stays below
+// 2^36 + 2^33 < 2^(W_DELTA-1) = 2^38 (docs/DESIGN.md §4.7).
+static_assert(error_map_cfg::W_CDELTA <= output_pacer_cfg::W_ADD, "the map delta must fit the pacer's second addend");
+
+// Configuration check (DESIGN §4.7), every call, of the registers in force (the values presented
+// in the previous call: the register stage; hardware makes it on the presented values, registered).
+inline bool axis_config_ok(const axis_regs& r) {
+    const bool period_ok = r.period >= axis_widths::P_MIN && r.period <= axis_widths::P_MAX &&
+                           (r.period & (axis_widths::P_STEP - 1)) == 0;
+    const bool width_ok = r.dac_width >= axis_widths::W_DAC_MIN && r.dac_width <= axis_widths::W_DAC_MAX;
+    bool amp_ok = false;
+    if (width_ok) {
+        const dds_sincos_cfg::amp_t amp_max = (dds_sincos_cfg::amp_t(1) << (r.dac_width - 1)) - 1;
+        amp_ok = r.amplitude >= 1 && r.amplitude <= amp_max;
+    }
+    const bool mark_ok = r.mark_len >= (r.period >> 2) && r.mark_len <= r.period;
+    // count integrity (DESIGN §4.2): a pulse the glitch filter passes must be caught by the edge
+    // spacing check, so min_spacing > max(glitch_n, 1) (one 16-bit comparator)
+    const quad_decoder_cfg::spacing_t glitch_floor =
+        (r.glitch_n == 0) ? quad_decoder_cfg::spacing_t(1) : quad_decoder_cfg::spacing_t(r.glitch_n);
+    const bool spacing_ok = r.min_spacing > glitch_floor;
+    return period_ok && width_ok && amp_ok && mark_ok && spacing_ok && r.ratio != 0 && r.pace_m >= 2 &&
+           r.tbl_period == r.period && !r.tbl_we;  // table writes only in the safe state (§4.6)
+}
+
+// Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
+inline void quad_levels(pos_t pos, bool& qa, bool& qb) {
+    const uint<2> i = pos;  // low two bits = pos mod 4 (two's complement)
+    qa = i == 1 || i == 2;
+    qb = i == 2 || i == 3;
+}
+
+class laserax_top {
+public:
+    laserax_top() { reset(); }
+
+    void reset() {
+        swf_.reset();
+        dec_.reset();
+        mul_.reset();
+        pac_.reset();
+        rep_.reset();
+        dds_.reset();
+        emap_.reset();  // pipeline only, not the table RAM
+        dac_clip_st_ = false;
+        // inter-block registers (0 / false): the block outputs in out_ (every axis_out member has
+        // a default member initialiser), and those no output shows
+        out_ = axis_out{};
+        swf_q_ = input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t{false, false, false};
+        lerr_q_ = false;
+        dec_alarm_ = false;
+        rep_q2_ = rep_tap{};
+        rep_q3_ = rep_tap{};
+    }
+
+    dds_sincos& dds() { return dds_; }
+
+    LASERAX_FLATTEN axis_out step(const axis_pins& pins, const axis_regs& presented) {
+        // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
+        // call (regs_q_, read in place) and on their configuration check, made (in hardware) in
+        // that call on the presented values and registered (chk_q_)
+        if (powered_) {
+            run(pins, regs_q_);
+        } else {
+            safe_out(false);  // power-up call: no registers in force, every block in reset
+            powered_ = true;
+        }
+        tblw_q_ = regs_q_.tbl_we;  // the table write in force in this call (false in the power-up call)
+        // the register load and its check; skipped when the presented block is the one in force
+        // (same bytes: same values, so the same check; the C-simulation shortcut above)
+        same_q_ = LASERAX_REGS_SAME(presented, regs_q_);
+        if (!same_q_) {
+            regs_q_ = presented;
+            chk_q_ = check(regs_q_);
+        }
+        return out_;
+    }
+
+private:
+    // outputs of a call in which the chain does not run (out_ holds the inter-block registers of
+    // the reset, every field 0 / false): stage 1; cfg_err and alarm set in the safe state
+    // (invalid configuration), not in the power-up call
+    void safe_out(bool cfg_err) {
+        out_.cfg_err = cfg_err;
+        out_.alarm = cfg_err;
+        out_.stage = 1;
+    }
+
+    // one call of the chain on the registers in force; its outputs in out_, whose block outputs
+    // are the inter-block registers the blocks of the next call read
+    void run(const axis_pins& pins, const axis_regs& regs) {
+        // The same registers in force as in the previous call (same_q_), which ran: the loads
+        // and checks below would load the values they hold and find the configuration valid
+        // again (C simulation only, see LASERAX_REGS_SAME; issue 13: simulation speed).
+        if (!(same_q_ && run_q_)) {
+            // held compensation registers: loaded in every call without comp_sync, else on
+            // comp_commit; not part of the chain reset (register file state)
+            if (!regs.comp_sync || regs.comp_commit) {
+                ratio_h_ = regs.ratio;
+                offset_h_ = regs.comp_offset;
+            }
+            // A period change while running is a reconfiguration: the phase counters of the old
+            // period are meaningless for the next one, so the chain restarts (one call in the safe
+            // state). Coming out of reset or of an invalid configuration the blocks are already
+            // reset.
+            const bool period_changed = run_q_ && regs.period != period_q_;
+            // (a table write in force in the previous call holds the safe state one more call,
+            // DESIGN §4.6: no running call reads a word in the call of its write or the next)
+            const bool ok = chk_q_.ok && !tblw_q_ && ratio_h_ != 0 && !period_changed;
+            period_q_ = regs.period;
+            run_q_ = ok;
+            if (!ok) {
+                reset();  // safe state: every block held in reset
+                // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
+                // read the table, so its true dual-port RAM has at most two accesses per call
+                if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
+                safe_out(true);
+                return;
+            }
+        }
+        // Every block reads only inter-block registers of the previous call, so the order of the
+        // steps within a call is free: they run downstream first, and each inter-block register is
+        // loaded right after its last reader (no block output is held across the other steps).
+        axis_out& o = out_;
+        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude);
+        // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
+        // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
+        const dac_t dac_hi = chk_q_.dac_hi;
+        bool clip = false;
+        o.sin = clamp_dac(dds.sin, dac_hi, clip);
+        o.cos = clamp_dac(dds.cos, dac_hi, clip);
+        if (regs.clear) dac_clip_st_ = false;
+        if (clip) dac_clip_st_ = true;
+        o.dac_clip_st = dac_clip_st_;
+        o.cfg_err = false;
+        // digital outputs from the rephase outputs of call t-3
+        quad_levels(rep_q3_.out_pos, o.qa, o.qb);
+        o.ref_mark = rep_q3_.mark;
+        o.qz = rep_q3_.mark;
+        // error map: indexed by the uncorrected comp of the previous call, active only while the
+        // rephase of the previous call was homed; its delta is the pacer's second addend, summed
+        // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
+        // latency, a sample every 32 calls, DESIGN §4.7)
+        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
+        const rephase::out_t rep = rep_.step(o.pstep, swf_q_.f, swf_q_.valid, regs.rehome, lerr_q_,
+                                             regs.period, regs.mark_len);
+        rep_q3_ = rep_q2_;
+        rep_q2_.out_pos = o.out_pos;
+        rep_q2_.mark = o.rep_mark;
+        o.ostep = rep.ostep;
+        if (!rep.held) {  // (held: the other rephase outputs are those out_ holds)
+            o.stage = rep.stage;
+            o.homed = rep.homed;
+            o.out_pos = rep.out_pos;
+            o.adj = rep.adj;
+            o.a_pos = rep.a;
+            o.b_pos = rep.b;
+            o.c_pos = rep.c;
+            o.z_pos = rep.z;
+            o.d = rep.d;
+            o.rep_mark = rep.mark;
+        }
+        const output_pacer::out_t pac =
+            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        o.ovs_backlog_st = pac.ovs_st;
+        o.backlog = pac.backlog;
+        o.pstep = pac.pstep;
+        o.paced_pos = pac.paced;
+        o.map_cfg_err = emap.cfg_err;
+        o.corr = emap.corr;
+        o.map_delta = emap.delta;
+        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_);
+        o.comp_pos = mul.comp;
+        o.delta = mul.delta;
+        const quad_decoder::out_t dec =
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
+        o.step = dec.step;
+        if (!dec.held) {  // (held: the other decoder outputs are those out_ and lerr_q_ hold)
+            lerr_q_ = dec.lerr;
+            o.lerr_alarm = dec.lerr_alarm;
+            o.illegal_st = dec.illegal_st;
+            o.err_cnt = dec.err_cnt;
+            o.ovs_edge_st = dec.ovs_st;
+            o.glitch_st = dec.glitch_st;
+            o.raw_count = dec.raw_count;
+            dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
+        }
+        swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
+        o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || dac_clip_st_;
+    }
+
+private:
+    input_filter<laserax_top_cfg::W_DEBOUNCE> swf_;
+    quad_decoder dec_;
+    pulse_multiplier mul_;
+    output_pacer pac_;
+    rephase rep_;
+    dds_sincos dds_;
+    error_map emap_;
+    // the outputs of the call: every block output in it is also the inter-block register that
+    // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
+    // delta, rephase ostep / out_pos / mark / homed)
+    axis_out out_;
+    input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t swf_q_;
+    bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
+    bool dec_alarm_;  // the decoder's part of alarm: lerr_alarm || illegal_st || ovs_st (out_)
+    struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
+        pos_t out_pos = 0;
+        bool mark = false;
+    };
+    rep_tap rep_q2_, rep_q3_;
+    period_t period_q_ = 0;  // period register of the previous call
+    ratio_t ratio_h_ = laserax_top_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
+    offset_t offset_h_ = 0;                           // comp_offset in force
+    bool run_q_ = false;     // the previous call ran with a valid configuration
+    bool dac_clip_st_ = false;  // DAC range guard sticky flag
+    alignas(16) axis_regs regs_q_ = axis_regs{};  // registers presented in the previous call (in force now)
+    // configuration check of regs_q_ (registered with it) and the DAC code limit of its dac_width
+    struct reg_check {
+        bool ok = false;
+        dac_t dac_hi = 0;
+    };
+    reg_check chk_q_ = check(axis_regs{});
+    bool powered_ = false;            // false until the power-up call
+    bool tblw_q_ = false;             // tbl_we in force in the previous call (DESIGN §4.6, §4.7)
+    bool same_q_ = false;  // regs_q_ holds the block in force in the previous call too (not reloaded)
+
+    static reg_check check(const axis_regs& r) {
+        reg_check c;
+        c.ok = axis_config_ok(r);
+        // read only while ok, i.e. with dac_width in W_DAC_MIN..W_DAC_MAX (the shift is defined)
+        if (c.ok) c.dac_hi = dac_t((dds_sincos_cfg::amp_t(1) << (r.dac_width - 1)) - 1);
+        return c;
+    }
+
+    static dac_t clamp_dac(dac_t v, dac_t hi, bool& clip) {
+        if (v > hi) {
+            clip = true;
+            return hi;
+        }
+        if (v < dac_t(-hi)) {
+            clip = true;
+            return dac_t(-hi);
+        }
+        return v;
+    }
+};
+
+}  // namespace lx
 
 #endif  // LASERAX_HLS_LASERAX_TOP_H

@@ -32,7 +32,7 @@
 // Widths: positions 38 signed (taps: paced, out_pos, adj, A, B, C, Z; the mark counter u),
 // d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 2 signed (-1..1), stage 2.
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
-// Block-level preconditions (axis_core guarantees both): P is constant while the block runs (a
+// Block-level preconditions (laserax_top guarantees both): P is constant while the block runs (a
 // change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1,
 // lag = 0 at A (w is then the target phase) and k is in time for the first carry. A block-level
 // caller that breaks them gets the same bits here and in rtl_ref/, not necessarily those of the

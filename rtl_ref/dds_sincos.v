@@ -29,7 +29,7 @@
 // So the codes after edge t+2 are those of the phase before call t+1, as the C++ model specifies.
 //
 // Table write port (host side): a write at edge t is performed before the read of the same edge,
-// as in hls/axis_core.h (write, then dds step, in one call): the codes that read the written word
+// as in hls/laserax_top.h (write, then dds step, in one call): the codes that read the written word
 // at edge t see the new value.
 `timescale 1ns / 1ps
 `default_nettype none

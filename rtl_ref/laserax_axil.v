@@ -4,8 +4,8 @@
 // Every o_<name> of laserax_regs goes to i_<name> of laserax_top; pins and every laserax_top
 // output pass through unchanged. Timing (docs/REGISTERS.md, "RTL slave"): a bus write whose
 // handshake completes at rising edge t updates the register at edge t; laserax_top samples it
-// from edge t+1 on, i.e. the write acts in call t+1 of hls/axis_core.h (one register stage,
-// what CTest rtl_laserax_axil checks against axis_core every cycle). The pulse and table-port
+// from edge t+1 on, i.e. the write acts in call t+1 of hls/laserax_top.h (one register stage,
+// what CTest rtl_laserax_axil checks against hls/laserax_top.h every cycle). The pulse and table-port
 // registers (rehome, clear, comp_commit, tbl_we, map_we) hold what the host wrote: the core
 // acts in every clock they are 1, as in the C++ model.
 //

@@ -2,12 +2,12 @@
 // rephase -> dds_sincos, with the error_map beside the pacer input, plus the switch debounce,
 // the configuration check and the digital A/B/Z outputs.
 //
-// Reference RTL of hls/axis_core.h / hls/laserax_top.cpp (DESIGN §4.7, register map §5). One
-// rising clock edge = one call of axis_core::step(); the outputs after edge t are the axis_out of
+// Reference RTL of hls/laserax_top.h / hls/laserax_axil.cpp (DESIGN §4.7, register map §5). One
+// rising clock edge = one call of laserax_top::step(); the outputs after edge t are the axis_out of
 // call t, for the pins and registers presented before edge t.
 //
 // Register stages: in the C++ model a block consumes the outputs its upstream block returned at
-// the previous call (the *_q members of axis_core). Every block's outputs here are its own output
+// the previous call (the *_q members of laserax_top). Every block's outputs here are its own output
 // registers, so they *are* that one register stage: each block is wired straight to the output
 // registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-3 (the
 // extra rep_q2 and rep_q3 stages of the C++ plus the output register), so they change in the same
@@ -19,9 +19,9 @@
 // presented values and registered (safe_q), so the block reset is one LUT from a flip-flop.
 // Safe state: in a call whose registers in force fail the check, and in the call in which a new
 // period is first in force after a running call, every block is reset at the edge (the C++
-// axis_core::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz = ref_mark = 0, stage 1. A table
+// laserax_top::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz = ref_mark = 0, stage 1. A table
 // write (tbl_we = 1) fails the check, so it is made only in a safe-state edge, in which the DDS is
-// in reset (hls: dds_.write() only in the safe state of axis_core::step(); DESIGN 4.6), and the
+// in reset (hls: dds_.write() only in the safe state of laserax_top::step(); DESIGN 4.6), and the
 // next call is a safe-state call too, so no running call reads a word in the call of its write or
 // the next one: the DDS is instantiated without its write bypass.
 //

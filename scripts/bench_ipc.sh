@@ -5,7 +5,7 @@
 # and the reading of the default table cancel out. Instruction counts of a fixed binary on a fixed
 # stimulus are deterministic (no timer, no sampling).
 #   bash scripts/bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]
-# Then the chain's figure split by block: the instructions of axis_core::step (every block step is
+# Then the chain's figure split by block: the instructions of laserax_top::step (every block step is
 # inlined into it) by the source file of the inlined code (callgrind_annotate, the same
 # difference; needs the line information the build gives bench, -g).
 set -euo pipefail
@@ -14,9 +14,9 @@ short=${2:-100000}
 long=${3:-300000}
 command -v valgrind >/dev/null || { echo "bench_ipc.sh: valgrind not installed (make deps)"; exit 1; }
 # KEY|label (KEY: a substring of the bench item name)
-items=("axis_core|hls axis_core (full chain)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
+items=("laserax_top|hls laserax_top (full chain)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
        "output_pacer|hls output_pacer" "rephase|hls rephase" "dds_sincos|hls dds_sincos"
-       "golden axis_chain|golden axis_chain" "tb style|hls + golden + compare (tb style)")
+       "golden laserax_top|golden laserax_top" "tb style|hls + golden + compare (tb style)")
 measure() {  # CALLS KEY -> "instructions calls"
     local out ir calls
     out=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null "$bench" "$1" --only "$2" 2>&1)
@@ -35,27 +35,27 @@ for it in "${items[@]}"; do
         'BEGIN { printf "  %-34s %10.1f instructions / clock\n", l, (i2 - i1) / (c2 - c1) }'
 done
 
-# per block inside the chain: Ir of axis_core::step by source file, (long - short) / call difference
-by_file() {  # CALLS -> "file Ir" lines of the code inlined into axis_core::step, and "calls N"
+# per block inside the chain: Ir of laserax_top::step by source file, (long - short) / call difference
+by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::step, and "calls N"
     local f out
     f=$(mktemp)
-    out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only axis_core 2>&1)
+    out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only laserax_top 2>&1)
     printf '%s\n' "$out" | sed -n 's/.*(\([0-9]*\) calls in .*/calls \1/p' | tail -n 1
     callgrind_annotate --inclusive=no --auto=no "$f" 2>/dev/null | grep -v "=>" |
-        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):lx::axis_core::step(.*/\2 \1/p' | tr -d ','
+        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):lx::laserax_top::step(.*/\2 \1/p' | tr -d ','
     rm -f "$f"
 }
 if command -v callgrind_annotate >/dev/null; then
     s1=$(by_file "$short")
     s2=$(by_file "$long")
     if printf '%s\n' "$s2" | grep -q '^hls/'; then
-        echo "hls axis_core (full chain) by block (instructions / clock of the code inlined into axis_core::step, by source file):"
+        echo "hls laserax_top (full chain) by block (instructions / clock of the code inlined into laserax_top::step, by source file):"
         awk 'FNR == 1 { part++ }
              $1 == "calls" { c[part] = $2; next }
              { v[part, $1] += $2; k[$1] = 1 }
              END { for (f in k) printf "  %-34s %10.1f\n", f, (v[2, f] - v[1, f]) / (c[2] - c[1]) }' \
             <(printf '%s\n' "$s1") <(printf '%s\n' "$s2") | sort -k2 -rn
     else
-        echo "hls axis_core by block: no line information in $bench (build it with -g)"
+        echo "hls laserax_top by block: no line information in $bench (build it with -g)"
     fi
 fi

@@ -11,14 +11,14 @@ Usage (Python 3 standard library only):
 Options: --csv PATH (default regmap/laserax_regs.csv), --out-dir DIR (default: the repository root).
 
 Generated (each with the header line of GENERATED_NOTE):
-    hls/laserax_top.h, hls/laserax_top.cpp   Vitis HLS top: one s_axilite scalar per register
+    hls/laserax_axil.h, hls/laserax_axil.cpp   Vitis HLS top: one s_axilite scalar per register
     hls/laserax_regmap.h                     lx::regmap constants + static_asserts against lx::axis_regs
     host/regmap_table.h, .cpp                host table, the host settings struct lxt::axis_settings
                                              and its accessors
     host/laserax_regs_c.h                    C header for firmware
     sysmodel/regmap_models.h, .cpp           accessors of lx::axis_regs and golden::axis_regs,
                                              to_hls / to_golden / settings_from
-    sysmodel/laserax_top_call.h              laserax_top() called with an lx::axis_regs
+    sysmodel/laserax_axil_call.h              laserax_axil() called with an lx::axis_regs
     docs/REGISTERS.md                        the documented map
     rtl_ref/laserax_regs.v                   Verilog AXI4-Lite slave holding the map (o_<name> ports)
 
@@ -284,21 +284,21 @@ def word_ranges(r):
 
 def gen_top_h(regs):
     args = ",\n".join("                 %s %s" % (r.lx_type, r.name) for r in regs)
-    return """// laserax_top.h — declaration of the synthesis top (see laserax_top.cpp).
+    return """// laserax_axil.h — declaration of the synthesis top (see laserax_axil.cpp).
 //
 // %s
-#ifndef LASERAX_HLS_LASERAX_TOP_H
-#define LASERAX_HLS_LASERAX_TOP_H
+#ifndef LASERAX_HLS_LASERAX_AXIL_H
+#define LASERAX_HLS_LASERAX_AXIL_H
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 
 // Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
 // s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
-void laserax_top(bool a, bool b, bool sw, bool lerr,
+void laserax_axil(bool a, bool b, bool sw, bool lerr,
 %s,
                  lx::axis_out& out);
 
-#endif  // LASERAX_HLS_LASERAX_TOP_H
+#endif  // LASERAX_HLS_LASERAX_AXIL_H
 """ % (GENERATED_NOTE, args)
 
 
@@ -307,24 +307,24 @@ def gen_top_cpp(regs):
     pragmas = "\n".join("#pragma HLS INTERFACE mode=s_axilite port=%s offset=0x%02X bundle=ctrl" % (r.name, r.offset)
                         for r in regs)
     assigns = "\n".join("    regs.%s = %s;" % (r.hls_member, r.name) for r in regs)
-    return """// laserax_top.cpp — Vitis HLS top function of the single-axis interface.
+    return """// laserax_axil.cpp — Vitis HLS top function of the single-axis interface.
 //
 // %s
 //
 // One call = one clock (pipeline, II = 1). Pins are plain wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
 // slave at its fixed offset (a register wider than 32 bits takes consecutive words, low word
-// first); the outputs are wires. The state of the axis lives in one static axis_core, so the
+// first); the outputs are wires. The state of the axis lives in one static laserax_top, so the
 // function is the whole IP. The block-level control is on the same s_axilite slave (port=return:
 // ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
 // Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
 // the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
 // pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
 // scripts/run_hls.tcl); the default build uses lx_types' own classes.
-#include "hls/laserax_top.h"
+#include "hls/laserax_axil.h"
 
 #include "hls/laserax_regmap.h"
 
-void laserax_top(bool a, bool b, bool sw, bool lerr,
+void laserax_axil(bool a, bool b, bool sw, bool lerr,
 %s,
                  lx::axis_out& out) {
 #pragma HLS INTERFACE mode=s_axilite port=return bundle=ctrl
@@ -336,7 +336,7 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp
-    static lx::axis_core core;
+    static lx::laserax_top core;
     lx::axis_pins pins;
     pins.a = a;
     pins.b = b;
@@ -377,7 +377,7 @@ def gen_regmap_h(regs):
 
 #include <type_traits>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 
 namespace lx {
 namespace regmap {
@@ -659,8 +659,8 @@ def gen_models_h(regs):
 
 #include <cstdint>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "host/regmap_table.h"
 
 namespace lxt {
@@ -799,27 +799,27 @@ axis_settings settings_from(const golden::axis_regs& g) {
 
 def gen_top_call_h(regs):
     args = ",\n".join("                %s" % ("r." + r.hls_member) for r in regs)
-    return """// laserax_top_call.h — host-side (testbench) helper: calls the synthesis top laserax_top(),
+    return """// laserax_axil_call.h — host-side (testbench) helper: calls the synthesis top laserax_axil(),
 // whose arguments are one scalar per register, with the registers of an lx::axis_regs. Header-only
 // and built on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
 //
 // %s
-#ifndef LASERAX_TOOLS_LASERAX_TOP_CALL_H
-#define LASERAX_TOOLS_LASERAX_TOP_CALL_H
+#ifndef LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
+#define LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 
-#include "hls/laserax_top.h"
+#include "hls/laserax_axil.h"
 
 namespace lxt {
 
-inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
-    laserax_top(a, b, sw, lerr,
+inline void laserax_axil_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
+    laserax_axil(a, b, sw, lerr,
 %s,
                 out);
 }
 
 }  // namespace lxt
 
-#endif  // LASERAX_TOOLS_LASERAX_TOP_CALL_H
+#endif  // LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 """ % (GENERATED_NOTE, args)
 
 
@@ -1155,7 +1155,7 @@ def gen_md(regs):
 # laserax register map (s_axilite)
 
 Generated from [`regmap/laserax_regs.csv`](../regmap/laserax_regs.csv), the single source of the
-register map: the Vitis HLS top (`hls/laserax_top.cpp`, one s_axilite scalar per register at the
+register map: the Vitis HLS top (`hls/laserax_axil.cpp`, one s_axilite scalar per register at the
 offsets below), the constants in `hls/laserax_regmap.h` and `host/laserax_regs_c.h`, the
 host table and accessors (`host/regmap_table.h`, used by the register image and the
 physical <-> register helper in `host/regmap.h`) and this page are all written by
@@ -1244,7 +1244,7 @@ register (its width, `signed` where the table says so). `rtl_ref/laserax_axil.v`
   `BREADY` = 1: one write every 2 clocks). **Latency**: with `AWVALID` and `WVALID` raised
   together on an idle slave, the register (and `o_<name>`) changes at the first rising edge, and
   the core uses the new value from the next edge on: a write whose handshake completes at edge t
-  acts in call t+1 of `axis_core::step()` (CTest `rtl_laserax_axil` checks exactly this).
+  acts in call t+1 of `laserax_top::step()` (CTest `rtl_laserax_axil` checks exactly this).
 * `WSTRB` writes the selected bytes of the word; bits above a register's width are dropped; a
   register wider than 32 bits takes its words low word first at its offsets (each word on its own:
   the core sees the mixed value between two word writes, hence `comp_sync` / `comp_commit`).
@@ -1266,14 +1266,14 @@ register (its width, `signed` where the table says so). `rtl_ref/laserax_axil.v`
 
 def generate(regs):
     files = {
-        "hls/laserax_top.h": gen_top_h(regs),
-        "hls/laserax_top.cpp": gen_top_cpp(regs),
+        "hls/laserax_axil.h": gen_top_h(regs),
+        "hls/laserax_axil.cpp": gen_top_cpp(regs),
         "hls/laserax_regmap.h": gen_regmap_h(regs),
         "host/regmap_table.h": gen_table_h(regs),
         "host/regmap_table.cpp": gen_table_cpp(regs),
         "sysmodel/regmap_models.h": gen_models_h(regs),
         "sysmodel/regmap_models.cpp": gen_models_cpp(regs),
-        "sysmodel/laserax_top_call.h": gen_top_call_h(regs),
+        "sysmodel/laserax_axil_call.h": gen_top_call_h(regs),
         "host/laserax_regs_c.h": gen_c_h(regs),
         "docs/REGISTERS.md": gen_md(regs),
         "rtl_ref/laserax_regs.v": gen_rtl_regs(regs),
@@ -1350,7 +1350,7 @@ def selftest():
             return p.returncode, p.stdout + p.stderr, path, out
 
         rc, msg, _, out = run(good, "good")
-        if rc != 0 or not os.path.exists(os.path.join(out, "hls/laserax_top.cpp")):
+        if rc != 0 or not os.path.exists(os.path.join(out, "hls/laserax_axil.cpp")):
             fails += 1
             print("selftest: the committed CSV is rejected (exit %d): %s" % (rc, msg.strip()))
         for name, lines, line, word in cases:

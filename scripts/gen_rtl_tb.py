@@ -579,7 +579,7 @@ BLOCKS += [
             "programmed only through the bus.",
         vectors=REGMAP_VECTORS % (
             "laserax_axil", "laserax_axil",
-            ", and the chain (hls/axis_core.h) stepped with the registers before each edge's write "
+            ", and the chain (hls/laserax_top.h) stepped with the registers before each edge's write "
             "(a write completing at edge t acts in call t+1)"),
         fields=[IN("a", 1), IN("b", 1), IN("sw", 1), IN("lerr", 1)] + AXIL_FIELDS + TOP_OUTPUTS,
         unused=[OUT("dac_clip_st", 1)],  # part of alarm (a column)

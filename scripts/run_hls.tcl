@@ -1,4 +1,4 @@
-# run_hls.tcl — Vitis HLS flow for the laserax core (top: laserax_top in hls/laserax_top.cpp).
+# run_hls.tcl — Vitis HLS flow for the laserax core (top: laserax_axil in hls/laserax_axil.cpp).
 #
 #   vitis_hls -f scripts/run_hls.tcl -tclargs csim=1 csynth=1 cosim=0
 #   CSYNTH=1 COSIM=1 LASERAX_PART=xcku5p-ffvb676-2-e vitis_hls -f scripts/run_hls.tcl
@@ -12,7 +12,7 @@
 #                                           testbench; possible because the top's return is on
 #                                           the s_axilite slave with its arguments (ap_ctrl_hs
 #                                           through AXI4-Lite; the II = 1 pipeline free-runs once
-#                                           started with auto_restart, see hls/laserax_top.cpp)
+#                                           started with auto_restart, see hls/laserax_axil.cpp)
 #   export    EXPORT            default 0   export_design -format ip_catalog
 #   reset     RESET             default 0   open the project with -reset (drops earlier results)
 # The project folder laserax_hls/ is created in the repository root (ignored by git).
@@ -54,11 +54,11 @@ cd $root
 # reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
 # <build>/hls_csim_sources.txt, so they cannot drift (scripts/check_hls_tcl.py).
 set design_files {
-    hls/laserax_top.cpp
+    hls/laserax_axil.cpp
 }
 set tb_files {
     tb/tb_hls_csim.cpp
-    golden/axis_chain.cpp
+    golden/laserax_top.cpp
     golden/dds_sincos.cpp
     golden/error_map.cpp
     golden/input_filter.cpp
@@ -82,7 +82,7 @@ if {$reset} {
 } else {
     open_project laserax_hls
 }
-set_top laserax_top
+set_top laserax_axil
 foreach f $design_files { add_files $f -cflags $cflags }
 foreach f $tb_files { add_files -tb $f -cflags $cflags }
 

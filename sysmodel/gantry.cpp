@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <memory>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "sysmodel/sim.h"
 
 namespace lxt {
@@ -485,7 +485,7 @@ gantry_result run_gantry(const gantry_config& c, const std::function<void(const 
                                laser ? g.grid_nm[1] + 1.25 * p * lam : g.enc_home_nm[1]};
 
     // the two compensators (heap: each holds its table RAM image)
-    std::unique_ptr<lx::axis_core> core[2] = {std::make_unique<lx::axis_core>(), std::make_unique<lx::axis_core>()};
+    std::unique_ptr<lx::laserax_top> core[2] = {std::make_unique<lx::laserax_top>(), std::make_unique<lx::laserax_top>()};
     axis_settings s;
     s.period = s.tbl_period = p;
     s.mark_len = p / 4;

@@ -1,5 +1,5 @@
 // gantry.h — cycle-accurate system simulation of a twin-rail gantry (docs/GANTRY.md): two
-// instances of the single-axis HLS top (lx::axis_core, X1 and X2) feeding a controller model that
+// instances of the single-axis HLS top (lx::laserax_top, X1 and X2) feeding a controller model that
 // decodes their sin/cos outputs like a real controller's interpolator, and the homing sequence of
 // the seed's "referencing a twin axis" sections:
 //

@@ -6,8 +6,8 @@
 
 #include <string>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "host/regmap.h"
 #include "sysmodel/regmap_models.h"
 

@@ -9,8 +9,8 @@
 
 #include <cstdint>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "host/regmap_table.h"
 
 namespace lxt {

@@ -19,7 +19,7 @@ uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm) {
 // The host library's output count (host/compensation.h) is the one of the system model.
 static_assert(kOutputCountNmComp == kOutputCountNm, "output count differs from host/compensation.h");
 
-void load_table(lx::axis_core& core, int period, int amplitude) {
+void load_table(lx::laserax_top& core, int period, int amplitude) {
     const std::vector<uint32_t> t = dds_table(period, amplitude);
     for (size_t k = 0; k < t.size(); ++k) core.dds().write(static_cast<unsigned>(k), t[k]);
 }

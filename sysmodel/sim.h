@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "host/regmap_table.h"
 #include "sysmodel/regmap_models.h"
 
@@ -34,7 +34,7 @@ constexpr double kClockHz = 100e6;        // model clock for time axes and speed
 uint64_t ratio_for(double vacuum_nm, double air_index, double count_nm);
 
 // Writes the quarter-wave table for (period, amplitude) into the core's table RAM (host driver).
-void load_table(lx::axis_core& core, int period, int amplitude);
+void load_table(lx::laserax_top& core, int period, int amplitude);
 
 // Compares every output and tap; returns "" or a message naming the first differing signal.
 std::string compare(const lx::axis_out& h, const golden::axis_out& g);
@@ -133,7 +133,7 @@ public:
     void write_map(int addr, int32_t data);
     const lx::axis_out& hls() const { return h_; }
     const golden::axis_out& gold() const { return g_; }
-    lx::axis_core& core() { return core_; }
+    lx::laserax_top& core() { return core_; }
     const axis_settings& settings() const { return s_; }
     uint64_t calls() const { return calls_; }
 
@@ -141,8 +141,8 @@ private:
     axis_settings s_;
     lx::axis_regs hr_;
     golden::axis_regs gr_;
-    lx::axis_core core_;
-    golden::axis_chain gold_;
+    lx::laserax_top core_;
+    golden::laserax_top gold_;
     lx::axis_out h_{};
     golden::axis_out g_{};
     uint64_t calls_ = 0;

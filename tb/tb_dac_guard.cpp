@@ -15,8 +15,8 @@
 #include <cstdio>
 #include <string>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "tb/tb_util.h"
 #include "host/dds_table.h"
 #include "host/regmap_table.h"
@@ -52,7 +52,7 @@ int main(int argc, char** argv) {
 
     // ---- 1. dac_width 12 / amplitude 2047 over the power-up table --------------------------------
     {
-        lx::axis_core core;
+        lx::laserax_top core;
         lx::axis_regs r{};
         r.dac_width = 12;
         r.amplitude = 2047;
@@ -116,7 +116,7 @@ int main(int argc, char** argv) {
 
     // ---- 1b. clear at a non-clamping phase drops the flag ----------------------------------------
     {
-        lx::axis_core core;
+        lx::laserax_top core;
         lx::axis_regs r{};
         r.dac_width = 12;
         r.amplitude = 2047;
@@ -147,8 +147,8 @@ int main(int argc, char** argv) {
                 std::string err;
                 const std::vector<uint32_t> words = lxt::dds_table(P, amp, &err);
                 res.check(err.empty() && words.size() == size_t(P / 4), "dds_table " + std::to_string(P) + ": " + err);
-                lx::axis_core core;
-                golden::axis_chain gold;
+                lx::laserax_top core;
+                golden::laserax_top gold;
                 for (size_t k = 0; k < words.size(); ++k)
                     core.dds().write(lx::tbl_addr_t(k), lx::tbl_word_t(words[k]));
                 golden::axis_regs g{};

@@ -37,9 +37,9 @@
 #include <string>
 #include <vector>
 
-#include "golden/axis_chain.h"
+#include "golden/laserax_top.h"
 #include "golden/quad_decoder.h"
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "hls/quad_decoder.h"
 #include "tb/tb_util.h"
 

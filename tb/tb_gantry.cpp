@@ -1,6 +1,6 @@
 // ctest-args-O0: --samples-div 64 --small-sweeps 0
 // tb_gantry — twin-axis (gantry) referencing with two compensators (docs/GANTRY.md): the
-// cycle-accurate system (two lx::axis_core, a controller that decodes their sin/cos, coupled
+// cycle-accurate system (two lx::laserax_top, a controller that decodes their sin/cos, coupled
 // mechanics) against the floating-point golden model golden/gantry_model, over the power-up
 // phases of X1 and X2:
 //   exhaustive : every (phase1, phase2) for P = 8 and 16; the temporary skew stays within +-P,

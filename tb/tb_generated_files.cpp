@@ -10,7 +10,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "tb/tb_util.h"
 #include "host/dds_table.h"
 #include "sysmodel/sim.h"
@@ -43,7 +43,7 @@ int main(int argc, char** argv) {
             std::remove(tmp.c_str());
         }
     }
-    res.check(lx::axis_core_cfg::RATIO_DEFAULT == lxt::ratio_for(632.991, 1.000271, 78.125),
+    res.check(lx::laserax_top_cfg::RATIO_DEFAULT == lxt::ratio_for(632.991, 1.000271, 78.125),
               "RATIO_DEFAULT != round(632.991/1.000271/78.125*2^32) = " +
                   std::to_string(lxt::ratio_for(632.991, 1.000271, 78.125)));
     const std::vector<uint32_t> t = lxt::dds_table(LASERAX_DDS_TABLE_DEFAULT_PERIOD, LASERAX_DDS_TABLE_DEFAULT_AMPLITUDE);

@@ -1,8 +1,8 @@
 // ctest-args-O0: --calls 40000
 // ctest-args-valgrind: --calls 12000
-// tb_hls_csim — testbench of the synthesis top function laserax_top() (also the Vitis HLS C
+// tb_hls_csim — testbench of the synthesis top function laserax_axil() (also the Vitis HLS C
 // simulation testbench of scripts/run_hls.tcl). It uses only the top function (through the
-// generated header-only sysmodel/laserax_top_call.h, which passes the registers of an
+// generated header-only sysmodel/laserax_axil_call.h, which passes the registers of an
 // lx::axis_regs as the top's one-scalar-per-register arguments), the golden chain and the standard
 // library, so it compiles the same with -DLASERAX_USE_AP_TYPES.
 //
@@ -15,9 +15,9 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "golden/axis_chain.h"
-#include "hls/laserax_top.h"
-#include "sysmodel/laserax_top_call.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_axil.h"
+#include "sysmodel/laserax_axil_call.h"
 
 int main(int argc, char** argv) {
     long calls = 400000;
@@ -34,7 +34,7 @@ int main(int argc, char** argv) {
         return 2;
     }
     const lx::axis_regs regs;  // reset values
-    golden::axis_chain gold;
+    golden::laserax_top gold;
     gold.reset();
     const golden::axis_regs gregs;
     long fails = 0;
@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
         static const bool qb[4] = {false, false, true, true};
         const bool sw = n >= 30;
         lx::axis_out o;
-        lxt::laserax_top_regs(qa[n & 3], qb[n & 3], sw, false, regs, o);
+        lxt::laserax_axil_regs(qa[n & 3], qb[n & 3], sw, false, regs, o);
         golden::axis_pins gp;
         gp.a = qa[n & 3];
         gp.b = qb[n & 3];

@@ -9,8 +9,8 @@
 #include <cstdio>
 #include <string>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "tb/tb_util.h"
 
 namespace {
@@ -21,8 +21,8 @@ struct lat_result {
     int sc_hls = -1, sc_gold = -1, q_hls = -1;
 };
 lat_result measure(int glitch_n, bool backward) {
-    lx::axis_core h;
-    golden::axis_chain g;
+    lx::laserax_top h;
+    golden::laserax_top g;
     g.reset();
     lx::axis_regs hr;
     golden::axis_regs gr;

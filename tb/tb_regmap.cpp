@@ -26,7 +26,7 @@
 //    compensate --regs-out` writes exactly the helper's register writes.
 // 6. DDS table load (lxt::program_dds): a chain of loads (period changes 256 -> 640 and to the
 //    extremes 8 / 4096, amplitude changes at the same period, dac_width kept, widened, set) is
-//    replayed write by write into a reg_image and an hls axis_core (1..3 calls per write) while
+//    replayed write by write into a reg_image and an hls laserax_top (1..3 calls per write) while
 //    the axis moves: cfg_err must be 1 in exactly the documented window (from the call after the
 //    first write up to the call of the last write) and 0 before and after it; afterwards the
 //    image equals program_dds's, the table RAM holds lxt::dds_table(P, amp), the axis homes with
@@ -51,7 +51,7 @@
 
 #include "host/air_index.h"
 #include "host/thermal.h"
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "hls/error_map.h"
 #include "hls/laserax_regmap.h"
 #include "tb/tb_util.h"
@@ -182,7 +182,7 @@ struct load_stats {
 // calls per write) while the axis moves below the switch, then homes the axis with the period
 // and amplitude the image holds at the end and runs it over more than a period, checking cfg_err
 // against the window and sin/cos against lxt::dds_table in every call.
-load_stats run_load(lx::axis_core& core, lxt::reg_image& img, axis_motion& ax, const std::vector<lxt::reg_write>& seq,
+load_stats run_load(lx::laserax_top& core, lxt::reg_image& img, axis_motion& ax, const std::vector<lxt::reg_write>& seq,
                     std::mt19937_64& rng) {
     load_stats st;
     const int64_t n_lo = kSwPos - 8;
@@ -371,7 +371,7 @@ void test_round_trips(ctx& topic) {
     static_assert(
         lx::regmap::RATIO_OFFSET == LASERAX_REG_RATIO_OFFSET &&
             lx::regmap::RATIO_RESET == LASERAX_REG_RATIO_RESET &&
-            static_cast<unsigned long long>(rm::kRegs[rm::idx::ratio].reset) == lx::axis_core_cfg::RATIO_DEFAULT,
+            static_cast<unsigned long long>(rm::kRegs[rm::idx::ratio].reset) == lx::laserax_top_cfg::RATIO_DEFAULT,
         "ratio constants");
     res.check(lx::regmap::FIRST_OFFSET == rm::kFirstOffset && lx::regmap::END_OFFSET == rm::kEndOffset &&
                   LASERAX_REG_END_OFFSET == rm::kEndOffset,
@@ -904,7 +904,7 @@ void test_dds_table_load(ctx& topic) {
     img.set(rm::idx::pace_m, 2);
     img.set(rm::idx::glitch_n, 1);
     img.set(rm::idx::sw_debounce, 4);
-    lx::axis_core core;  // power-up table: P = 256, amp = 32767 (as the reset image)
+    lx::laserax_top core;  // power-up table: P = 256, amp = 32767 (as the reset image)
     axis_motion ax;
     for (int k = 0; k < 100; ++k) core.step(ax.pins(), lxt::hls_from(img));
     struct plan_t {
@@ -964,14 +964,14 @@ void test_dds_table_load(ctx& topic) {
                     w.value = 2;
                     break;
                 }
-            lx::axis_core c1 = core;
+            lx::laserax_top c1 = core;
             lxt::reg_image i1 = img;
             axis_motion a1 = ax;
             const load_stats m1 = run_load(c1, i1, a1, off, rng);
             res.check(m1.sincos_bad > 0, tag + ": negative control: a table word written one address off went "
                                                "unnoticed by the sin/cos check");
             const std::vector<lxt::reg_write> late(ld.seq.begin() + 1, ld.seq.end());  // no tbl_period = 0
-            lx::axis_core c2 = core;
+            lx::laserax_top c2 = core;
             lxt::reg_image i2 = img;
             axis_motion a2 = ax;
             const load_stats m2 = run_load(c2, i2, a2, late, rng);

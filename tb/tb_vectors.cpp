@@ -3,7 +3,7 @@
 // * runs the built `laserax vectors` into a temporary folder;
 // * reads every CSV back and its hex twin, which must hold the same numbers;
 // * replays the laserax_top stimulus (pins, registers, table and error-map write ports) into a
-//   fresh hls axis_core and compares every output column on every row; replays the dds_sincos
+//   fresh hls laserax_top and compares every output column on every row; replays the dds_sincos
 //   (table port included), pulse_multiplier (preset included) and error_map (its directed tail
 //   included) block files into fresh hls blocks the same way (the files, not the generator, are
 //   the reference here). Columns are found by
@@ -19,7 +19,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "tb/tb_util.h"
 #include "host/dds_table.h"
 #include "sysmodel/sim.h"
@@ -84,7 +84,7 @@ bool check_outputs(tbu::result& res, const lxt::vec_table& t, size_t r, const st
 }
 
 void replay_top(tbu::result& res, const lxt::vec_table& t) {
-    lx::axis_core core;
+    lx::laserax_top core;
     lxt::load_table(core, 256, 32767);
     inputs in(t);
     long bad = 0;
@@ -158,7 +158,7 @@ void replay_dds(tbu::result& res, const lxt::vec_table& t) {
         const bool we = in("tbl_we") != 0;
         const unsigned addr = static_cast<unsigned>(in("tbl_addr"));
         const uint32_t data = static_cast<uint32_t>(in("tbl_data"));
-        if (we) d.write(addr, data);  // before the step of the same call, as axis_core::step()
+        if (we) d.write(addr, data);  // before the step of the same call, as laserax_top::step()
         const lx::dds_sincos::out_t o = d.step(lx::step_t(in("ostep")), static_cast<unsigned>(in("period")),
                                                static_cast<unsigned>(in("amplitude")));
         if (!check_outputs(res, t, r, {{"sin", o.sin.to_int64()}, {"cos", o.cos.to_int64()}})) ++bad;

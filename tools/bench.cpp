@@ -11,8 +11,8 @@
 #include <memory>
 #include <string>
 
-#include "golden/axis_chain.h"
-#include "hls/axis_core.h"
+#include "golden/laserax_top.h"
+#include "hls/laserax_top.h"
 #include "sysmodel/sim.h"
 #include "tools/laserax/vectors.h"
 
@@ -40,7 +40,7 @@ const char* g_only = nullptr;
 
 // The chain item calls the chain through this non-inlined function, as a testbench does: the whole
 // axis_out is returned (inlined into the bench loop, the unused outputs would not be computed).
-__attribute__((noinline)) lx::axis_out chain_step(lx::axis_core& core, const lx::axis_pins& p,
+__attribute__((noinline)) lx::axis_out chain_step(lx::laserax_top& core, const lx::axis_pins& p,
                                                   const lx::axis_regs& regs) {
     return core.step(p, regs);
 }
@@ -88,9 +88,9 @@ int main(int argc, char** argv) {
         lxt::quad_pins(t / 37, p.a, p.b);
         p.sw = (t / 37) > 5000;
     };
-    report("hls axis_core (full chain)", n, [&](long long k) {
-        const std::unique_ptr<lx::axis_core> core_p(new lx::axis_core);  // on the heap: see heap_note
-        lx::axis_core& core = *core_p;
+    report("hls laserax_top (full chain)", n, [&](long long k) {
+        const std::unique_ptr<lx::laserax_top> core_p(new lx::laserax_top);  // on the heap: see heap_note
+        lx::laserax_top& core = *core_p;
         long long acc = 0;
         for (long long t = 0; t < k; ++t) {
             lx::axis_pins p;
@@ -146,9 +146,9 @@ int main(int argc, char** argv) {
         for (long long t = 0; t < k; ++t) acc += d.step((t % 3) == 0 ? 1 : 0, period, amp).sin.to_int64();
         sink = acc;
     });
-    report("golden axis_chain", n / 4, [&](long long k) {
-        const std::unique_ptr<golden::axis_chain> g_p(new golden::axis_chain);  // see heap_note
-        golden::axis_chain& g = *g_p;
+    report("golden laserax_top", n / 4, [&](long long k) {
+        const std::unique_ptr<golden::laserax_top> g_p(new golden::laserax_top);  // see heap_note
+        golden::laserax_top& g = *g_p;
         g.reset();
         const golden::axis_regs gr;
         long long acc = 0;
@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
                     "golden vectors (build+CSV+hex)", static_cast<double>(total_rows) / s / 1e6, total_rows,
                     tables.size(), static_cast<double>(bytes) / 1e6, s, err.empty() ? "" : (" ERROR: " + err).c_str());
     }
-    std::printf("  model state: sizeof(axis_core) = %zu bytes (of which the table RAM image %zu)\n", sizeof(lx::axis_core),
+    std::printf("  model state: sizeof(laserax_top) = %zu bytes (of which the table RAM image %zu)\n", sizeof(lx::laserax_top),
                 sizeof(lx::tbl_word_t) * lx::axis_widths::TBL_DEPTH);
     return 0;
 }

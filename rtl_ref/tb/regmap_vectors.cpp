@@ -1,7 +1,7 @@
 // regmap_vectors.cpp — vector files for the register map in RTL: the AXI4-Lite slave
 // rtl_ref/laserax_regs.v alone and the IP top rtl_ref/laserax_axil.v (slave + chain). Expected
 // values come from the C++ host helper (lxt::reg_image, host/regmap.h) and the bit-true
-// chain (hls/axis_core.h), never from the Verilog.
+// chain (hls/laserax_top.h), never from the Verilog.
 //
 //   laserax_regs.hex  one row per clock: the AXI4-Lite inputs, the expected AXI outputs and every
 //                     register port o_<name>. Reset values read back at every word of the map
@@ -31,7 +31,7 @@
 // at that edge); ARREADY = !RVALID, RDATA registered at the AR handshake from the registers before
 // that edge. The register contents are a reg_image: a write merges the WSTRB bytes into the
 // word's current value and goes through reg_image::write_word; reads and the o_<name> columns come
-// from reg_image::get. For the chain, the call of edge t runs axis_core::step() with the registers
+// from reg_image::get. For the chain, the call of edge t runs laserax_top::step() with the registers
 // of the image before the writes of edge t (hls_from(image)): a write completing at edge t acts
 // in call t+1, the latency of the register stage in laserax_axil.
 //
@@ -49,7 +49,7 @@
 #include <string>
 #include <vector>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "rtl_ref/tb/vecgen.h"
 #include "host/dds_table.h"
 #include "host/regmap.h"
@@ -418,7 +418,7 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
 
     axil_slave s;
     axil_master m;
-    lx::axis_core core;  // power-up state, table for P = 256 (the RTL's INIT_FILE)
+    lx::laserax_top core;  // power-up state, table for P = 256 (the RTL's INIT_FILE)
     lxt::reg_image host;  // what the host has programmed (its own copy of the map)
 
     auto queue = [&](const std::vector<lxt::reg_write>& seq) {

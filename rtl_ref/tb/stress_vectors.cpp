@@ -56,7 +56,7 @@
 #include <string>
 #include <vector>
 
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "hls/encoder_counter.h"
 #include "hls/pso.h"
 #include "tools/laserax/pso_cmd.h"
@@ -79,7 +79,7 @@ const int kPresets[] = {256, 320, 512, 640, 1280, 4096, 8, 64, 1024};
 vec_table top_stress(rng_t& r, long long calls) {
     vec_table t{"laserax_top_stress", lxt::vec_layout("laserax_top"), {}};
 
-    lx::axis_core core;  // power-up: P = 256 table, period register history 256
+    lx::laserax_top core;  // power-up: P = 256 table, period register history 256
     lx::axis_regs g;     // register values the host has written (reset values, then changes)
     g.glitch_n = 1;
     g.sw_debounce = 3;
@@ -195,7 +195,7 @@ vec_table top_stress(rng_t& r, long long calls) {
             if (r.chance(3000)) g.pace_m = static_cast<unsigned>(r.range(2, 4));
             if (r.chance(3000)) g.backlog_thr = static_cast<unsigned>(r.range(5, 400));
             if (r.chance(5000)) {
-                const uint64_t base = lx::axis_core_cfg::RATIO_DEFAULT;
+                const uint64_t base = lx::laserax_top_cfg::RATIO_DEFAULT;
                 g.ratio = base - base / 20 + r.u() % (base / 10);  // +-5 %
             }
             if (r.chance(5000)) {  // thermal origin term, sometimes the register extremes
@@ -384,7 +384,7 @@ vec_table decoder_stress(rng_t& r, long long calls) {
 vec_table multiplier_stress(rng_t& r, long long calls) {
     vec_table t{"pulse_multiplier_stress", lxt::vec_layout("pulse_multiplier"), {}};
     lx::pulse_multiplier m;
-    uint64_t ratio = lx::axis_core_cfg::RATIO_DEFAULT;
+    uint64_t ratio = lx::laserax_top_cfg::RATIO_DEFAULT;
     int64_t off = 0;
     int dir = 1;
     for (long long k = 0; k < calls; ++k) {
@@ -398,7 +398,7 @@ vec_table multiplier_stress(rng_t& r, long long calls) {
             if (r.chance(5)) pn = static_cast<int64_t>(static_cast<int32_t>(r.u()));
         }
         if (r.chance(400)) ratio = (r.u() & ((1ULL << 37) - 1));
-        if (r.chance(400)) ratio = lx::axis_core_cfg::RATIO_DEFAULT + (r.u() % 1000000ULL);
+        if (r.chance(400)) ratio = lx::laserax_top_cfg::RATIO_DEFAULT + (r.u() % 1000000ULL);
         if (r.chance(300)) {
             const uint64_t ko = r.u() % 6;
             off = ko == 0 ? INT64_MIN : ko == 1 ? INT64_MAX : ko == 2 ? static_cast<int64_t>(r.u())

@@ -7,7 +7,7 @@
 // only through the bus.
 // Reads laserax_axil.hex, written by regmap_vectors (rtl_ref/tb/regmap_vectors.cpp; CTest
 // rtl_laserax_axil): one row per clock, expected columns from the C++ host helper (lxt::reg_image)
-// and the AXI4-Lite slave timing documented in docs/REGISTERS.md, and the chain (hls/axis_core.h)
+// and the AXI4-Lite slave timing documented in docs/REGISTERS.md, and the chain (hls/laserax_top.h)
 // stepped with the registers before each edge's write (a write completing at edge t acts in call
 // t+1). Every output column is compared with the DUT after every rising edge. Row k is clock k
 // after reset: the DUT is held in reset for a few edges, row 0 is applied together with the release

@@ -158,7 +158,7 @@ int cmd_gantry(const std::vector<std::string>& args, size_t first) {
     const int lim = c.skew_limit < 0 ? p : c.skew_limit;
 
     std::printf("laserax gantry: P = %d counts (%.3f um), %s, controller %d units/period, compliance %.3g, arm %s\n", p,
-                p * 0.078125, c.conventional ? "conventional encoders" : "laser + compensator (two axis_core)",
+                p * 0.078125, c.conventional ? "conventional encoders" : "laser + compensator (two laserax_top)",
                 c.resolution, c.compliance, gantry_arm_name(c.arm));
     std::printf("  offset parameter %d counts, real switch offset %d counts, skew limit %d counts\n", c.offset,
                 c.switch_offset, lim);

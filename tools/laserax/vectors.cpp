@@ -18,7 +18,7 @@
 #include "golden/pulse_multiplier.h"
 #include "golden/quad_decoder.h"
 #include "golden/rephase.h"
-#include "hls/axis_core.h"
+#include "hls/laserax_top.h"
 #include "hls/encoder_counter.h"
 #include "hls/pso.h"
 #include "host/dds_table.h"
@@ -834,7 +834,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                             ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
         dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, 0, 0, 0, so.sin, so.cos});
         // the map reads the multiplier's comp and the rephase homed of the previous call (the
-        // registered outputs, as hls/axis_core.h) with the map registers of this call
+        // registered outputs, as hls/laserax_top.h) with the map registers of this call
         if (!emap.step(prev_comp, prev_homed, gr.emap, emp, err)) return false;
         prev_step = dq.step;
         prev_delta = mo.delta;

@@ -1,17 +1,17 @@
-// laserax_top_call.h — host-side (testbench) helper: calls the synthesis top laserax_top(),
+// laserax_axil_call.h — host-side (testbench) helper: calls the synthesis top laserax_axil(),
 // whose arguments are one scalar per register, with the registers of an lx::axis_regs. Header-only
 // and built on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
 //
 // GENERATED FILE - do not edit. Source: regmap/laserax_regs.csv. Command: /usr/bin/python3 scripts/gen_regmap.py
-#ifndef LASERAX_TOOLS_LASERAX_TOP_CALL_H
-#define LASERAX_TOOLS_LASERAX_TOP_CALL_H
+#ifndef LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
+#define LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 
-#include "hls/laserax_top.h"
+#include "hls/laserax_axil.h"
 
 namespace lxt {
 
-inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
-    laserax_top(a, b, sw, lerr,
+inline void laserax_axil_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
+    laserax_axil(a, b, sw, lerr,
                 r.period,
                 r.tbl_period,
                 r.ratio,
@@ -47,4 +47,4 @@ inline void laserax_top_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_
 
 }  // namespace lxt
 
-#endif  // LASERAX_TOOLS_LASERAX_TOP_CALL_H
+#endif  // LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H

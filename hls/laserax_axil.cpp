@@ -1,21 +1,21 @@
-// laserax_top.cpp — Vitis HLS top function of the single-axis interface.
+// laserax_axil.cpp — Vitis HLS top function of the single-axis interface.
 //
 // GENERATED FILE - do not edit. Source: regmap/laserax_regs.csv. Command: /usr/bin/python3 scripts/gen_regmap.py
 //
 // One call = one clock (pipeline, II = 1). Pins are plain wires (ap_none); every register of docs/REGISTERS.md is one scalar argument on the s_axilite
 // slave at its fixed offset (a register wider than 32 bits takes consecutive words, low word
-// first); the outputs are wires. The state of the axis lives in one static axis_core, so the
+// first); the outputs are wires. The state of the axis lives in one static laserax_top, so the
 // function is the whole IP. The block-level control is on the same s_axilite slave (port=return:
 // ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
 // Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
 // the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
 // pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
 // scripts/run_hls.tcl); the default build uses lx_types' own classes.
-#include "hls/laserax_top.h"
+#include "hls/laserax_axil.h"
 
 #include "hls/laserax_regmap.h"
 
-void laserax_top(bool a, bool b, bool sw, bool lerr,
+void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::uint<13> period,
                  lx::uint<13> tbl_period,
                  lx::uint<37> ratio,
@@ -85,7 +85,7 @@ void laserax_top(bool a, bool b, bool sw, bool lerr,
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp
-    static lx::axis_core core;
+    static lx::laserax_top core;
     lx::axis_pins pins;
     pins.a = a;
     pins.b = b;

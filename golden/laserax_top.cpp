@@ -1,5 +1,5 @@
-// golden/axis_chain.cpp — see axis_chain.h (DESIGN.md 4.7).
-#include "golden/axis_chain.h"
+// golden/laserax_top.cpp — see laserax_top.h (DESIGN.md 4.7).
+#include "golden/laserax_top.h"
 
 #include <algorithm>
 #include <utility>
@@ -21,7 +21,7 @@ bool config_ok(const axis_regs& r) {
            r.min_spacing > std::max<int64_t>(r.glitch_n, 1);  // count integrity (DESIGN 4.2)
 }
 
-void axis_chain::reset() {
+void laserax_top::reset() {
     const int64_t keep = last_period_;  // the period memory is not part of the chain's reset
     const bool keep_run = was_running_;
     const uint64_t keep_ratio = ratio_held_;  // held registers: register file, not chain state
@@ -31,7 +31,7 @@ void axis_chain::reset() {
     const bool keep_tbl_we = prev_tbl_we_;
     const bool keep_powered = powered_;
     dds_sincos keep_dds = std::move(dds_);  // keeps its memo of the codes (a pure function)
-    *this = axis_chain{};
+    *this = laserax_top{};
     in_force_ = keep_regs;
     prev_tbl_we_ = keep_tbl_we;
     powered_ = keep_powered;
@@ -45,7 +45,7 @@ void axis_chain::reset() {
     offset_held_ = keep_offset;
 }
 
-axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
+axis_out laserax_top::step(const axis_pins& pins, const axis_regs& presented) {
     // DESIGN 4.7 register stage: this call runs on the registers presented in the previous call
     // (in_force_, read in place); the registers presented now are in force from the next call
     const axis_out o = run(pins);
@@ -54,7 +54,7 @@ axis_out axis_chain::step(const axis_pins& pins, const axis_regs& presented) {
     return o;
 }
 
-axis_out axis_chain::run(const axis_pins& pins) {
+axis_out laserax_top::run(const axis_pins& pins) {
     axis_out o{};
     const axis_regs& regs = in_force_;  // reset() keeps it (the register stage is not chain state)
     if (!powered_) {  // power-up call: no registers in force, every block in reset, outputs 0

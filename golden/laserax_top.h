@@ -1,4 +1,4 @@
-// golden/axis_chain.h — golden model of the whole top, DESIGN.md 4.7 (axis_core / laserax_top),
+// golden/laserax_top.h — golden model of the whole top, DESIGN.md 4.7 (laserax_top),
 // including the configuration check (cfg_ok) and the safe state.
 //
 // Pipeline rule (DESIGN 2, 4.7): one call = one clock edge; a block at call t consumes the
@@ -88,7 +88,7 @@ struct axis_out {
 // state in the call after one with tbl_we = 1: that needs the previous call, see axis_chain.)
 bool config_ok(const axis_regs& r);
 
-class axis_chain {
+class laserax_top {
 public:
     void reset();
     axis_out step(const axis_pins& pins, const axis_regs& regs);
