@@ -91,7 +91,7 @@ struct encoder_counter_regs {
 
     encoder_counter_regs() : rst_on_trig(false), corr_period(encoder_counter_cfg::PERIOD_DEFAULT), wait_arm(false),
                              wait_ch(false), wait_val(0), wait_down(false) {
-        for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+        LX_LOOP(in_src_init) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
             src[c] = 0;
             sim_inc[c] = encoder_counter_cfg::SIM_INC_DEFAULT;
             sim_down[c] = false;
@@ -109,7 +109,7 @@ struct encoder_counter_in {
     encoder_counter_cfg::posin_t pos[encoder_counter_cfg::N_CH];  // nominal output position, bits
 
     encoder_counter_in() : trig(false) {
-        for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+        LX_LOOP(in_qstep_init) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
             qstep[c] = 0;
             pos[c] = 0;
         }
@@ -118,7 +118,7 @@ struct encoder_counter_in {
 
 inline bool encoder_counter_config_ok(const encoder_counter_regs& r) {
     bool ok = r.corr_period >= encoder_counter_cfg::CORR_LAT;
-    for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+    LX_LOOP(check_ch) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
         ok = ok && r.src[c] <= 1;
         ok = ok && (r.src[c] != 1 || r.sim_inc[c] <= encoder_counter_cfg::SIM_INC_MAX);
     }
@@ -140,7 +140,7 @@ public:
         bool cfg_err;
 
         out_t() : tick(false), waiting(false), reached(false), cfg_err(false) {
-            for (int c = 0; c < cfg::N_CH; ++c) {
+            LX_LOOP(out_cnt_init) for (int c = 0; c < cfg::N_CH; ++c) {
                 cnt[c] = 0;
                 step[c] = 0;
                 rst_done[c] = false;
@@ -153,7 +153,7 @@ public:
     encoder_counter() { reset(); }
 
     void reset() {
-        for (int c = 0; c < cfg::N_CH; ++c) {
+        LX_LOOP(reset_ch) for (int c = 0; c < cfg::N_CH; ++c) {
             cnt_[c] = 0;
             ph_[c] = 0;
             sc_[c] = false;
@@ -188,7 +188,7 @@ public:
         // half, then shifts {hi, lo} right. hi starts at 2^(S_FRAC-1): after W_CNT shifts
         // {hi, lo} = scale * cnt + 2^(S_FRAC-1).
         const bool done = k_ == cfg::CORR_LAT;
-        for (int c = 0; c < cfg::N_CH; ++c) {
+        LX_LOOP(corr_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             if (done) {
                 // {hi, lo} >> S_FRAC, low W_CORR bits (the quotient fits), plus the sampled position
@@ -205,7 +205,7 @@ public:
         // a sample while a product is in flight (only after corr_period was lowered live) is
         // dropped: the running product finishes
         if (sample && k_ == 0) {
-            for (int c = 0; c < cfg::N_CH; ++c) {
+            LX_LOOP(sample_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
                 hi_[c] = cfg::acc_t(cfg::HALF);
                 lo_[c] = cfg::lo_t(cnt_[c]);  // the counter before this call
@@ -228,7 +228,7 @@ public:
             f_pos_ = diff > 0;
             f_ok_ = !r.wait_arm;  // an arm in this call changes the value: these flags are stale
         }
-        for (int c = 0; c < cfg::N_CH; ++c) {
+        LX_LOOP(count_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             // simulation: the carry of the phase accumulator counts in the next call (sc_)
             const uint<cfg::W_INC + 1> sum = uint<cfg::W_INC + 1>(ph_[c]) + r.sim_inc[c];
@@ -263,7 +263,7 @@ public:
             w_val_ = r.wait_val;
             w_down_ = r.wait_down;
         }
-        for (int c = 0; c < cfg::N_CH; ++c) {
+        LX_LOOP(out_ch) for (int c = 0; c < cfg::N_CH; ++c) {
             o.cnt[c] = cnt_[c];
             o.rst_pending[c] = pending_[c];
             o.corr[c] = corr_[c];

@@ -145,13 +145,13 @@ public:
     };
 
     error_map() {
-        for (int a = 0; a < cfg::HALF_DEPTH; ++a) {
+        LX_LOOP(tbl_init) for (int a = 0; a < cfg::HALF_DEPTH; ++a) {
             tbl0e_[a] = 0;
             tbl0o_[a] = 0;
             tbl1e_[a] = 0;
             tbl1o_[a] = 0;
         }
-        for (int k = 0; k < cfg::W_DLY; ++k) wq_[k] = wr_t{};
+        LX_LOOP(wq_init) for (int k = 0; k < cfg::W_DLY; ++k) wq_[k] = wr_t{};
         wi_ = 0;
         nw_ = 0;
         reset();
@@ -161,7 +161,7 @@ public:
     // line belong to running calls: they are performed, oldest first, never dropped
     // (ERROR_MAP.md §4).
     void reset() {
-        for (int k = 0; k < cfg::W_DLY; ++k) {
+        LX_LOOP(wq_flush) for (int k = 0; k < cfg::W_DLY; ++k) {
             const unsigned slot = (wi_.to_uint() + unsigned(k)) % unsigned(cfg::W_DLY);
             write(wq_[slot]);
             wq_[slot] = wr_t{};

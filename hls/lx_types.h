@@ -174,6 +174,15 @@ template <int W> using uint = fixed_int<W, false>;
 #define LASERAX_FLATTEN
 #endif
 
+// LX_LOOP(name) names the loop that follows it for Vitis HLS, whose reports and directives refer
+// to a loop by its label. Only the synthesis front end sees the label: GCC and Clang warn of a
+// label no goto uses (-Wunused-label, an error in this build), so the C++ build drops it.
+#ifdef __SYNTHESIS__
+#define LX_LOOP(name) name:
+#else
+#define LX_LOOP(name)
+#endif
+
 namespace lx {
 // Number of bits needed to hold values 0..v; usable with both back ends for derived widths.
 // (compile-time only; a loop rather than recursion to keep the hls/ lint simple).

@@ -57,7 +57,13 @@ struct rephase_cfg {
     using tr_t = sint<W_TR>;
     using br_t = sint<W_BR>;
     using lag_t = sint<W_LAG>;
-    using stage_t = uint<2>;
+    using stage_t = uint<2>;    // the stage output: a stage_id value
+    // the referencing stages (DESIGN 4.5): the values of the stage register and of out_t::stage
+    enum stage_id : unsigned {
+        STAGE_UNHOMED = 1,  // stage 1: un-homed, waiting for the switch edge (A)
+        STAGE_WINDOW = 2,   // stage 2: from A towards B, d paid out over P counts
+        STAGE_HOMED = 3     // stage 3: homed, phase locked, mark on [B, C]
+    };
     using dm_t = uint<2>;       // the form of d at A (d_of)
     using czl_t = uint<W_CZ>;
     using czh_t = uint<W_CZH>;
@@ -80,7 +86,7 @@ public:
     rephase() { reset(); }
 
     void reset() {
-        stage_ = 1;
+        stage_ = cfg::STAGE_UNHOMED;
         paced_ = 0;
         out_pos_ = 0;
         adj_ = 0;
@@ -130,33 +136,33 @@ public:
         //    outputs)
         if (pstep == 0 && lag_ == 0 && w_init_ && !dnew_ && !first_ && !rehome && !unhome &&
             !(sw && !sw_prev_ && sw_seen_)) {
-            if (stage_ == 2) {  // as step_run: from num, k, d before the call
+            if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
                 t_ = cfg::br_t(cfg::br_t(num_) + k_);
                 v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
             }
-            if (stage_ == 1) {
+            if (stage_ == cfg::STAGE_UNHOMED) {
                 tr_ = 0;
                 fresh_ = true;
                 num_ = 0;
             }
             k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-            if (stage_ == 2) form_bs(a_, fwd_, pp);
+            if (stage_ == cfg::STAGE_WINDOW) form_bs(a_, fwd_, pp);
             at_last_ = tr_ == tr_t(pp) - 1;
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
             out_t q;
             q.ostep = 0;
             q.out_pos = out_pos_;
-            q.mark = stage_ == 3 && mark_;  // (no count: the mark register itself)
+            q.mark = stage_ == cfg::STAGE_HOMED && mark_;  // (no count: the mark register itself)
             mark_tests(len_);
-            q.stage = stage_;
+            q.stage = cfg::stage_t(static_cast<unsigned>(stage_));
             q.a = a_;
             q.b = b_;
             q.c = c_;
             q.z = z_;
             q.adj = adj_;
             q.d = d_;
-            q.homed = stage_ == 3;
+            q.homed = stage_ == cfg::STAGE_HOMED;
             q.held = true;
             return q;
         }
@@ -169,10 +175,10 @@ private:
                    period_t mark_len) {
         const cfg::p_t pp = period;
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
-        const bool leave = (unhome || rehome) && stage_ != 1;
-        const bool in2 = stage_ == 2 && !leave;
-        const bool in3 = stage_ == 3 && !leave;
-        const cfg::stage_t stage_prev = stage_;
+        const bool leave = (unhome || rehome) && stage_ != cfg::STAGE_UNHOMED;
+        const bool in2 = stage_ == cfg::STAGE_WINDOW && !leave;
+        const bool in3 = stage_ == cfg::STAGE_HOMED && !leave;
+        const cfg::stage_id stage_prev = stage_;
         const cfg::p_t len_prev = len_;
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
 
@@ -247,14 +253,14 @@ private:
         // (so after a count they are exact again in the next call, before the next count). The
         // model forms them in stage-2 calls only: nothing reads them elsewhere (stage 2 starts
         // fresh, and the first count loads them), the RTL forms them in every call
-        const bool form_tv = stage_ == 2;
+        const bool form_tv = stage_ == cfg::STAGE_WINDOW;
         const cfg::br_t t_rc = form_tv ? cfg::br_t(cfg::br_t(num_) + k_) : t_;
         const cfg::br_t v_rc = form_tv ? cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg)) : v_;
-        if (stage_ == 1) {
+        if (stage_ == cfg::STAGE_UNHOMED) {
             tr_ = 0;
             fresh_ = true;
             num_ = 0;
-        } else if (stage_ == 2) {
+        } else if (stage_ == cfg::STAGE_WINDOW) {
             if (s > 0) {
                 if (fr) {  // num = 0: no carry; num' = d, t' = 2d - P, v' = 0 in the next call
                     fresh_ = false;
@@ -279,26 +285,33 @@ private:
         first_ = in2 && s > 0 && fr;
         // 4b. stage machine
         if (leave) {
-            stage_ = 1;  // the adjustment in place stays (no phase jump)
-        } else if (stage_ == 1) {
-            if (rise && !unhome) {
-                stage_ = 2;
-                a_ = paced_;
-                fwd_ = fwd_last_;
-                wa_ = w_;  // the phase at A; d follows from it in the next call
-                dm_ = cfg::dm_t((fwd_ ? 0 : 2) + ((fwd_ ? z0_ : h_) ? 1 : 0));
-                dnew_ = true;
-            }
-        } else if (stage_ == 2) {
-            if (back) {
-                stage_ = 1;  // back past A: the adjustment is 0 here
-            } else if (homing) {
-                stage_ = 3;
-                const pos_t bb = bs_;  // A + dir*P, formed in an earlier call
-                b_ = bb;
-                c_ = b_add(bb, bs_pm_, cfg::czl_t(mark_len), fwd_);
-                z_ = b_add(bb, bs_pm_, cfg::czl_t(2 * p8), fwd_);
-                len_ = mark_len;
+            stage_ = cfg::STAGE_UNHOMED;  // the adjustment in place stays (no phase jump)
+        } else {
+            switch (stage_) {
+            case cfg::STAGE_UNHOMED:
+                if (rise && !unhome) {
+                    stage_ = cfg::STAGE_WINDOW;
+                    a_ = paced_;
+                    fwd_ = fwd_last_;
+                    wa_ = w_;  // the phase at A; d follows from it in the next call
+                    dm_ = cfg::dm_t((fwd_ ? 0 : 2) + ((fwd_ ? z0_ : h_) ? 1 : 0));
+                    dnew_ = true;
+                }
+                break;
+            case cfg::STAGE_WINDOW:
+                if (back) {
+                    stage_ = cfg::STAGE_UNHOMED;  // back past A: the adjustment is 0 here
+                } else if (homing) {
+                    stage_ = cfg::STAGE_HOMED;
+                    const pos_t bb = bs_;  // A + dir*P, formed in an earlier call
+                    b_ = bb;
+                    c_ = b_add(bb, bs_pm_, cfg::czl_t(mark_len), fwd_);
+                    z_ = b_add(bb, bs_pm_, cfg::czl_t(2 * p8), fwd_);
+                    len_ = mark_len;
+                }
+                break;
+            default:  // STAGE_HOMED: holds, the switch is ignored
+                break;
             }
         }
         // the call after the first count after A: num = d, t = 2d - P from the register d (loaded
@@ -314,7 +327,7 @@ private:
         // k = d - P from the register d (before this call's load): valid from the third call
         // after A, and the first carry can come no earlier (counts >= 2 calls apart)
         k_ = cfg::br_t(cfg::br_t(d_reg) - cfg::br_t(pp));
-        if (stage_prev == 2) form_bs(a_prev, fwd_prev, pp);
+        if (stage_prev == cfg::STAGE_WINDOW) form_bs(a_prev, fwd_prev, pp);
         at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
@@ -344,14 +357,14 @@ private:
         o.ostep = ostep;
         o.out_pos = out_pos_;
         o.mark = mark;
-        o.stage = stage_;
+        o.stage = cfg::stage_t(static_cast<unsigned>(stage_));
         o.a = a_;
         o.b = b_;
         o.c = c_;
         o.z = z_;
         o.adj = adj_;
         o.d = dnew_ ? d_of(wa_, dm_, pp) : d_;
-        o.homed = stage_ == 3;
+        o.homed = stage_ == cfg::STAGE_HOMED;
         return o;
     }
 
@@ -407,7 +420,7 @@ private:
         return pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
-    cfg::stage_t stage_;
+    cfg::stage_id stage_;
     pos_t paced_, out_pos_, adj_;
     bool fwd_last_, sw_prev_, sw_seen_;
     pos_t a_, bs_;

@@ -80,6 +80,11 @@ module rephase (
     localparam integer W_LO  = W_POS / 2; // low half of a position counter (pos_step)
     localparam integer W_CZ  = W_P;       // low part of B = A + dir*P, C = B + dir*mark_len, Z
 
+    // the referencing stages (DESIGN 4.5), the values of stage_q and o_stage
+    localparam [1:0] ST_UNHOMED = 2'd1;  // stage 1: un-homed, waiting for the switch edge (A)
+    localparam [1:0] ST_WINDOW  = 2'd2;  // stage 2: from A towards B, d paid out over P counts
+    localparam [1:0] ST_HOMED   = 2'd3;  // stage 3: homed, phase locked, mark on [B, C]
+
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]              stage_q, stage_d;
     reg signed [W_POS-1:0] paced_q, paced_d, out_pos_q, out_pos_d, adj_q, adj_d;
@@ -154,10 +159,10 @@ module rephase (
     wire                    pz       = !pp_q && !pn_q;
     wire                    pfwd     = !pn_q;           // pstep > 0 when pstep != 0
     wire                    rise     = i_sw && !sw_prev_q && sw_seen_q;
-    wire                    leave    = (un_q || re_q) && stage_q != 2'd1;
-    wire                    in2      = stage_q == 2'd2 && !leave;
-    wire                    in3      = stage_q == 2'd3 && !leave;
-    wire                    cap      = stage_q == 2'd1 && rise && !un_q;
+    wire                    leave    = (un_q || re_q) && stage_q != ST_UNHOMED;
+    wire                    in2      = stage_q == ST_WINDOW && !leave;
+    wire                    in3      = stage_q == ST_HOMED && !leave;
+    wire                    cap      = stage_q == ST_UNHOMED && rise && !un_q;
     // step in the homing direction: s_pos = pstep != 0 && (pstep > 0) == fwd, s_neg likewise,
     // registered in the previous call from i_pstep_nx and the next fwd (sp_q, sn_q)
     wire                    s_pos    = sp_q;
@@ -350,9 +355,9 @@ module rephase (
     // the extra-count test per pstep value without the leave term: a leave call (stage 2 and
     // unhome or rehome) adds no extra count, which the last select applies (lv), so the late
     // unhome level (the decoder's register, across the chip) meets lag' only in the last LUT
-    wire                    dq_p   = stage_q == 2'd2 && (fwd_q ? (!fr && !t_q[W_BR-1])
+    wire                    dq_p   = stage_q == ST_WINDOW && (fwd_q ? (!fr && !t_q[W_BR-1])
                                                                : (tr_pos && v_q[W_BR-1]));
-    wire                    dq_m   = stage_q == 2'd2 && (fwd_q ? (tr_pos && v_q[W_BR-1])
+    wire                    dq_m   = stage_q == ST_WINDOW && (fwd_q ? (tr_pos && v_q[W_BR-1])
                                                                : (!fr && !t_q[W_BR-1]));
     (* keep *) wire lv;
     assign lv = un_q || re_q;
@@ -395,11 +400,11 @@ module rephase (
         //     leave / capture decisions (they read the late unhome level): in stage 1 it is held
         //     at its value at A (tr = 0, num = 0, fresh), so the capture needs no load; a stage-2
         //     call steps it even when it leaves (stage 1 then resets it in the next call)
-        if (stage_q == 2'd1) begin
+        if (stage_q == ST_UNHOMED) begin
             tr_d    = {W_TR{1'b0}};
             fresh_d = 1'b1;
             num_d   = {W_PH{1'b0}};
-        end else if (stage_q == 2'd2) begin
+        end else if (stage_q == ST_WINDOW) begin
             if (s_pos) begin
                 if (fr) fresh_d = 1'b0;                   // num = 0: no carry; num' = d,
                                                           // t' = 2d - P, v' = 0 in the next call
@@ -414,20 +419,20 @@ module rephase (
         first_d = in2 && s_pos && fr;
         // 4b. stage machine
         if (leave) begin
-            stage_d = 2'd1;                                     // the adjustment stays in place
-        end else if (stage_q == 2'd1) begin
+            stage_d = ST_UNHOMED;                               // the adjustment stays in place
+        end else if (stage_q == ST_UNHOMED) begin
             if (cap) begin
-                stage_d = 2'd2;
+                stage_d = ST_WINDOW;
                 a_d     = paced_d;
                 fwd_d   = fwd_last_d;
                 wa_d    = w_n;
                 dm_d    = {!fwd_last_d, fwd_last_d ? z0_n : h_n};
                 dnew_d  = 1'b1;
             end
-        end else if (stage_q == 2'd2) begin
-            if (homing)       stage_d = 2'd3;
-            else if (tr_back) stage_d = 2'd1;                   // back past A
-        end
+        end else if (stage_q == ST_WINDOW) begin
+            if (homing)       stage_d = ST_HOMED;
+            else if (tr_back) stage_d = ST_UNHOMED;             // back past A
+        end                                                     // ST_HOMED: the stage holds
         // the homing count (hom_q: stage 2, no leave, a count up from tr = P - 1, so never
         // the step back past A) loads B, C, Z and L: their enable is the flip-flop itself
         if (homing) begin
@@ -440,16 +445,16 @@ module rephase (
         // tr' > 0 without a compare after the tr add (tr >= 0 always: the step back past A
         // leaves with tr' = 0): 0 at A and on that step; +1 gives tr' >= 1; -1 gives tr' > 0 iff
         // tr >= 2; otherwise tr is held
-        if (stage_q == 2'd1)      tr_pos_d = 1'b0;
-        else if (stage_q == 2'd2) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
-        else                      tr_pos_d = tr_pos_q;
+        if (stage_q == ST_UNHOMED)     tr_pos_d = 1'b0;
+        else if (stage_q == ST_WINDOW) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
+        else                           tr_pos_d = tr_pos_q;
         if (dnew_q) d_d = d_new;      // (= d_cur there: the sum straight into the register)
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
         bs_d      = bs_nx;
         // at_last' = (tr' == P - 1), from the case that formed tr'
-        if (stage_q == 2'd1 || (stage_q == 2'd2 && tr_back)) at_last_d = p_is1;
-        else if (stage_q == 2'd2)                            at_last_d = last_s;
-        else                                                 at_last_d = last_hold;
+        if (stage_q == ST_UNHOMED || (stage_q == ST_WINDOW && tr_back)) at_last_d = p_is1;
+        else if (stage_q == ST_WINDOW)                                   at_last_d = last_s;
+        else                                                             at_last_d = last_hold;
 
         // 5. output step: the real count, or else one pending extra count
         ostep_d   = ostep_n;
@@ -481,7 +486,7 @@ module rephase (
 
     always @(posedge i_clk) begin
         if (i_rst) begin
-            stage_q    <= 2'd1;
+            stage_q    <= ST_UNHOMED;
             paced_q    <= {W_POS{1'b0}};
             out_pos_q  <= {W_POS{1'b0}};
             op_one_q   <= 1'b0;
@@ -584,7 +589,7 @@ module rephase (
         sp_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == (i_rst || fwd_d));
         sn_q <= i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d));
         pp_q <= i_pstep_nx != 2'sd0 && !i_pstep_nx[1];
-        hom_q <= !i_rst && stage_d == 2'd2 && !(i_unhome_nx || i_rehome_nx) && at_last_d &&
+        hom_q <= !i_rst && stage_d == ST_WINDOW && !(i_unhome_nx || i_rehome_nx) && at_last_d &&
                  i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] == fwd_d);
         us_q <= {i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d)), i_pstep_nx != 2'sd0};
         pn_q <= i_pstep_nx[1];
@@ -608,7 +613,7 @@ module rephase (
     assign o_c       = c_q;
     assign o_z       = z_q;
     assign o_adj     = adj_q;
-    assign o_homed   = stage_q == 2'd3;
+    assign o_homed   = stage_q == ST_HOMED;
 
 `ifdef FORMAL
     // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
@@ -675,9 +680,9 @@ module rephase (
     wire [W_POS-1:0] f_pacedn = f_paced + {{(W_POS-2){i_pstep[1]}}, i_pstep};
     wire             f_dlastn = f_pz ? f_dlast : f_pf;
     wire             f_rise   = i_sw && !f_swp && f_sws;
-    wire             f_leave  = (i_unhome || i_rehome) && f_stage != 2'd1;
-    wire             f_capt   = !f_leave && f_stage == 2'd1 && f_rise && !i_unhome;
-    wire             f_in2    = !f_leave && f_stage == 2'd2;
+    wire             f_leave  = (i_unhome || i_rehome) && f_stage != ST_UNHOMED;
+    wire             f_capt   = !f_leave && f_stage == ST_UNHOMED && f_rise && !i_unhome;
+    wire             f_in2    = !f_leave && f_stage == ST_WINDOW;
     wire             f_sp     = !f_pz && (f_pf == f_dir);       // a count in the homing direction
     wire             f_sn     = !f_pz && (f_pf != f_dir);
     wire signed [W_TR-1:0] f_trn = f_tr + (f_sp ? 1 : 0) - (f_sn ? 1 : 0);
@@ -723,7 +728,7 @@ module rephase (
             f_pnz   <= 1'b0;
             f_swp   <= 1'b0;
             f_sws   <= 1'b0;
-            f_stage <= 2'd1;
+            f_stage <= ST_UNHOMED;
             f_dlast <= 1'b1;
             f_dir   <= 1'b1;
             f_paced <= {W_POS{1'b0}};
@@ -756,9 +761,9 @@ module rephase (
             f_anew  <= f_capt;
             f_age   <= f_capt ? 2'd0 : (f_age == 2'd3 ? f_age : f_age + 2'd1);
             if (f_leave) begin
-                f_stage <= 2'd1;
+                f_stage <= ST_UNHOMED;
             end else if (f_capt) begin
-                f_stage <= 2'd2;
+                f_stage <= ST_WINDOW;
                 f_dir   <= f_dlastn;
                 f_a     <= f_pacedn;
                 f_adj0  <= f_tgt;                 // stage 1: the target does not move
@@ -767,15 +772,15 @@ module rephase (
                 f_r     <= {W_P{1'b0}};
                 f_pha   <= f_ptn;
                 f_d     <= f_dn;
-            end else if (f_stage == 2'd2) begin
+            end else if (f_stage == ST_WINDOW) begin
                 f_d  <= f_dv;
                 f_tr <= f_trn;
                 f_q  <= f_qn;
                 f_r  <= f_rn;
                 if (f_back) begin
-                    f_stage <= 2'd1;
+                    f_stage <= ST_UNHOMED;
                 end else if (f_home) begin
-                    f_stage <= 2'd3;
+                    f_stage <= ST_HOMED;
                     f_b     <= f_a + f_dx(f_dir, f_perx);
                     f_len   <= i_mark_len;
                     f_phb   <= f_ptn;
@@ -835,8 +840,8 @@ module rephase (
             if (i_pstep == 2'sd1)  assert((dq_p && !lv) == dq_nz);
             if (i_pstep == -2'sd1) assert((dq_m && !lv) == dq_nz);
             assert(dnew_q == f_anew && f_anew == (f_age == 2'd0));
-            if (f_anew) assert(f_stage != 2'd3);                     // homing takes P counts
-            if (first_q) assert(f_stage == 2'd2 && !fresh_q);        // right after the first count
+            if (f_anew) assert(f_stage != ST_HOMED);                 // homing takes P counts
+            if (first_q) assert(f_stage == ST_WINDOW && !fresh_q);   // right after the first count
             assert(!tr_q[W_TR-1] && tr_pos_q == (tr_q != {W_TR{1'b0}}));   // tr >= 0, tr_pos
 `ifdef FORMAL_ADJ
             // the adjustment target of the text: adj + lag
@@ -852,7 +857,7 @@ module rephase (
                 assert(h_q == ({1'b0, w_q} >= (f_per >> 1)));
             end
             // from A on: d < P, loaded in the call after A
-            if (f_stage != 2'd1) begin
+            if (f_stage != ST_UNHOMED) begin
                 if (!f_anew) assert(f_d < f_per);
                 assert(wa_q < f_per);
                 assert(dm_q == {!fwd_q, fwd_q ? (wa_q == {W_PH{1'b0}}) : ({1'b0, wa_q} >= (f_per >> 1))});
@@ -863,7 +868,7 @@ module rephase (
             // forward, (phA - 3P/8) mod P backward, phA that phase at A
             assert(f_pt < f_per);
             assert(f_pt == f_plag);
-            if (f_stage != 2'd1) begin
+            if (f_stage != ST_UNHOMED) begin
                 assert(f_pha < f_per);
                 assert({1'b0, d_cur} == f_d);
                 assert(wa_q == f_addp(f_pha, f_p8, f_per));         // w at A
@@ -871,9 +876,9 @@ module rephase (
             end
 `endif
 `endif
-            if (f_stage != 2'd1) assert(a_q == f_a && fwd_q == f_dir);
+            if (f_stage != ST_UNHOMED) assert(a_q == f_a && fwd_q == f_dir);
             // ---- stage 2: the adjustment is adj0 + dir * floor(d * tr / P), tr in [0, P) ----
-            if (f_stage == 2'd2) begin
+            if (f_stage == ST_WINDOW) begin
                 assert(f_tr >= 0 && f_tr < $signed({1'b0, f_per}));
                 assert(f_ta == {{(W_POS-W_TR){f_tr[W_TR-1]}}, f_tr});   // tr = dir * (paced - A)
                 assert(tr_q == f_tr);
@@ -918,7 +923,7 @@ module rephase (
 `endif
             end
             // ---- stage 3 (homed) ----
-            if (f_stage == 2'd3) begin
+            if (f_stage == ST_HOMED) begin
                 // B - A = dir * P, Z - B = dir * P/4 (so Z - A = dir * (P + P/4)),
                 // C - B = dir * mark_len of the homing call
                 assert(b_q == f_b && f_b == f_a + f_dx(f_dir, f_perx));

@@ -162,7 +162,7 @@ MUTATIONS=(
   "rep_h_flag|rephase.v|rephase_adj|s/(h || w0 == p2m1)/(h || w0 == p2)/"
   "rep_dm_mode|rephase.v|rephase_adj|s/fwd_last_d ? z0_n : h_n};/fwd_last_d ? z0_n : h};/"
   "rep_mark_len|rephase.v|rephase|s/wire        mp_n   = u_m1 || (u_hz \&\& u_lt);/wire        mp_n   = u_m1 || (u_hz \&\& u_le1);/"
-  "rep_hom_lv|rephase.v|rephase|s/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !(i_unhome_nx || i_rehome_nx)/hom_q <= !i_rst \&\& stage_d == 2'd2 \&\& !i_unhome_nx/"
+  "rep_hom_lv|rephase.v|rephase|s/hom_q <= !i_rst \&\& stage_d == ST_WINDOW \&\& !(i_unhome_nx || i_rehome_nx)/hom_q <= !i_rst \&\& stage_d == ST_WINDOW \&\& !i_unhome_nx/"
   "rep_mark_hold|rephase.v|rephase|s/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mark_q;/wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mp_q;/"
   "rep_paced_wrap|rephase.v|rephase|s/pa_zero_n = pa_h1 \&\& pa_b == 2'd3;/pa_zero_n = pa_h1 \&\& pa_b == 2'd2;/"
   "if_glitch_flag|input_filter.v|quad_decoder|s/cnz_d = 1'b1; /cnz_d = 1'b0; /"
