@@ -1,4 +1,5 @@
-// golden/calibration.cpp — see calibration.h (seed 001 forms, least-squares scale/offset fit).
+// golden/calibration.cpp — see calibration.h (the forms of RTC5 linear movements, docs/SOURCES.md;
+// least-squares scale/offset fit).
 #include "golden/calibration.h"
 
 #include <cmath>

@@ -1,6 +1,7 @@
 // golden/calibration.h — scale calibration of an incremental axis from measured data (issue 3).
 //
-// Seed 001 (SCANLAB RTC5, "Determining scaling factors") calibrates an encoder-driven correction:
+// RTC5 linear movements (docs/SOURCES.md: the RTC5 manual, "Determining scaling factors")
+// calibrates an encoder-driven correction:
 //   encoder increment   i = (counter end - counter start) / distance travelled   [counts/mm]
 //   scaling factor      Scale = K / i                                          [bits/count]
 //   constant speed      Scale = K * v / (10^6 counts/s)     (simulated encoder at 1 MHz, v in mm/s)
@@ -29,7 +30,7 @@ struct increment_result {
     double counts_per_mm = 0.0;  // i
 };
 
-// i = (end - start) / distance. counter_bits 1..63: the counters wrap at that width (seed: 32).
+// i = (end - start) / distance. counter_bits 1..63: the counters wrap at that width (the source: 32).
 increment_result encoder_increment(int64_t counter_start, int64_t counter_end, double distance_mm, int counter_bits = 32);
 
 struct scale_result {

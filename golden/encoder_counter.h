@@ -1,5 +1,6 @@
 // golden/encoder_counter.h — golden model of docs/PSO_COUNTERS.md §3 (encoder counters) and the
-// scale-factor helpers of §3.5 (seed 001; the seed's formulas are in golden/calibration.h).
+// scale-factor helpers of §3.5 (RTC5 linear movements, docs/SOURCES.md; its formulas are in
+// golden/calibration.h).
 //
 // Written from the definitions: each counter is kept as an unwrapped int64 count and shown as
 // its 32-bit two's complement residue; the simulation is the exact commanded count
@@ -82,8 +83,8 @@ int64_t wrap_s32(int64_t v);
 // Wrap-aware difference of two 32-bit readings: the value of (b - a) mod 2^32 in [-2^31, 2^31).
 int64_t counter_diff(int64_t a, int64_t b);
 
-// ---- calibration helpers (seed 001) -----------------------------------------------------------
-// The seed's forms themselves are in golden/calibration.h (issue 3): encoder_increment (start/end
+// ---- calibration helpers (RTC5 linear movements) ----------------------------------------------
+// The source's forms themselves are in golden/calibration.h (issue 3): encoder_increment (start/end
 // readings, modulo-2^32 difference), scale_from_increment (Scale = K / i), scale_from_speed
 // (Scale = K * v / 10^6 counts/s) and fit_scale_offset (Eigen least squares). What the counter
 // block adds:

@@ -2,9 +2,9 @@
 // sequence of docs/GANTRY.md: X1 homed as master with X2 tracking, X2 homed with X1 tracking,
 // X1 master again, skew check against a limit with an offset parameter, deskew by X2 alone.
 //
-// Written from the seed's reasoning, not from hls/ and not from the cycle-accurate simulation
-// (sysmodel/gantry): every quantity is a closed-form function of the physical set-up, in
-// double.
+// Written from the reasoning of Laser scale referencing (docs/SOURCES.md), not from hls/ and not
+// from the cycle-accurate simulation (sysmodel/gantry): every quantity is a closed-form function
+// of the physical set-up, in double.
 //
 //   * Each compensator counts real output counts p(x) from the moment its laser became ready
 //     (pulse multiplication: p = floor(N * ratio), N = raw laser counts since ready).
@@ -14,7 +14,7 @@
 //   * The controller holds the measured positions of the two axes locked (tracking moves keep
 //     m1 - m2 constant), and measured = real + rephase adjustment. So the real counts of the two
 //     axes drift apart by exactly the adjustments: (p1 - p2) = lock - d1 + d2 once both are homed
-//     (the seed: X2 moves d1 further while X1 is rephased, X1 moves d2 further while X2 is).
+//     (the note: X2 moves d1 further while X1 is rephased, X1 moves d2 further while X2 is).
 //   * Homing zeroes each controller counter at its own Z, so the skew the controller measures is
 //       skew = (p1 - Z1) - (p2 - Z2) = lock - d1 + d2 - (Z1 - Z2),
 //     a geometric term (switch offset) plus the temporary rephase skew d2 - d1, |d2 - d1| < P.
@@ -84,7 +84,7 @@ gantry_prediction predict_gantry(const gantry_setup& s);
 // Rephase amount for forward homing: (7P/8 - phase_at_a) mod P, in [0, P).
 double gantry_rephase_amount(int period, double phase_at_a);
 
-// The seed's bound on the temporary skew: the largest |d2 - d1| over all power-up phases, P - 1
+// The note's bound on the temporary skew: the largest |d2 - d1| over all power-up phases, P - 1
 // (d takes every value 0..P-1). In output counts.
 double gantry_worst_skew(int period);
 

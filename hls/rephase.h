@@ -1,7 +1,7 @@
 // rephase.h — referencing state machine: stage 1/2/3, points A, B, Z, C, phase adjustment d.
 //
-// DESIGN §4.5 (the seed's Figure 4). Positions are counted on the paced stream of real output
-// counts. At A (rising edge of the debounced reference switch) the block computes the extra
+// DESIGN §4.5 (Figure 4 of Laser scale referencing, docs/SOURCES.md). Positions are counted on
+// the paced stream of real output counts. At A (rising edge of the debounced reference switch) the block computes the extra
 // advance d in [0, P) that puts the output phase at P/8 (sin == cos > 0) at Z = A + dir*(P + P/4),
 // and spreads it over the P counts from A to B as adj = adj0 + dir * floor(d * tr / P), where tr is
 // the real travel beyond A. Hardware form (§4.5 "Hardware form"; every per-call path is one

@@ -92,7 +92,7 @@ encoder_scaling to_encoder_scaling(const thermal_params& p) {
 }
 
 int64_t k169_e7_from_physical(double alpha_ppm_per_c, double temp_c) {
-    const double k169 = alpha_ppm_per_c * 1e-6 * (20.0 - temp_c) * 1e5;  // seed 002 units
+    const double k169 = alpha_ppm_per_c * 1e-6 * (20.0 - temp_c) * 1e5;  // the units of ETEL encoder scaling
     return rha_ll(k169 * static_cast<double>(kK169Decimals));
 }
 

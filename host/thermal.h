@@ -7,7 +7,7 @@
 //     correction = (position - origin) * alpha * (20 - T)                              (1)
 //     output     = floor(position + correction)                (integer output counts)
 //
-// Seed 002 (ETEL "encoder scaling") writes the same linear correction as
+// ETEL encoder scaling (docs/SOURCES.md) writes the same linear correction as
 //
 //     Correction = (position - K168) * K169 / 100000                                    (2)
 //
@@ -89,7 +89,7 @@ thermal_status make_thermal(double alpha_ppm_per_c, double temp_c, int64_t origi
 
 // (origin, alpha, T) -> (K168, K169): exact.
 encoder_scaling to_encoder_scaling(const thermal_params& p);
-// K169 from the physical values with the seed's formula in floating point, rounded to 7 decimals
+// K169 from the physical values with that source's formula in floating point, rounded to 7 decimals
 // (gives the same k169_e7 as to_encoder_scaling for values on the fixed-point grid).
 int64_t k169_e7_from_physical(double alpha_ppm_per_c, double temp_c);
 // Material temperature that a K169 means for a given alpha (inverse; alpha != 0).

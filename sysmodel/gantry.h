@@ -1,7 +1,7 @@
 // gantry.h — cycle-accurate system simulation of a twin-rail gantry (docs/GANTRY.md): two
 // instances of the single-axis HLS top (lx::laserax_top, X1 and X2) feeding a controller model that
 // decodes their sin/cos outputs like a real controller's interpolator, and the homing sequence of
-// the seed's "referencing a twin axis" sections:
+// the "referencing a twin axis" sections of Laser scale referencing (docs/SOURCES.md):
 //
 //   power-up   each laser becomes ready (starts counting) at its own position while the square
 //              gantry is positioned on its motor encoders: the two compensators power up with

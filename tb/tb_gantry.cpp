@@ -99,7 +99,7 @@ std::string verify(const lxt::gantry_config& c, const lxt::gantry_result& r, con
         return e.str();
     }
     // the physical rack during motion (rephase skew plus the tracking axis' following error) stays
-    // within the seed's bound too: below P + 1 counts (the following error is under one count)
+    // within the bound of Laser scale referencing too: below P + 1 counts (the following error is under one count)
     if (r.max_rack >= p + 1) {
         e << "physical rack reached " << r.max_rack << " counts during the sequence (P = " << p << ")";
         return e.str();
