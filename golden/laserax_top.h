@@ -85,7 +85,7 @@ struct axis_out {
 // DESIGN 4.7: 8 <= P <= 4096, P % 8 == 0, ratio != 0, 2 <= pace_m, 12 <= dac_width <= 18,
 // 1 <= amplitude <= 2^(dac_width-1) - 1, tbl_period == P, P/4 <= mark_len <= P, tbl_we == 0,
 // min_spacing > max(glitch_n, 1) (count integrity, DESIGN 4.2). (The chain also holds the safe
-// state in the call after one with tbl_we = 1: that needs the previous call, see axis_chain.)
+// state in the call after one with tbl_we = 1: that needs the previous call, see laserax_top.)
 bool config_ok(const axis_regs& r);
 
 class laserax_top {

@@ -124,8 +124,8 @@ int main(int argc, char** argv) {
         s.glitch_n = 0;
         lx::axis_regs hr = lxt::to_hls(s);
         golden::axis_regs gr = lxt::to_golden(s);
-        lx::axis_core core;
-        golden::axis_chain gold;
+        lx::laserax_top core;
+        golden::laserax_top gold;
         gold.reset();
         int safe_h = 0, safe_g = 0;
         for (int t = 0; t < 200; ++t) {
