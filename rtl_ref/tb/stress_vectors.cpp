@@ -938,7 +938,7 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // INC_MAX + 1), firing distance 2 counts exactly .. 200 counts with a random fraction, array
 // mode (length 1..64, wrap or not, entries rewritten while disabled), pulse width 1..80, the
 // window on any source with edges next to the current position, laser minimum period 0..300
-// (freq_err; spacing_err in part-speed). One segment in 7 is short and invalid (K 0 or 17..31,
+// (freq_err; spacing_err in part-speed). One segment in 4 is short and invalid (K 0 or 17..31,
 // distance or an entry below 2 counts, length 0 or 65..127, no axis, pulse width 0, low > high,
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
 // per call on every axis: fires in consecutive calls at small distances; reversals), enable
@@ -960,7 +960,9 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // fire that makes the array done takes none, entry 0 would be flagged). Calls 540..599: a 3D
 // diagonal with K = 1 on an array of five distinct entries just above 2 counts with wrap: runs
 // of up to six fires in consecutive calls, every index move picking a different entry (the
-// prefetch's deepest read, next^4 of the index two calls before).
+// prefetch's deepest read, next^4 of the index two calls before). Calls 600..699: the same with
+// an entry rewritten in every call (2 .. 2.05 counts, at every offset 0..4 from the index shown):
+// writes presented with each of the four reads and forwarded into the thresholds.
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -976,6 +978,8 @@ vec_table pso_stress(rng_t& r, long long calls) {
     int64_t last_idx = 0;
     bool hammer = false;
     long long drop_call = -1;  // directed prologue: the first call from 60 on with idx != 0  // this segment writes the entries at idx .. idx + 2 in most calls
+    long long repair_at = -1;  // a bad entry written while running is rewritten (>= 2 counts) in
+    int repair_addr = 0;       //   this call or the first later call without a write
     auto draw_dist = [&]() -> uint64_t {
         switch (r.range(0, 4)) {
             case 0: return C::MIN_DIST;
@@ -1023,7 +1027,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.axis_mask = 7;
                 for (int a = 0; a < 3; ++a) prob[a] = 1.0;
             }
-            if (r.chance(7)) {  // an invalid segment, short
+            if (r.chance(4)) {  // an invalid segment, short
                 seg_end = n + r.range(1, 40);
                 switch (r.range(0, 8)) {
                     case 0: x.win_k = r.chance(2) ? 0 : static_cast<int>(r.range(17, 31)); break;
@@ -1073,6 +1077,21 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.arr_data = r.chance(30) ? static_cast<uint64_t>(r.range(0, static_cast<int64_t>(C::MIN_DIST - 1)))
                              : hammer    ? C::MIN_DIST + (r.u() & 0x1ffffffffULL)
                                          : draw_dist();
+                if (x.arr_data < C::MIN_DIST) {  // bad: the run is invalid while the entry is in use
+                    repair_addr = x.arr_addr;
+                    repair_at = n + 1 + n % 24;  // (no draw)
+                } else if (x.arr_addr == repair_addr) {
+                    repair_at = -1;              // rewritten by the stream itself
+                }
+            } else if (repair_at >= 0 && n >= repair_at) {
+                // the repair: a bad entry written while running makes 1..24 invalid calls, not
+                // the rest of its segment (without it, which of these writes hit a used entry,
+                // and so how many calls ran, moved with the model's index: 6782 of 30000 calls
+                // invalid after the writes were widened to next^4, 2981 before)
+                x.arr_we = true;
+                x.arr_addr = repair_addr;
+                x.arr_data = C::MIN_DIST + ((static_cast<uint64_t>(n) * 0x9e3779b9ULL) & 0xffffffffULL);
+                repair_at = -1;
             }
             if (r.chance(800)) g.fire_dist = draw_dist();  // live change
             x.fire_dist = g.fire_dist;
@@ -1187,6 +1206,24 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.arr_addr = static_cast<int>(n - 540);
                 x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n - 540) << 20);
             }
+            for (int a = 0; a < 3; ++a) {
+                in.step[a] = 1;
+                in.pos[a] = n;
+            }
+        }
+        if (n >= 600 && n < 700) {  // directed: consecutive fires while every call rewrites an entry
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.axis_mask = 7;
+            x.win_k = 1;
+            x.pulse_w = 1;
+            x.arr_en = true;
+            x.arr_len = 5;
+            x.arr_wrap = true;
+            x.enable = n >= 606;
+            x.arr_we = n < 605 || n >= 608;
+            x.arr_addr = static_cast<int>(n < 605 ? n - 600 : (last_idx + n % 5) % 5);
+            x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n % 4) << 26);   // 2 .. 2.05 counts
             for (int a = 0; a < 3; ++a) {
                 in.step[a] = 1;
                 in.pos[a] = n;
