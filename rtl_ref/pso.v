@@ -198,7 +198,15 @@ module pso (
     reg                     fw1_q, fw2_q, fw3_q, fw4_q;   // the write presented with the read hit its address
     reg [W_DIST-1:0]        th1_q, th2_q, th3_q;          // thresholds: entries next(idx) .. next^3(idx)
                                                           //   of the last call, or fire_dist
-    reg                     adv_q;        // the last call moved the index
+    reg                     adv_q;        // the last call moved the index (B2's operand pick)
+    // copies of adv_q, one per group of its loads (about 60 each instead of about 450 on one
+    // net): each is adv and a register that is 1 in every call that can move the index (the
+    // valid bits and the check, all 1 while the tracking state runs), so that Yosys keeps them
+    // apart (equal flip-flops would be merged into one)
+    reg                     adv_t_q;      //   B2's threshold pick, done_c
+    reg                     adv_b0_q, adv_b1_q;   // B1's thF0, thF1
+    reg                     adv_g1_q, adv_g2_q, adv_g3_q;   // the prefetch's g1 .. g3, pw1 .. pw3
+    reg                     adv_i_q;      //   the index registers' pick (idx_l .. nx4_l)
     // run state and latched mode registers
     reg                     run_q, ps_q, arr_en_q, arr_wrap_q;
     reg [2:0]               mask_q;
@@ -206,6 +214,8 @@ module pso (
     // stage A
     reg [11:0]              ta_q;         // |D| per axis (4 bits each, axis 0 low)
     reg [2:0]               tp_q, tn_q;   // D > 0, D < 0 per axis
+    reg [2:0]               ge0_q, ge1_q; // |D| >= K, |D| + 1 >= K per axis (K in force in this
+                                          //   call: formed in the last call with the K presented)
     reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
     reg                     a_wen_q;      // window of this call: enable, position, edges (the
     reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R; source 3,
@@ -213,7 +223,8 @@ module pso (
     reg [W_CHORD-1:0]       rom_q;        // ROM data at the address s of the last call (block
                                           //   RAM, not reset: masked by a_v)
     reg [W_INC-1:0]         ph_q;
-    reg signed [W_POS-1:0]  ps_cnt_q;
+    reg signed [W_POS-1:0]  ps_b_q, ps_i_q;   // pulse count before the last call's pulse
+                                          //   (a_pulse), and it + 1: the count is one of the two
     // spacing product
     reg [4:0]               sp_k_q;
     reg                     sp_en_q;      // a sample is held, its min_period != 0 and its
@@ -406,11 +417,11 @@ module pso (
     // The index of this call (after the decisions up to the last call) is idx_l: the registers
     // idx_p .. nx4_p hold it before the last call's move and adv_q is that move, so a decision
     // goes into one register (adv_q) and not into the index registers.
-    wire [6:0]       idx_l  = adv_q ? nx_p_q : idx_p_q;
-    wire [6:0]       nx_l   = adv_q ? nx2_p_q : nx_p_q;
-    wire [6:0]       nx2_l  = adv_q ? nx3_p_q : nx2_p_q;
-    wire [6:0]       nx3_l  = adv_q ? nx4_p_q : nx3_p_q;
-    wire [6:0]       nx4_l  = adv_q ? next_idx(nx4_p_q, len_q) : nx4_p_q;
+    wire [6:0]       idx_l  = adv_i_q ? nx_p_q : idx_p_q;
+    wire [6:0]       nx_l   = adv_i_q ? nx2_p_q : nx_p_q;
+    wire [6:0]       nx2_l  = adv_i_q ? nx3_p_q : nx2_p_q;
+    wire [6:0]       nx3_l  = adv_i_q ? nx4_p_q : nx3_p_q;
+    wire [6:0]       nx4_l  = adv_i_q ? next_idx(nx4_p_q, len_q) : nx4_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
     // read data of the last call (addresses next(idx) .. next^4(idx) of that call), the write
@@ -421,9 +432,9 @@ module pso (
     wire [W_DIST-1:0] e2 = fw2_q ? f_data_q : rd2_q;
     wire [W_DIST-1:0] e3 = fw3_q ? f_data_q : rd3_q;
     wire [W_DIST-1:0] e4 = fw4_q ? f_data_q : rd4_q;
-    wire [W_DIST-1:0] g1 = adv_q ? e2 : e1;
-    wire [W_DIST-1:0] g2 = adv_q ? e3 : e2;
-    wire [W_DIST-1:0] g3 = adv_q ? e4 : e3;
+    wire [W_DIST-1:0] g1 = adv_g1_q ? e2 : e1;
+    wire [W_DIST-1:0] g2 = adv_g2_q ? e3 : e2;
+    wire [W_DIST-1:0] g3 = adv_g3_q ? e4 : e3;
     // the write presented in this call (in force in the next) forwarded: its address compared
     // with both index registers, picked by adv_q after the compare; the forward is the last
     // select (pwk: the write hits entry k of the next call in array mode; th1 of the run's first
@@ -434,9 +445,9 @@ module pso (
     wire              eq2   = (i_arr_addr == nx2_p_q[5:0]);
     wire              eq3   = (i_arr_addr == nx3_p_q[5:0]);
     wire              eq4   = (i_arr_addr == nx4_p_q[5:0]);
-    wire              pw1   = pwe && !nf && (adv_q ? eq2 : eq1);
-    wire              pw2   = pwe && (adv_q ? eq3 : eq2);
-    wire              pw3   = pwe && (adv_q ? eq4 : eq3);
+    wire              pw1   = pwe && !nf && (adv_g1_q ? eq2 : eq1);
+    wire              pw2   = pwe && (adv_g2_q ? eq3 : eq2);
+    wire              pw3   = pwe && (adv_g3_q ? eq4 : eq3);
     // array mode of the next call (a run's calls 1, 2, ..: the latched mode), else fire_dist
     // presented now; the first operands of a run take the start threshold thr (th1, picked
     // with adv_q = 0)
@@ -454,8 +465,8 @@ module pso (
     // ---- stage B1 ------------------------------------------------------------------------------
     // thresholds of the fire after the next if this call's B2 does not move the index (thf0) and
     // if it does (thf1): entries next(idx), next^2(idx) of this call (idx moved by adv_q)
-    wire [W_DIST-1:0] thf0 = adv_q ? th2_q : th1_q;
-    wire [W_DIST-1:0] thf1 = adv_q ? th3_q : th2_q;
+    wire [W_DIST-1:0] thf0 = adv_b0_q ? th2_q : th1_q;
+    wire [W_DIST-1:0] thf1 = adv_b1_q ? th3_q : th2_q;
     // Y - thF = Y + ~thF + 1 (one carry-select add of two registers each)
     wire [W_REM-1:0]  y58    = {{(W_REM-W_INCR){1'b0}}, r_y_q};
     wire [W_REM-1:0]  opf0_d = csel(y58, ~{2'b00, thf0}, 1'b1);
@@ -468,7 +479,7 @@ module pso (
     // candidate picked by adv_q, a register, before the add) and picked by the sign.
     wire             pos    = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q));   // u >= 0
     wire [W_REM-1:0] opf    = adv_q ? b_opf1_q : b_opf0_q;
-    wire [W_DIST-1:0] thf   = adv_q ? b_thf1_q : b_thf0_q;
+    wire [W_DIST-1:0] thf   = adv_t_q ? b_thf1_q : b_thf0_q;
     wire [LH-1:0]    yhi    = {{(2*LH-W_INCR){1'b0}}, b_y_q[W_INCR-1:LH]};
     wire [LH:0]      sf_lo  = {1'b0, u_lo_q} + {1'b0, opf[LH-1:0]};
     wire [LH-1:0]    sf_hi  = hi_add(u_hi_q, opf[W_REM-1:LH], u_c_q);
@@ -484,7 +495,7 @@ module pso (
     // The index moves to next(idx) (idx_l .. nx4_l above); idx is the last entry iff
     // next(idx) = 0: "a fire here ends the array" is formed a call ahead for both index moves
     // (stop0, stop1, registers) and picked as the index is
-    wire             done_c = adv_q ? stop1_q : stop0_q;
+    wire             done_c = adv_t_q ? stop1_q : stop0_q;
     wire             adv_c  = arr_en_q && !done_c;
     wire             adv    = dec && adv_c;
     wire             done_d = done_q || (dec && done_c);
@@ -543,10 +554,10 @@ module pso (
     wire             c_max     = pm_lo[16] ? pm_hi1[17] : pm_hi0[16];
     wire             ps_pulse  = ps_e && (over ? c_max : c_in);
     wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
-    wire signed [W_POS-1:0] ps_cnt1  = ps_cnt_q + 38'sd1;
-    // (written as a toggle mask, so that the pulse is a data input of each bit's gate rather
-    // than a clock enable behind a reset term)
-    wire signed [W_POS-1:0] ps_cnt_d = ps_cnt_q ^ ((ps_cnt_q ^ ps_cnt1) & {W_POS{ps_pulse}});
+    // The pulse count after the last call (hls ps_count) is picked from two registers by the
+    // last call's pulse (a_pulse): the pulse of this call goes into one flip-flop only, and the
+    // count's update is a select and an increment of registers.
+    wire signed [W_POS-1:0] ps_cnt   = a_pulse_q ? ps_i_q : ps_b_q;
     // minimum spacing: k = 0 shows the previous sample's check and loads; k = 1..16 step k - 1
     wire             sp_load   = ps_e && (sp_k_q == 5'd0);
     wire             sp_step   = ps_e && (sp_k_q != 5'd0);
@@ -567,6 +578,11 @@ module pso (
     //            : |D_i|^2) (squares of the 4-bit register: LUTs)
     //   kclose = some |Dn_i| >= K (compares of the register with K, picked by rev and the move)
     wire       k1 = (f_win_k_q <= 5'd1);
+    // the compares with K of the next call (K presented now) for the values |D| can take next:
+    // 0, 1 (after a close or a reversal), |D|, |D| + 1 (registered as ge0, ge1 with the new |D|)
+    wire       z0 = (i_win_k == 5'd0);
+    wire       z1 = (i_win_k <= 5'd1);
+    wire       z2 = (i_win_k <= 5'd2);
     wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
     wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
     wire [2:0] tr  = run_q ? (mask_q & {3{!ps_q}}) : (f_axis_mask_q & {3{!f_part_speed_q}});
@@ -578,17 +594,19 @@ module pso (
     wire [8:0] sqs [0:2];
     wire [2:0] kc;
     wire [3:0] ta_n [0:2];
+    wire [2:0] p0, p1, p2;   // |D| >= K, |D| + 1 >= K, |D| + 2 >= K for the K presented
     genvar ax;
     generate
         for (ax = 0; ax < 3; ax = ax + 1) begin : g_axis
             wire [3:0] a    = ta_q[4*ax+3:4*ax];
             wire [8:0] sq0  = sq4(a);                 // |D|^2 and (|D| + 1)^2: one LUT per bit
             wire [8:0] sq1  = sq4p1(a);
-            wire       ge0  = ({1'b0, a} >= f_win_k_q);
-            wire       ge1  = ({1'b0, a} + 5'd1 >= f_win_k_q);
             wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
             assign sqs[ax]  = mv[ax] ? sq1 : sq0;     // without a reversal
-            assign kc[ax]   = mv[ax] ? ge1 : ge0;   // the close without a reversal
+            assign kc[ax]   = mv[ax] ? ge1_q[ax] : ge0_q[ax];   // the close without a reversal
+            assign p0[ax]   = ({1'b0, a} >= i_win_k);
+            assign p1[ax]   = ({1'b0, a} + 5'd1 >= i_win_k);
+            assign p2[ax]   = ({1'b0, a} + 5'd2 >= i_win_k);
             assign ta_n[ax] = magn[3:0];
         end
     endgenerate
@@ -602,12 +620,17 @@ module pso (
     wire [11:0]    ta_d   = kclose ? 12'd0 : {ta_n[2], ta_n[1], ta_n[0]};
     wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
     wire [2:0]     tn_d   = (dw | (tn_q & {3{!rev}})) & {3{!kclose}};
+    // ge0 / ge1 of the next call for |D|' = 0 (close), mv (reversal), |D| + mv
+    wire [2:0]     ge0_d  = kclose ? {3{z0}} : rev ? ((mv & {3{z1}}) | (~mv & {3{z0}}))
+                                                   : ((mv & p1) | (~mv & p0));
+    wire [2:0]     ge1_d  = kclose ? {3{z1}} : rev ? ((mv & {3{z2}}) | (~mv & {3{z1}}))
+                                                   : ((mv & p2) | (~mv & p1));
     // window
     wire signed [W_POS-1:0] wp = (f_win_src_q == 2'd2) ? i_pos2 : (f_win_src_q == 2'd1) ? i_pos1 : i_pos0;
     // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
     // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
-    // (source 3: the count after the last call's pulse is the register ps_cnt now)
-    wire signed [W_POS-1:0] a_w = a_w3_q ? ps_cnt_q : a_wp_q;
+    // (source 3: the count after the last call's pulse is ps_cnt now)
+    wire signed [W_POS-1:0] a_w = a_w3_q ? ps_cnt : a_wp_q;
     // Each compare as a 19-bit upper part (signed: <, <=) and a 19-bit lower part (unsigned <=),
     // registered in R and combined in B1 (the window result is used in B3):
     //   lo <= w  iff  lo_u < w_u || (lo_u <= w_u && lo_l <= w_l), and w <= hi likewise
@@ -757,6 +780,8 @@ module pso (
             ta_q <= 12'd0;
             tp_q <= 3'd0;
             tn_q <= 3'd0;
+            ge0_q <= {3{!i_rst && z0}};   // |D| = 0 in the next call (K = 16 after i_rst)
+            ge1_q <= {3{!i_rst && z1}};
             a_rev_q <= 1'b0;
             a_kclose_q <= 1'b0;
             a_pulse_q <= 1'b0;
@@ -767,7 +792,8 @@ module pso (
             a_whi_q <= {W_POS{1'b0}};
             a_v_q <= 1'b0;
             ph_q <= {W_INC{1'b0}};
-            ps_cnt_q <= {W_POS{1'b0}};
+            ps_b_q <= {W_POS{1'b0}};
+            ps_i_q <= {{(W_POS-1){1'b0}}, 1'b1};
             sp_k_q <= 5'd0;
             sp_en_q <= 1'b0;
             sp_go_q <= 1'b0;
@@ -800,6 +826,13 @@ module pso (
             done_o_q <= 1'b0;
             idx_p_q <= 7'd0;
             adv_q <= 1'b0;
+            adv_t_q <= 1'b0;
+            adv_b0_q <= 1'b0;
+            adv_b1_q <= 1'b0;
+            adv_g1_q <= 1'b0;
+            adv_g2_q <= 1'b0;
+            adv_g3_q <= 1'b0;
+            adv_i_q <= 1'b0;
             nx_p_q <= i_rst ? 7'd0 : nx_0;
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
@@ -829,6 +862,8 @@ module pso (
             ta_q <= ta_d;
             tp_q <= tp_d;
             tn_q <= tn_d;
+            ge0_q <= ge0_d;
+            ge1_q <= ge1_d;
             a_rev_q <= rev;
             a_kclose_q <= kclose;
             a_pulse_q <= ps_pulse;
@@ -839,7 +874,8 @@ module pso (
             a_whi_q <= f_win_high_q;
             a_v_q <= 1'b1;
             ph_q <= ph_d;
-            ps_cnt_q <= ps_cnt_d;
+            ps_b_q <= ps_cnt;
+            ps_i_q <= ps_cnt + 38'sd1;
             sp_go_q <= sp_step && (sp_k_q == 5'd16) && sp_en_q;   // k = 0 and a sample held next
             if (sp_load) begin
                 sp_k_q <= 5'd1;
@@ -882,6 +918,13 @@ module pso (
             c_tm_q <= pos ? {W_DIST{1'b0}} : thr_q;
             idx_p_q <= idx_l;
             adv_q <= adv;
+            adv_t_q <= adv && b_v_q;      // (adv implies each of these registers is 1)
+            adv_b0_q <= adv && r_v_q;
+            adv_b1_q <= adv && a_v_q;
+            adv_g1_q <= adv && u_v_q;
+            adv_g2_q <= adv && run_q;
+            adv_g3_q <= adv && ok_ae_q;
+            adv_i_q <= adv && ok_w_q;
             nx_p_q <= nx_l;
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
@@ -953,7 +996,7 @@ module pso (
     assign o_freq_err     = freq_err_q;
     assign o_freq_st      = freq_st_q;
     assign o_ps_pulse     = ps_pulse_q;
-    assign o_ps_count     = ps_cnt_q;
+    assign o_ps_count     = ps_cnt;      // a select of two registers by a register
     assign o_cfg_err      = cfg_err_q;
 
 endmodule
