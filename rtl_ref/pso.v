@@ -131,6 +131,22 @@ module pso (
     localparam [W_INC-1:0] INC_MAX = 32'd1030792151;  // floor(0.24 * 2^32): 24 MHz
     localparam integer LH       = W_REM / 2;   // 29: halves of u and of the carry-select adds
 
+    // 3-bit compares as gates (no carry chain): v > k for k = 0..7, and a > b
+    function [7:0] gt3_therm;
+        input [2:0] v;
+        begin
+            gt3_therm = {1'b0, &v, v[2] & v[1], v[2] & (v[1] | v[0]), v[2], v[2] | (v[1] & v[0]),
+                         v[2] | v[1], |v};
+        end
+    endfunction
+
+    function gt3;
+        input [2:0] a, b;
+        begin
+            gt3 = (a[2] & ~b[2]) | (~(a[2] ^ b[2]) & ((a[1] & ~b[1]) | (~(a[1] ^ b[1]) & a[0] & ~b[0])));
+        end
+    endfunction
+
     // ---- chord ROM contents: round(sqrt(s) * 2^32), digit-by-digit (as pso_chord_rom) ---------
     function [W_CHORD-1:0] round_sqrt;
         input [W_S-1:0] s;
@@ -214,6 +230,7 @@ module pso (
     // stage A
     reg [11:0]              ta_q;         // |D| per axis (4 bits each, axis 0 low)
     reg [2:0]               tp_q, tn_q;   // D > 0, D < 0 per axis
+    reg [2:0]               tr_q;         // the tracked axes of this call
     reg [2:0]               ge0_q, ge1_q; // |D| >= K, |D| + 1 >= K per axis (K in force in this
                                           //   call: formed in the last call with the K presented)
     reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
@@ -256,6 +273,8 @@ module pso (
     reg [W_DIST-1:0]        thr_q;        // threshold of the next fire
     reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
     reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it
+    reg [6:0]               nx5_p_q;      // next^5 of it (so that a move of the deepest read is a
+                                          //   select of registers)
     reg                     done_q;
     reg                     stop0_q, stop1_q;   // a fire ends the array (arr_en, no wrap, the last
                                                 //   entry) with the index before / after the last
@@ -286,11 +305,16 @@ module pso (
     wire        k_ok    = (i_win_k != 5'd0) && (!i_win_k[4] || (i_win_k[3:0] == 4'd0));
     wire        axes_ok = i_part_speed || (i_axis_mask != 3'd0);
     wire        len_ok  = (i_arr_len != 7'd0) && (!i_arr_len[6] || (i_arr_len[5:0] == 6'd0));
-    wire [63:0] used;     // entries 0 .. arr_len - 1 (a thermometer code, no carry chain)
+    // entries 0 .. arr_len - 1 as a thermometer code, written as gates (a compare with a constant
+    // would be a carry chain each): j < len iff len >= 64, or len[5:3] > j[5:3], or they are
+    // equal and len[2:0] > j[2:0]
+    wire [63:0] used;
+    wire [7:0]  lh_gt = gt3_therm(i_arr_len[5:3]);
+    wire [7:0]  ll_gt = gt3_therm(i_arr_len[2:0]);
     genvar ug;
     generate
         for (ug = 0; ug < 64; ug = ug + 1) begin : g_used
-            assign used[ug] = (i_arr_len > ug);
+            assign used[ug] = i_arr_len[6] || lh_gt[ug / 8] || ((i_arr_len[5:3] == ug / 8) && ll_gt[ug % 8]);
         end
     endgenerate
     // (bad_d & used) == 0 without the written entry's data compare in front of the 64-input OR:
@@ -298,7 +322,9 @@ module pso (
     // alone (bad after the write iff wr_bad)
     wire [63:0] hit     = i_arr_we ? wr_bit : 64'd0;
     wire        bad_old = ((bad_q & ~hit & used) != 64'd0);
-    wire        bad_new = i_arr_we && wr_bad && (i_arr_len > {1'b0, i_arr_addr});
+    wire        bad_new = i_arr_we && wr_bad &&      // the written entry is used: addr < len
+                          (i_arr_len[6] || gt3(i_arr_len[5:3], i_arr_addr[5:3]) ||
+                           ((i_arr_len[5:3] == i_arr_addr[5:3]) && gt3(i_arr_len[2:0], i_arr_addr[2:0])));
     wire        thr_ok  = i_arr_en ? (len_ok && !bad_old && !bad_new)
                                    : (i_fire_dist[W_DIST-1:D_FRAC+1] != 23'd0);
     // win_low <= win_high: the sign of high - low (39 bits) as a carry-select subtract (19-bit low
@@ -335,6 +361,28 @@ module pso (
             hi0 = a[W_REM-1:LH] + b[W_REM-1:LH];
             hi1 = {a[W_REM-1:LH], 1'b1} + {b[W_REM-1:LH], 1'b1};
             csel = {lo[LH+1] ? hi1[W_REM-LH:1] : hi0, lo[LH:1]};
+        end
+    endfunction
+
+    // y - th for y < 2^38 (W_REM bits): the low 19 bits one chain with carry-in 1, bits 37..19
+    // for carry 0 and 1, and for each the upper 20 bits picked by that part's carry out (nh =
+    // -th[55:38], 20 bits, or ~th[55:38] with two ones), so the low carry makes the last select
+    function [W_REM-1:0] sub_y;
+        input [W_INCR-1:0] y;
+        input [W_DIST-1:0] th;
+        input [19:0]       nh;
+        reg [20:0] lo;
+        reg [19:0] m0;
+        reg [20:0] m1;
+        reg [19:0] ih, u0, u1;
+        begin
+            lo = {1'b0, y[18:0], 1'b1} + {1'b0, ~th[18:0], 1'b1};
+            m0 = {1'b0, y[37:19]} + {1'b0, ~th[37:19]};
+            m1 = {1'b0, y[37:19], 1'b1} + {1'b0, ~th[37:19], 1'b1};
+            ih = {2'b11, ~th[W_DIST-1:W_INCR]};
+            u0 = m0[19] ? nh : ih;
+            u1 = m1[20] ? nh : ih;
+            sub_y = lo[20] ? {u1, m1[19:1], lo[19:1]} : {u0, m0[18:0], lo[19:1]};
         end
     endfunction
 
@@ -421,7 +469,8 @@ module pso (
     wire [6:0]       nx_l   = adv_i_q ? nx2_p_q : nx_p_q;
     wire [6:0]       nx2_l  = adv_i_q ? nx3_p_q : nx2_p_q;
     wire [6:0]       nx3_l  = adv_i_q ? nx4_p_q : nx3_p_q;
-    wire [6:0]       nx4_l  = adv_i_q ? next_idx(nx4_p_q, len_q) : nx4_p_q;
+    wire [6:0]       nx4_l  = adv_i_q ? nx5_p_q : nx4_p_q;
+    wire [6:0]       nx5_l  = adv_i_q ? next_idx(nx5_p_q, len_q) : nx5_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
     // read data of the last call (addresses next(idx) .. next^4(idx) of that call), the write
@@ -467,10 +516,14 @@ module pso (
     // if it does (thf1): entries next(idx), next^2(idx) of this call (idx moved by adv_q)
     wire [W_DIST-1:0] thf0 = adv_b0_q ? th2_q : th1_q;
     wire [W_DIST-1:0] thf1 = adv_b1_q ? th3_q : th2_q;
-    // Y - thF = Y + ~thF + 1 (one carry-select add of two registers each)
-    wire [W_REM-1:0]  y58    = {{(W_REM-W_INCR){1'b0}}, r_y_q};
-    wire [W_REM-1:0]  opf0_d = csel(y58, ~{2'b00, thf0}, 1'b1);
-    wire [W_REM-1:0]  opf1_d = csel(y58, ~{2'b00, thf1}, 1'b1);
+    // Y - thF = Y + ~thF + 1. Y < 2^38, so bits 57..38 are {2'b11, ~thF[55:38]} plus the carry
+    // out of bit 37: that part for carry 1 (-thF[55:38]) is formed from the prefetch registers
+    // beside the add, and the add itself is 38 bits in carry-select (19-bit chains)
+    wire [19:0]       nh1    = ~{2'b00, th1_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [19:0]       nh2    = ~{2'b00, th2_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [19:0]       nh3    = ~{2'b00, th3_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [W_REM-1:0]  opf0_d = sub_y(r_y_q, thf0, adv_b0_q ? nh2 : nh1);
+    wire [W_REM-1:0]  opf1_d = sub_y(r_y_q, thf1, adv_b1_q ? nh3 : nh2);
     wire              b_clr  = rst_trk || !r_v_q;   // no operands before R holds data
 
     // ---- stage B2: the loop ----------------------------------------------------------------------
@@ -506,6 +559,8 @@ module pso (
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
     wire [6:0]       nx4_0  = (i_arr_len > 7'd4) ? 7'd4 : (i_arr_len == 7'd3) ? 7'd1 : 7'd0;
+    wire [6:0]       nx5_0  = (i_arr_len > 7'd5) ? 7'd5 : (i_arr_len == 7'd3) ? 7'd2 :
+                              (i_arr_len == 7'd2 || i_arr_len == 7'd4) ? 7'd1 : 7'd0;
     // stop0 / stop1 of the next call: the latched modes (or the ones in force in the next call
     // when it starts a run) and next(idx) = 0 for the index registers written now
     wire             stop_m = run_q ? (arr_en_q && !arr_wrap_q) : (f_arr_en_q && !f_arr_wrap_q);
@@ -553,7 +608,9 @@ module pso (
     wire             c_in      = pi_lo[16] ? pi_hi1[17] : pi_hi0[16];
     wire             c_max     = pm_lo[16] ? pm_hi1[17] : pm_hi0[16];
     wire             ps_pulse  = ps_e && (over ? c_max : c_in);
-    wire [W_INC-1:0] ph_d      = ps_e ? ph_sum[W_INC-1:0] : ph_q;
+    // (the phase runs in every call: it is only used in a part-speed run and reset with the
+    // tracking state, and part_speed is latched for the run; no clock enable behind the clamp)
+    wire [W_INC-1:0] ph_d      = ph_sum[W_INC-1:0];
     // The pulse count after the last call (hls ps_count) is picked from two registers by the
     // last call's pulse (a_pulse): the pulse of this call goes into one flip-flop only, and the
     // count's update is a select and an increment of registers.
@@ -585,7 +642,10 @@ module pso (
     wire       z2 = (i_win_k <= 5'd2);
     wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
     wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
-    wire [2:0] tr  = run_q ? (mask_q & {3{!ps_q}}) : (f_axis_mask_q & {3{!f_part_speed_q}});
+    // tracked axes (hls: run ? mask & !ps : the values in force), a register: loaded while the
+    // tracking state is in reset with the values presented (in force in the next call, which
+    // may start the run and latch them), then kept for the run
+    wire [2:0] tr  = tr_q;
     wire [2:0] rev_i = (stp & tn_q) | (stm & tp_q);
     wire       rev = |rev_i;
     wire [2:0] up  = stp & tr;
@@ -780,6 +840,7 @@ module pso (
             ta_q <= 12'd0;
             tp_q <= 3'd0;
             tn_q <= 3'd0;
+            tr_q <= i_rst ? 3'd3 : (i_axis_mask & {3{!i_part_speed}});   // (reset values: mask 3, no ps)
             ge0_q <= {3{!i_rst && z0}};   // |D| = 0 in the next call (K = 16 after i_rst)
             ge1_q <= {3{!i_rst && z1}};
             a_rev_q <= 1'b0;
@@ -837,6 +898,7 @@ module pso (
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
             nx4_p_q <= i_rst ? 7'd0 : nx4_0;
+            nx5_p_q <= i_rst ? 7'd0 : nx5_0;
             stop0_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx_0 == 7'd0);
             stop1_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx2_0 == 7'd0);
             done_q <= 1'b0;
@@ -929,6 +991,7 @@ module pso (
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
             nx4_p_q <= nx4_l;
+            nx5_p_q <= nx5_l;
             stop0_q <= stop0_d;
             stop1_q <= stop1_d;
             done_q <= done_d;
