@@ -938,7 +938,7 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // INC_MAX + 1), firing distance 2 counts exactly .. 200 counts with a random fraction, array
 // mode (length 1..64, wrap or not, entries rewritten while disabled), pulse width 1..80, the
 // window on any source with edges next to the current position, laser minimum period 0..300
-// (freq_err; spacing_err in part-speed). One segment in 4 is short and invalid (K 0 or 17..31,
+// (freq_err; spacing_err in part-speed). One segment in 7 is short and invalid (K 0 or 17..31,
 // distance or an entry below 2 counts, length 0 or 65..127, no axis, pulse width 0, low > high,
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
 // per call on every axis: fires in consecutive calls at small distances; reversals), enable
@@ -962,7 +962,10 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // of up to six fires in consecutive calls, every index move picking a different entry (the
 // prefetch's deepest read, next^4 of the index two calls before). Calls 600..699: the same with
 // an entry rewritten in every call (2 .. 2.05 counts, at every offset 0..4 from the index shown):
-// writes presented with each of the four reads and forwarded into the thresholds.
+// writes presented with each of the four reads and forwarded into the thresholds. Calls
+// 700..759: a tracking run on x with each kind of invalid configuration presented for one call
+// in every sixth call (K 0, K 17, distance below 2 counts, length 0 and 65, no axis, pulse
+// width 0, low > high, source 3 without part-speed, an array with an entry not written).
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -1027,7 +1030,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.axis_mask = 7;
                 for (int a = 0; a < 3; ++a) prob[a] = 1.0;
             }
-            if (r.chance(4)) {  // an invalid segment, short
+            if (r.chance(7)) {  // an invalid segment, short
                 seg_end = n + r.range(1, 40);
                 switch (r.range(0, 8)) {
                     case 0: x.win_k = r.chance(2) ? 0 : static_cast<int>(r.range(17, 31)); break;
@@ -1227,6 +1230,29 @@ vec_table pso_stress(rng_t& r, long long calls) {
             for (int a = 0; a < 3; ++a) {
                 in.step[a] = 1;
                 in.pos[a] = n;
+            }
+        }
+        if (n >= 700 && n < 760) {  // directed: each kind of invalid configuration for one call
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.enable = n != 700;
+            x.fire_dist = C::MIN_DIST + (1ULL << 31);
+            x.pulse_w = 2;
+            in.step[0] = 1;
+            in.pos[0] = n;
+            if (n % 6 == 5) {
+                switch ((n - 700) / 6) {
+                    case 0: x.win_k = 0; break;
+                    case 1: x.win_k = 17; break;
+                    case 2: x.fire_dist = C::MIN_DIST - 1; break;
+                    case 3: x.arr_en = true; x.arr_len = 0; break;
+                    case 4: x.arr_en = true; x.arr_len = 65; break;
+                    case 5: x.axis_mask = 0; break;
+                    case 6: x.pulse_w = 0; break;
+                    case 7: x.win_en = true; x.win_low = 1; x.win_high = 0; break;
+                    case 8: x.win_en = true; x.win_src = 3; break;
+                    default: x.arr_en = true; x.arr_len = 64; break;   // entries never written or bad
+                }
             }
         }
         const lx::pso::out_t o = m.step(lxt::pso_to_hls(in), lxt::pso_to_hls(x));
