@@ -4,7 +4,8 @@
 // and the sequenced minimum-spacing check.
 //
 // Reference RTL of hls/pso.h (docs/PSO_COUNTERS.md §2). One rising clock edge = one call of
-// pso::step(); every output is a register holding the out_t of that call. Synchronous
+// pso::step(); every output holds the out_t of that call: a register, except o_ps_count, a
+// select of two registers by the last call's pulse (a register). Synchronous
 // active-high reset = a freshly constructed lx::pso (every array entry "not written", state in
 // reset). A call with an invalid configuration resets everything except the array RAM and its
 // "entry below 2 counts" map and raises cfg_err for that call; a call with enable = 0 resets the
@@ -28,7 +29,8 @@
 //       compares.
 //   B1  the loop operands: Y, and Y - thF for the two candidate thresholds of the fire after the
 //       next (entries next(idx), next^2(idx) of this call's index, or fire_dist; the first
-//       operands of a run take the start threshold thr); all 0 while R holds no data.
+//       operands of a run take the start threshold thr); all 0 while R holds no data. A 38-bit
+//       add (Y < 2^38), its carry picking the upper bits between ~thF and -thF.
 //   B2  the loop on u = value - thr of the entry held: the decision is u >= 0, the sign of the
 //       registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry out of lo
 //       added into hi at the next update, and a flag "hi[27:0] all ones" formed beside the
