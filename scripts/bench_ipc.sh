@@ -14,7 +14,7 @@ short=${2:-100000}
 long=${3:-300000}
 command -v valgrind >/dev/null || { echo "bench_ipc.sh: valgrind not installed (make deps)"; exit 1; }
 # KEY|label (KEY: a substring of the bench item name)
-items=("laserax_top|hls laserax_top (full chain)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
+items=("hls laserax_top|hls laserax_top (full chain)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
        "output_pacer|hls output_pacer" "rephase|hls rephase" "dds_sincos|hls dds_sincos"
        "golden laserax_top|golden laserax_top" "tb style|hls + golden + compare (tb style)")
 measure() {  # CALLS KEY -> "instructions calls"
@@ -39,7 +39,7 @@ done
 by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::step, and "calls N"
     local f out
     f=$(mktemp)
-    out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only laserax_top 2>&1)
+    out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only "hls laserax_top" 2>&1)
     printf '%s\n' "$out" | sed -n 's/.*(\([0-9]*\) calls in .*/calls \1/p' | tail -n 1
     callgrind_annotate --inclusive=no --auto=no "$f" 2>/dev/null | grep -v "=>" |
         sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):lx::laserax_top::step(.*/\2 \1/p' | tr -d ','
