@@ -1194,7 +1194,8 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.arr_data = (n == 440 ? 3ULL : 6ULL) << 32;
             }
         }
-        if (n >= 540 && n < 600) {  // directed: consecutive fires on distinct entries
+        // calls 540..699: a 3D diagonal with K = 1 on a wrapping array of five entries
+        const auto diagonal_on_array5 = [&] {
             x = golden::pso_regs{};
             in = golden::pso_in{};
             x.axis_mask = 7;
@@ -1203,34 +1204,26 @@ vec_table pso_stress(rng_t& r, long long calls) {
             x.arr_en = true;
             x.arr_len = 5;
             x.arr_wrap = true;
+            for (int a = 0; a < 3; ++a) {
+                in.step[a] = 1;
+                in.pos[a] = n;
+            }
+        };
+        if (n >= 540 && n < 600) {  // directed: consecutive fires on distinct entries
+            diagonal_on_array5();
             x.enable = n >= 546;
             if (n < 545) {
                 x.arr_we = true;
                 x.arr_addr = static_cast<int>(n - 540);
                 x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n - 540) << 20);
             }
-            for (int a = 0; a < 3; ++a) {
-                in.step[a] = 1;
-                in.pos[a] = n;
-            }
         }
         if (n >= 600 && n < 700) {  // directed: consecutive fires while every call rewrites an entry
-            x = golden::pso_regs{};
-            in = golden::pso_in{};
-            x.axis_mask = 7;
-            x.win_k = 1;
-            x.pulse_w = 1;
-            x.arr_en = true;
-            x.arr_len = 5;
-            x.arr_wrap = true;
+            diagonal_on_array5();
             x.enable = n >= 606;
             x.arr_we = n < 605 || n >= 608;
             x.arr_addr = static_cast<int>(n < 605 ? n - 600 : (last_idx + n % 5) % 5);
             x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n % 4) << 26);   // 2 .. 2.05 counts
-            for (int a = 0; a < 3; ++a) {
-                in.step[a] = 1;
-                in.pos[a] = n;
-            }
         }
         if (n >= 700 && n < 760) {  // directed: each kind of invalid configuration for one call
             x = golden::pso_regs{};
