@@ -114,8 +114,10 @@ module error_map (
 
     // ---- phase counter: ph = 0 marks a sample call ----------------------------------------------
     reg [4:0] ph;
-    wire [4:0] ph_nx = i_rst ? 5'd0 : ph + 5'd1;   // the next phase (wraps at S_MAP = 32)
-    always @(posedge i_clk) ph <= ph_nx;
+    always @(posedge i_clk) begin
+        if (i_rst) ph <= 5'd0;
+        else       ph <= ph + 5'd1;   // wraps at S_MAP = 32
+    end
     wire ph0 = ph == 5'd0;            // A1: the sample call
     wire ph1 = ph == 5'd1;            // A2
 
@@ -356,6 +358,7 @@ module error_map (
     wire [4:0]              m_j    = ph - (PH_LOAD + 5'd1);    // step index (mod 32)
     // M's two enables (load, step) are flip-flops, decoded in the call before from the next
     // phase, so the enables of its ~70 flip-flops do not wait for a phase subtract and compare
+    wire [4:0]              ph_nx  = i_rst ? 5'd0 : ph + 5'd1;
     wire [4:0]              m_j_nx = ph_nx - (PH_LOAD + 5'd1);
     reg                     m_ld_q, m_step_q;                  // ph == PH_LOAD, m_j < N_STEP
     always @(posedge i_clk) begin
