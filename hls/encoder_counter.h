@@ -71,7 +71,8 @@ struct encoder_counter_cfg {
     using acc_t = sint<W_ACC>;
     using lo_t = uint<W_CNT>;
     using stepcnt_t = uint<W_STEP>;
-    using src_t = uint<2>;  // 0 quadrature step, 1 simulation (2, 3 illegal)
+    static constexpr int W_SRC = 2;  // source register
+    using src_t = uint<W_SRC>;  // 0 quadrature step, 1 simulation (2, 3 illegal)
 };
 
 struct encoder_counter_regs {

@@ -57,7 +57,8 @@ struct rephase_cfg {
     using tr_t = sint<W_TR>;
     using br_t = sint<W_BR>;
     using lag_t = sint<W_LAG>;
-    using stage_t = uint<2>;    // the stage output: a stage_id value
+    static constexpr int W_STAGE = 2;  // the stage output: 1, 2, 3
+    using stage_t = uint<W_STAGE>;    // the stage output: a stage_id value
     // the referencing stages (DESIGN 4.5): the values of the stage register and of out_t::stage
     enum stage_id : unsigned {
         STAGE_UNHOMED = 1,  // stage 1: un-homed, waiting for the switch edge (A)

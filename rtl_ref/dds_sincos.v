@@ -33,6 +33,7 @@
 // at edge t see the new value.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module dds_sincos #(
     // INIT_FILE: $readmemh image of the table RAM at configuration time (1024 words of 17 bits,
@@ -47,21 +48,21 @@ module dds_sincos #(
     // Legal values 0, 1.
     parameter integer WRITE_BYPASS = 1
 ) (
-    input  wire               i_clk,
-    input  wire               i_rst,        // synchronous, active high: dds_sincos::reset()
-    input  wire signed [1:0]  i_ostep,      // output count: -1, 0, +1
-    input  wire [12:0]        i_period,     // P (8..4096, multiple of 8)
+    input  wire                         i_clk,
+    input  wire                         i_rst,       // synchronous, active high: dds_sincos::reset()
+    input  wire signed [`LX_W_STEP-1:0] i_ostep,     // output count: -1, 0, +1
+    input  wire [`LX_W_P-1:0]           i_period,    // P (8..4096, multiple of 8)
     // P/4 - 1 in 11 bits (i_period[12:2] - 1, wrapping), formed by the caller from the same
     // period value (the top: in its register stage), so no decrement of P sits in front of the
     // phase counter's select and the RAM read address. It must equal that of i_period in every
     // call (the testbench forms it from the period column).
-    input  wire [10:0]        i_qtr_m1,
-    input  wire [17:0]        i_amplitude,  // amp = T[P/4]
-    input  wire               i_tbl_we,     // table write enable
-    input  wire [9:0]         i_tbl_addr,   // table write address
-    input  wire [16:0]        i_tbl_data,   // table write data
-    output wire signed [17:0] o_sin,        // sine code
-    output wire signed [17:0] o_cos,        // cosine code
+    input  wire [`LX_DDS_W_R-1:0]       i_qtr_m1,
+    input  wire [`LX_DDS_W_AMP-1:0]     i_amplitude, // amp = T[P/4]
+    input  wire                         i_tbl_we,    // table write enable
+    input  wire [`LX_W_TBL_ADDR-1:0]    i_tbl_addr,  // table write address
+    input  wire [`LX_W_TBL-1:0]         i_tbl_data,  // table write data
+    output wire signed [`LX_W_DAC-1:0]  o_sin,       // sine code
+    output wire signed [`LX_W_DAC-1:0]  o_cos,       // cosine code
     // DAC range guard support (not part of the C++ model; the top's guard, DESIGN 4.7): the
     // magnitude bound for the codes formed in this call (they leave through o_sin / o_cos after
     // the edge) and, registered with them, whether |o_sin| / |o_cos| exceeds it. |code| is the
@@ -69,22 +70,22 @@ module dds_sincos #(
     // registers beside the negation instead of after the output register. Exact while the
     // words are below 2^17 (always: 17-bit table words, amplitude <= 2^17 - 1 in every running
     // call of the top). An all-ones bound never flags (the block testbench's idle value).
-    input  wire [17:0]        i_clip_hi,
-    output wire               o_sin_over,
-    output wire               o_cos_over
+    input  wire [`LX_W_DAC-1:0]         i_clip_hi,
+    output wire                         o_sin_over,
+    output wire                         o_cos_over
 `ifdef FORMAL
     ,
-    input  wire [16:0]        f_i_rd_dir,   // formal only: the table RAM abstracted (see the
-    input  wire [16:0]        f_i_rd_mir    //   FORMAL block): its two read data, free values
+    input  wire [`LX_W_TBL-1:0] f_i_rd_dir, // formal only: the table RAM abstracted (see the
+    input  wire [`LX_W_TBL-1:0] f_i_rd_mir  //   FORMAL block): its two read data, free values
 `endif
 );
 
     // ---- fixed widths (hls: dds_sincos_cfg, axis_widths) -------------------------------------
-    localparam integer TBL_DEPTH = 1024;   // quarter-wave words (P_MAX / 4)
-    localparam integer W_ADDR    = 10;     // table address
-    localparam integer W_TBL     = 17;     // table word, unsigned
-    localparam integer W_R       = 11;     // r and P/4 - r: 0..1024
-    localparam integer W_DAC     = 18;     // sin/cos codes, signed
+    localparam integer TBL_DEPTH = 1 << `LX_W_TBL_ADDR;  // quarter-wave words (P_MAX / 4)
+    localparam integer W_ADDR    = `LX_W_TBL_ADDR;       // table address
+    localparam integer W_TBL     = `LX_W_TBL;            // table word, unsigned
+    localparam integer W_R       = `LX_DDS_W_R;          // r and P/4 - r: 0..1024
+    localparam integer W_DAC     = `LX_W_DAC;            // sin/cos codes, signed
 
     generate
         if (INIT_FILE == "") begin : g_bad_init_file

@@ -41,63 +41,64 @@
 // call s + 33; a counter that passes the awaited value in call t gives reached in call t + 2.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module encoder_counter (
-    input  wire               i_clk,
-    input  wire               i_rst,          // synchronous, active high: encoder_counter::reset()
+    input  wire                             i_clk,
+    input  wire                             i_rst,          // synchronous, active high: encoder_counter::reset()
     // per-call inputs
-    input  wire signed [1:0]  i_qstep0,       // quadrature step of counter 0 (-1, 0, +1)
-    input  wire signed [1:0]  i_qstep1,       // quadrature step of counter 1
-    input  wire               i_trig,         // start trigger (pulse)
-    input  wire signed [31:0] i_pos0,         // nominal output position 0, bits
-    input  wire signed [31:0] i_pos1,         // nominal output position 1, bits
+    input  wire signed [`LX_W_STEP-1:0]     i_qstep0,       // quadrature step of counter 0 (-1, 0, +1)
+    input  wire signed [`LX_W_STEP-1:0]     i_qstep1,       // quadrature step of counter 1
+    input  wire                             i_trig,         // start trigger (pulse)
+    input  wire signed [`LX_EC_W_POSIN-1:0] i_pos0,         // nominal output position 0, bits
+    input  wire signed [`LX_EC_W_POSIN-1:0] i_pos1,         // nominal output position 1, bits
     // registers (encoder_counter_regs)
-    input  wire [1:0]         i_src0,         // 0 quadrature, 1 simulation (2, 3: cfg_err)
-    input  wire [1:0]         i_src1,
-    input  wire [31:0]        i_sim_inc0,     // simulation rate, Q0.32 counts per clock (<= 2^30)
-    input  wire [31:0]        i_sim_inc1,
-    input  wire               i_sim_down0,    // the simulation counts down
-    input  wire               i_sim_down1,
-    input  wire signed [31:0] i_scale0,       // Q8.24 bits per count
-    input  wire signed [31:0] i_scale1,
-    input  wire               i_rst_req0,     // pulse: reset request
-    input  wire               i_rst_req1,
-    input  wire               i_load0,        // pulse: preset the counter to load_val
-    input  wire               i_load1,
-    input  wire signed [31:0] i_load_val0,
-    input  wire signed [31:0] i_load_val1,
-    input  wire               i_rst_on_trig,  // reset requests wait for the next start trigger
-    input  wire [15:0]        i_corr_period,  // correction period, calls (>= 32)
-    input  wire               i_wait_arm,     // pulse: arm wait-for-encoder
-    input  wire               i_wait_ch,      // 0: counter 0, 1: counter 1
-    input  wire signed [31:0] i_wait_val,
-    input  wire               i_wait_down,    // 0: wait to overstep, 1: to understep
+    input  wire [`LX_EC_W_SRC-1:0]          i_src0,         // 0 quadrature, 1 simulation (2, 3: cfg_err)
+    input  wire [`LX_EC_W_SRC-1:0]          i_src1,
+    input  wire [`LX_EC_W_INC-1:0]          i_sim_inc0,     // simulation rate, Q0.32 counts per clock (<= 2^30)
+    input  wire [`LX_EC_W_INC-1:0]          i_sim_inc1,
+    input  wire                             i_sim_down0,    // the simulation counts down
+    input  wire                             i_sim_down1,
+    input  wire signed [`LX_EC_W_SCALE-1:0] i_scale0,       // Q8.24 bits per count
+    input  wire signed [`LX_EC_W_SCALE-1:0] i_scale1,
+    input  wire                             i_rst_req0,     // pulse: reset request
+    input  wire                             i_rst_req1,
+    input  wire                             i_load0,        // pulse: preset the counter to load_val
+    input  wire                             i_load1,
+    input  wire signed [`LX_EC_W_CNT-1:0]   i_load_val0,
+    input  wire signed [`LX_EC_W_CNT-1:0]   i_load_val1,
+    input  wire                             i_rst_on_trig,  // reset requests wait for the next start trigger
+    input  wire [`LX_EC_W_PER-1:0]          i_corr_period,  // correction period, calls (>= 32)
+    input  wire                             i_wait_arm,     // pulse: arm wait-for-encoder
+    input  wire                             i_wait_ch,      // 0: counter 0, 1: counter 1
+    input  wire signed [`LX_EC_W_CNT-1:0]   i_wait_val,
+    input  wire                             i_wait_down,    // 0: wait to overstep, 1: to understep
     // outputs (encoder_counter::out_t)
-    output wire signed [31:0] o_cnt0,
-    output wire signed [31:0] o_cnt1,
-    output wire signed [1:0]  o_step0,        // count applied in this call
-    output wire signed [1:0]  o_step1,
-    output wire               o_rst_done0,    // the counter was reset in this call
-    output wire               o_rst_done1,
-    output wire               o_rst_pending0, // waiting for a start trigger
-    output wire               o_rst_pending1,
-    output wire signed [39:0] o_corr0,        // corrected output positions (held between ticks)
-    output wire signed [39:0] o_corr1,
-    output wire               o_tick,         // corr updated in this call
-    output wire               o_waiting,
-    output wire               o_reached,      // pulse: the awaited counter passed the value
-    output wire               o_cfg_err
+    output wire signed [`LX_EC_W_CNT-1:0]   o_cnt0,
+    output wire signed [`LX_EC_W_CNT-1:0]   o_cnt1,
+    output wire signed [`LX_W_STEP-1:0]     o_step0,        // count applied in this call
+    output wire signed [`LX_W_STEP-1:0]     o_step1,
+    output wire                             o_rst_done0,    // the counter was reset in this call
+    output wire                             o_rst_done1,
+    output wire                             o_rst_pending0, // waiting for a start trigger
+    output wire                             o_rst_pending1,
+    output wire signed [`LX_EC_W_CORR-1:0]  o_corr0,        // corrected output positions (held between ticks)
+    output wire signed [`LX_EC_W_CORR-1:0]  o_corr1,
+    output wire                             o_tick,         // corr updated in this call
+    output wire                             o_waiting,
+    output wire                             o_reached,      // pulse: the awaited counter passed the value
+    output wire                             o_cfg_err
 );
 
     // ---- fixed widths (hls: encoder_counter_cfg) -------------------------------------------
-    localparam integer W_CNT    = 32;   // counters, signed, wrap
-    localparam integer W_INC    = 32;   // simulation rate, Q0.32
-    localparam integer S_FRAC   = 24;   // scale fraction bits
-    localparam integer W_SCALE  = 32;   // scale, Q8.24 signed
-    localparam integer W_PER    = 16;   // correction period
-    localparam integer W_CORR   = 40;   // W_SCALE + W_CNT - S_FRAC
-    localparam integer W_ACC    = 33;   // W_SCALE + 1: upper half of the sequenced product
-    localparam integer CORR_LAT = 33;   // = W_CNT + 1: calls from sample to corr
+    localparam integer W_CNT    = `LX_EC_W_CNT;    // counters, signed, wrap
+    localparam integer W_INC    = `LX_EC_W_INC;    // simulation rate, Q0.32
+    localparam integer S_FRAC   = 24;              // scale fraction bits
+    localparam integer W_SCALE  = `LX_EC_W_SCALE;  // scale, Q8.24 signed
+    localparam integer W_PER    = `LX_EC_W_PER;    // correction period
+    localparam integer W_CORR   = `LX_EC_W_CORR;   // W_SCALE + W_CNT - S_FRAC
+    localparam integer W_ACC    = 33;              // W_SCALE + 1: upper half of the sequenced product
+    localparam integer CORR_LAT = 33;              // = W_CNT + 1: calls from sample to corr
     localparam [5:0]       K_DONE   = CORR_LAT;   // step counter value of the add-p call
     localparam [W_ACC-1:0] HALF     = 33'd8388608; // 2^(S_FRAC-1): round half up
 

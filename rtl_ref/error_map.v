@@ -43,40 +43,41 @@
 // running call is never lost.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module error_map (
-    input  wire               i_clk,
-    input  wire               i_rst,       // synchronous, active high: error_map::reset()
-    input  wire signed [37:0] i_p,         // uncorrected position (comp), output counts
-    input  wire               i_homed,     // rephase homed (registered status)
-    input  wire               i_map_en,
-    input  wire               i_bank_sel,  // active bank of this call
-    input  wire signed [37:0] i_origin0,   // bank 0 geometry
-    input  wire [4:0]         i_k0,
-    input  wire [10:0]        i_n0,
-    input  wire signed [37:0] i_origin1,   // bank 1 geometry
-    input  wire [4:0]         i_k1,
-    input  wire [10:0]        i_n1,
-    input  wire               i_we,        // table write port: writes bank !bank_sel
-    input  wire [9:0]         i_addr,
-    input  wire signed [23:0] i_data,      // Q15.8 output counts
-    output wire signed [16:0] o_corr,
-    output wire signed [17:0] o_delta,
-    output wire               o_active,
-    output wire               o_in_range,
-    output wire               o_clamped,
-    output wire               o_cfg_err
+    input  wire                              i_clk,
+    input  wire                              i_rst,      // synchronous, active high: error_map::reset()
+    input  wire signed [`LX_W_POS-1:0]       i_p,        // uncorrected position (comp), output counts
+    input  wire                              i_homed,    // rephase homed (registered status)
+    input  wire                              i_map_en,
+    input  wire                              i_bank_sel, // active bank of this call
+    input  wire signed [`LX_W_POS-1:0]       i_origin0,  // bank 0 geometry
+    input  wire [`LX_EM_W_K-1:0]             i_k0,
+    input  wire [`LX_EM_W_N-1:0]             i_n0,
+    input  wire signed [`LX_W_POS-1:0]       i_origin1,  // bank 1 geometry
+    input  wire [`LX_EM_W_K-1:0]             i_k1,
+    input  wire [`LX_EM_W_N-1:0]             i_n1,
+    input  wire                              i_we,       // table write port: writes bank !bank_sel
+    input  wire [`LX_EM_W_ADDR-1:0]          i_addr,
+    input  wire signed [`LX_EM_W_CORR-1:0]   i_data,     // Q15.8 output counts
+    output wire signed [`LX_EM_W_C-1:0]      o_corr,
+    output wire signed [`LX_EM_W_CDELTA-1:0] o_delta,
+    output wire                              o_active,
+    output wire                              o_in_range,
+    output wire                              o_clamped,
+    output wire                              o_cfg_err
 );
 
     // ---- fixed widths (hls: error_map_cfg) ---------------------------------------------------
-    localparam integer TBL_DEPTH = 1024;
-    localparam integer W_CORR    = 24;
+    localparam integer TBL_DEPTH = 1 << `LX_EM_W_ADDR;
+    localparam integer W_CORR    = `LX_EM_W_CORR;
     localparam [4:0]   K_MIN     = 5'd4;
     localparam [4:0]   K_MAX     = 5'd20;
-    localparam integer W_ADDR    = 10;
+    localparam integer W_ADDR    = `LX_EM_W_ADDR;
     localparam integer W_HADDR   = 9;
-    localparam integer W_N       = 11;
-    localparam integer W_OFF     = 39;
+    localparam integer W_N       = `LX_EM_W_N;
+    localparam integer W_OFF     = `LX_W_POS + 1;
     localparam integer W_FRAC    = 20;
     localparam integer W_V       = 21;
     localparam integer W_DIFF    = 25;
@@ -86,9 +87,9 @@ module error_map (
     localparam integer F         = 8;
     localparam [4:0]   PH_LOAD   = 5'd26;   // M's load: 26 calls after the sample call
     localparam [4:0]   PH_G      = 5'd16;   // G: 48 calls after it (mod S_MAP = 32)
-    localparam integer N_STEP    = 21;      // W_V multiplier steps, calls 27 .. 47
-    localparam integer W_C       = 17;
-    localparam integer W_CDELTA  = 18;
+    localparam integer N_STEP    = 21;  // W_V multiplier steps, calls 27 .. 47
+    localparam integer W_C       = `LX_EM_W_C;
+    localparam integer W_CDELTA  = `LX_EM_W_CDELTA;
 
     // ---- table RAMs (not reset): even and odd words, both banks in one RAM each ------------------
     // tble[{b, j}] = T_b[2j], tblo[{b, j}] = T_b[2j + 1]: the bank is the top address bit, so the

@@ -30,6 +30,7 @@
 // RAM is not affected by any reset.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module laserax_top #(
     // INIT_FILE: $readmemh image of the DDS table RAM at configuration time (1024 words of
@@ -43,85 +44,85 @@ module laserax_top #(
     // outputs, the status and the error-map outputs are the same for both values.
     parameter integer DEBUG_TAPS = 0
 ) (
-    input  wire               i_clk,
-    input  wire               i_rst,            // synchronous, active high: power-up state
+    input  wire                              i_clk,
+    input  wire                              i_rst,            // synchronous, active high: power-up state
     // pins (asynchronous)
-    input  wire               i_a,
-    input  wire               i_b,
-    input  wire               i_sw,
-    input  wire               i_lerr,
+    input  wire                              i_a,
+    input  wire                              i_b,
+    input  wire                              i_sw,
+    input  wire                              i_lerr,
     // s_axilite registers (DESIGN §5)
-    input  wire [12:0]        i_period,         // 256 at reset; 8..4096, multiple of 8
-    input  wire [36:0]        i_ratio,          // Q5.32, 1..2^37-1
-    input  wire signed [63:0] i_comp_offset,    // Q32.32 output counts added to N*R (any)
-    input  wire               i_comp_sync,      // 1: ratio / comp_offset act only on i_comp_commit
-    input  wire               i_comp_commit,    // pulse: load ratio / comp_offset (with i_comp_sync)
-    input  wire [7:0]         i_glitch_n,
-    input  wire [15:0]        i_sw_debounce,
-    input  wire [15:0]        i_min_spacing,
-    input  wire [15:0]        i_pace_m,         // 2..65535
-    input  wire [31:0]        i_backlog_thr,
-    input  wire [12:0]        i_mark_len,       // P/4..P
-    input  wire [4:0]         i_dac_width,      // 12..18
-    input  wire [17:0]        i_amplitude,      // 1..2^(dac_width-1)-1
-    input  wire [12:0]        i_tbl_period,     // must equal period
-    input  wire               i_rehome,         // pulse
-    input  wire               i_clear,          // pulse
-    input  wire               i_tbl_we,
-    input  wire [9:0]         i_tbl_addr,
-    input  wire [16:0]        i_tbl_data,
+    input  wire [`LX_W_P-1:0]                i_period,         // 256 at reset; 8..4096, multiple of 8
+    input  wire [`LX_W_RATIO-1:0]            i_ratio,          // Q5.32, 1..2^37-1
+    input  wire signed [`LX_W_OFFSET-1:0]    i_comp_offset,    // Q32.32 output counts added to N*R (any)
+    input  wire                              i_comp_sync,      // 1: ratio / comp_offset act only on i_comp_commit
+    input  wire                              i_comp_commit,    // pulse: load ratio / comp_offset (with i_comp_sync)
+    input  wire [`LX_QD_W_GLITCH-1:0]        i_glitch_n,
+    input  wire [`LX_TOP_W_DEBOUNCE-1:0]     i_sw_debounce,
+    input  wire [`LX_QD_W_SPACING-1:0]       i_min_spacing,
+    input  wire [`LX_OP_W_PACE-1:0]          i_pace_m,         // 2..65535
+    input  wire [`LX_OP_W_THR-1:0]           i_backlog_thr,
+    input  wire [`LX_W_P-1:0]                i_mark_len,       // P/4..P
+    input  wire [`LX_W_DACW-1:0]             i_dac_width,      // 12..18
+    input  wire [`LX_DDS_W_AMP-1:0]          i_amplitude,      // 1..2^(dac_width-1)-1
+    input  wire [`LX_W_P-1:0]                i_tbl_period,     // must equal period
+    input  wire                              i_rehome,         // pulse
+    input  wire                              i_clear,          // pulse
+    input  wire                              i_tbl_we,
+    input  wire [`LX_W_TBL_ADDR-1:0]         i_tbl_addr,
+    input  wire [`LX_W_TBL-1:0]              i_tbl_data,
     // error map (docs/ERROR_MAP.md §8); reset values: map disabled
-    input  wire               i_map_en,
-    input  wire               i_bank_sel,       // active bank; the write port writes the other
-    input  wire signed [37:0] i_map_origin0,    // bank 0: position of point 0, comp coordinates
-    input  wire [4:0]         i_map_k0,         // bank 0: spacing 2^k counts, 4..20
-    input  wire [10:0]        i_map_n0,         // bank 0: points, 2..1024
-    input  wire signed [37:0] i_map_origin1,
-    input  wire [4:0]         i_map_k1,
-    input  wire [10:0]        i_map_n1,
-    input  wire               i_map_we,
-    input  wire [9:0]         i_map_addr,
-    input  wire signed [23:0] i_map_data,       // Q15.8 output counts
+    input  wire                              i_map_en,
+    input  wire                              i_bank_sel,       // active bank; the write port writes the other
+    input  wire signed [`LX_W_POS-1:0]       i_map_origin0,    // bank 0: position of point 0, comp coordinates
+    input  wire [`LX_EM_W_K-1:0]             i_map_k0,         // bank 0: spacing 2^k counts, 4..20
+    input  wire [`LX_EM_W_N-1:0]             i_map_n0,         // bank 0: points, 2..1024
+    input  wire signed [`LX_W_POS-1:0]       i_map_origin1,
+    input  wire [`LX_EM_W_K-1:0]             i_map_k1,
+    input  wire [`LX_EM_W_N-1:0]             i_map_n1,
+    input  wire                              i_map_we,
+    input  wire [`LX_EM_W_ADDR-1:0]          i_map_addr,
+    input  wire signed [`LX_EM_W_CORR-1:0]   i_map_data,       // Q15.8 output counts
     // outputs
-    output wire signed [17:0] o_sin,
-    output wire signed [17:0] o_cos,
-    output wire               o_ref_mark,
-    output wire               o_qa,
-    output wire               o_qb,
-    output wire               o_qz,
+    output wire signed [`LX_W_DAC-1:0]       o_sin,
+    output wire signed [`LX_W_DAC-1:0]       o_cos,
+    output wire                              o_ref_mark,
+    output wire                              o_qa,
+    output wire                              o_qb,
+    output wire                              o_qz,
     // status
-    output wire               o_cfg_err,
-    output wire [1:0]         o_stage,
-    output wire               o_homed,
-    output wire               o_lerr_alarm,
-    output wire               o_illegal_st,
-    output wire [7:0]         o_err_cnt,
-    output wire               o_ovs_edge_st,
-    output wire               o_ovs_backlog_st,
-    output wire               o_glitch_st,
-    output wire               o_alarm,
-    output wire               o_dac_clip_st,    // sticky: a sin/cos code was clamped (DAC range guard)
+    output wire                              o_cfg_err,
+    output wire [`LX_W_STAGE-1:0]            o_stage,
+    output wire                              o_homed,
+    output wire                              o_lerr_alarm,
+    output wire                              o_illegal_st,
+    output wire [`LX_QD_W_ERRCNT-1:0]        o_err_cnt,
+    output wire                              o_ovs_edge_st,
+    output wire                              o_ovs_backlog_st,
+    output wire                              o_glitch_st,
+    output wire                              o_alarm,
+    output wire                              o_dac_clip_st,    // sticky: a sin/cos code was clamped (DAC range guard)
     // taps: registered outputs of each block at this call (0 unless DEBUG_TAPS = 1)
-    output wire signed [31:0] o_raw_count,
-    output wire signed [1:0]  o_step,
-    output wire signed [37:0] o_comp_pos,
-    output wire signed [38:0] o_delta,
-    output wire signed [39:0] o_backlog,
-    output wire signed [1:0]  o_pstep,
-    output wire signed [37:0] o_paced_pos,
-    output wire signed [1:0]  o_ostep,
-    output wire signed [37:0] o_out_pos,
-    output wire signed [37:0] o_adj,
-    output wire signed [37:0] o_a_pos,
-    output wire signed [37:0] o_b_pos,
-    output wire signed [37:0] o_c_pos,
-    output wire signed [37:0] o_z_pos,
-    output wire [11:0]        o_d,
-    output wire               o_rep_mark,
+    output wire signed [`LX_W_RAW-1:0]       o_raw_count,
+    output wire signed [`LX_W_STEP-1:0]      o_step,
+    output wire signed [`LX_W_POS-1:0]       o_comp_pos,
+    output wire signed [`LX_W_DELTA-1:0]     o_delta,
+    output wire signed [`LX_W_BACKLOG-1:0]   o_backlog,
+    output wire signed [`LX_W_STEP-1:0]      o_pstep,
+    output wire signed [`LX_W_POS-1:0]       o_paced_pos,
+    output wire signed [`LX_W_STEP-1:0]      o_ostep,
+    output wire signed [`LX_W_POS-1:0]       o_out_pos,
+    output wire signed [`LX_W_POS-1:0]       o_adj,
+    output wire signed [`LX_W_POS-1:0]       o_a_pos,
+    output wire signed [`LX_W_POS-1:0]       o_b_pos,
+    output wire signed [`LX_W_POS-1:0]       o_c_pos,
+    output wire signed [`LX_W_POS-1:0]       o_z_pos,
+    output wire [`LX_W_PH-1:0]               o_d,
+    output wire                              o_rep_mark,
     // error map
-    output wire               o_map_cfg_err,
-    output wire signed [16:0] o_corr,
-    output wire signed [17:0] o_map_delta
+    output wire                              o_map_cfg_err,
+    output wire signed [`LX_EM_W_C-1:0]      o_corr,
+    output wire signed [`LX_EM_W_CDELTA-1:0] o_map_delta
 );
 
     // ---- fixed values (hls: axis_widths) -------------------------------------------------------

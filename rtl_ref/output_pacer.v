@@ -18,22 +18,23 @@
 // Latency: delta in at call t, the first count leaves at call t+1; taps 2 calls, ovs 4 calls.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module output_pacer (
-    input  wire               i_clk,
-    input  wire               i_rst,     // synchronous, active high: output_pacer::reset()
-    input  wire signed [38:0] i_delta,   // comp(t) - comp(t-1) from the multiplier
-    input  wire signed [17:0] i_add,     // second addend: the error-map delta (same call)
-    input  wire [15:0]        i_pace_m,  // M: at least max(M, 2) calls between two emitted counts
-    input  wire [31:0]        i_thr,     // backlog alarm threshold
-    input  wire               i_clear,   // register pulse: clears ovs_st (unless ovs)
-    output wire signed [1:0]  o_pstep,   // emitted count: -1, 0, +1
-    output wire signed [1:0]  o_pstep_nx,// look-ahead: the o_pstep of the next call (emit, 0 in a
-                                         // reset call), for rephase's registered decode (DESIGN 4.4)
-    output wire signed [37:0] o_paced,   // paced position P(t-2) (tap)
-    output wire signed [39:0] o_backlog, // counts still to emit, B(t-2) (tap)
-    output wire               o_ovs,     // pulse: |B(t-4)| > thr(t-1)
-    output wire               o_ovs_st   // sticky
+    input  wire                            i_clk,
+    input  wire                            i_rst,      // synchronous, active high: output_pacer::reset()
+    input  wire signed [`LX_W_DELTA-1:0]   i_delta,    // comp(t) - comp(t-1) from the multiplier
+    input  wire signed [`LX_OP_W_ADD-1:0]  i_add,      // second addend: the error-map delta (same call)
+    input  wire [`LX_OP_W_PACE-1:0]        i_pace_m,   // M: at least max(M, 2) calls between two emitted counts
+    input  wire [`LX_OP_W_THR-1:0]         i_thr,      // backlog alarm threshold
+    input  wire                            i_clear,    // register pulse: clears ovs_st (unless ovs)
+    output wire signed [`LX_W_STEP-1:0]    o_pstep,    // emitted count: -1, 0, +1
+    output wire signed [`LX_W_STEP-1:0]    o_pstep_nx, // look-ahead: the o_pstep of the next call (emit, 0 in a
+                                                       // reset call), for rephase's registered decode (DESIGN 4.4)
+    output wire signed [`LX_W_POS-1:0]     o_paced,    // paced position P(t-2) (tap)
+    output wire signed [`LX_W_BACKLOG-1:0] o_backlog,  // counts still to emit, B(t-2) (tap)
+    output wire                            o_ovs,      // pulse: |B(t-4)| > thr(t-1)
+    output wire                            o_ovs_st    // sticky
 `ifdef FORMAL
     ,
     output wire signed [41:0] f_o_c0,    // formal only: B + P of this call (B(t) + P(t))
@@ -45,19 +46,19 @@ module output_pacer (
 );
 
     // ---- fixed widths (hls: output_pacer_cfg, axis_widths) -----------------------------------
-    localparam integer W_PACE    = 16;   // M register
-    localparam integer W_THR     = 32;   // backlog alarm threshold
-    localparam integer W_POS     = 38;   // paced position
-    localparam integer W_DELTA   = 39;   // input delta
-    localparam integer W_ADD     = 18;   // second addend (error-map delta), inside the lower half
-    localparam integer W_BACKLOG = 40;   // backlog, signed
-    localparam integer L         = W_BACKLOG / 2;   // 20: backlog split point
-    localparam integer W_HI      = W_BACKLOG - L;   // 20
-    localparam integer LP        = W_POS / 2;       // 19: paced split point
-    localparam integer W_PHI     = W_POS - LP;      // 19
-    localparam integer W_THI     = W_THR - L;       // 12
-    localparam integer W_T       = L + 3;           // lo + delta_lo + add - e_prev
-    localparam integer W_CQ      = W_T - L;         // 3: backlog carry -1 .. +2
+    localparam integer W_PACE    = `LX_OP_W_PACE;  // M register
+    localparam integer W_THR     = `LX_OP_W_THR;   // backlog alarm threshold
+    localparam integer W_POS     = `LX_W_POS;      // paced position
+    localparam integer W_DELTA   = `LX_W_DELTA;    // input delta
+    localparam integer W_ADD     = `LX_OP_W_ADD;   // second addend (error-map delta), inside the lower half
+    localparam integer W_BACKLOG = `LX_W_BACKLOG;  // backlog, signed
+    localparam integer L         = W_BACKLOG / 2;  // 20: backlog split point
+    localparam integer W_HI      = W_BACKLOG - L;  // 20
+    localparam integer LP        = W_POS / 2;      // 19: paced split point
+    localparam integer W_PHI     = W_POS - LP;     // 19
+    localparam integer W_THI     = W_THR - L;      // 12
+    localparam integer W_T       = L + 3;          // lo + delta_lo + add - e_prev
+    localparam integer W_CQ      = W_T - L;        // 3: backlog carry -1 .. +2
 
     // ---- registers ---------------------------------------------------------------------------
     reg        [L-1:0]     lo_q;       // X = (hi + cq) * 2^L + lo

@@ -23,24 +23,25 @@
 // (The preset port of the C++ model is a testbench aid and is not part of this RTL.)
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module pulse_multiplier (
-    input  wire               i_clk,
-    input  wire               i_rst,    // synchronous, active high: pulse_multiplier::reset()
-    input  wire signed [1:0]  i_step,   // raw count step from the decoder: -1, 0, +1
-    input  wire [36:0]        i_ratio,  // ratio in force R (Q5.32, unsigned)
-    input  wire signed [63:0] i_comp_offset,  // offset in force OFF (Q32.32 output counts)
-    output wire signed [37:0] o_comp,   // floor(V / 2^32) of the step of three calls back
-    output wire signed [38:0] o_delta   // comp' - comp
+    input  wire                           i_clk,
+    input  wire                           i_rst,         // synchronous, active high: pulse_multiplier::reset()
+    input  wire signed [`LX_W_STEP-1:0]   i_step,        // raw count step from the decoder: -1, 0, +1
+    input  wire [`LX_W_RATIO-1:0]         i_ratio,       // ratio in force R (Q5.32, unsigned)
+    input  wire signed [`LX_W_OFFSET-1:0] i_comp_offset, // offset in force OFF (Q32.32 output counts)
+    output wire signed [`LX_W_POS-1:0]    o_comp,        // floor(V / 2^32) of the step of three calls back
+    output wire signed [`LX_W_DELTA-1:0]  o_delta        // comp' - comp
 );
 
     // ---- widths (hls: pulse_multiplier_cfg) ---------------------------------------------------
-    localparam integer W_RAW    = 32;
-    localparam integer R_FRAC   = 32;
-    localparam integer W_RATIO  = 37;
+    localparam integer W_RAW    = `LX_W_RAW;
+    localparam integer R_FRAC   = `LX_R_FRAC;
+    localparam integer W_RATIO  = `LX_W_RATIO;
     localparam integer R_INT    = W_RATIO - R_FRAC;      // 5
-    localparam integer W_ACC    = 70;
-    localparam integer W_OFFSET = 64;
+    localparam integer W_ACC    = `LX_W_ACC;
+    localparam integer W_OFFSET = `LX_W_OFFSET;
     localparam integer W_HI     = W_ACC - R_FRAC;        // 38 (= W_POS)
     localparam integer W_DRATIO = W_RATIO + 1;           // 38
     localparam integer W_PP     = W_DRATIO + 1;          // 39

@@ -15,35 +15,36 @@
 // Latency pin edge -> o_step: max(glitch_n,1) + 1 calls.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module quad_decoder (
-    input  wire                i_clk,
-    input  wire                i_rst,          // synchronous, active high: quad_decoder::reset()
-    input  wire                i_a,            // laser A pin (asynchronous)
-    input  wire                i_b,            // laser B pin (asynchronous)
-    input  wire                i_lerr,         // laser error pin (asynchronous)
-    input  wire [7:0]          i_glitch_n,     // glitch filter length (W_GLITCH)
-    input  wire [15:0]         i_min_spacing,  // minimum edge spacing, clocks; 0 = off
-    input  wire                i_clear,        // register pulse: clears the sticky flags
-    output wire signed [1:0]   o_step,         // -1, 0, +1
-    output wire signed [31:0]  o_raw_count,    // raw laser count N, wraps
-    output wire                o_illegal,      // pulse: both lines changed
-    output wire                o_ovs,          // pulse: edge closer than min_spacing
-    output wire [7:0]          o_err_cnt,      // illegal transitions, saturating at 255
-    output wire                o_illegal_st,   // sticky
-    output wire                o_ovs_st,       // sticky
-    output wire                o_lerr,         // filtered laser error && primed
-    output wire                o_lerr_nx,      // look-ahead: the o_lerr of the next call (0 in a
-                                               // reset call; rephase registers it, DESIGN 4.5)
-    output wire                o_lerr_alarm,   // sticky while lerr
-    output wire                o_glitch_st     // sticky: the A or B filter suppressed a pulse
+    input  wire                         i_clk,
+    input  wire                         i_rst,         // synchronous, active high: quad_decoder::reset()
+    input  wire                         i_a,           // laser A pin (asynchronous)
+    input  wire                         i_b,           // laser B pin (asynchronous)
+    input  wire                         i_lerr,        // laser error pin (asynchronous)
+    input  wire [`LX_QD_W_GLITCH-1:0]   i_glitch_n,    // glitch filter length (W_GLITCH)
+    input  wire [`LX_QD_W_SPACING-1:0]  i_min_spacing, // minimum edge spacing, clocks; 0 = off
+    input  wire                         i_clear,       // register pulse: clears the sticky flags
+    output wire signed [`LX_W_STEP-1:0] o_step,        // -1, 0, +1
+    output wire signed [`LX_W_RAW-1:0]  o_raw_count,   // raw laser count N, wraps
+    output wire                         o_illegal,     // pulse: both lines changed
+    output wire                         o_ovs,         // pulse: edge closer than min_spacing
+    output wire [`LX_QD_W_ERRCNT-1:0]   o_err_cnt,     // illegal transitions, saturating at 255
+    output wire                         o_illegal_st,  // sticky
+    output wire                         o_ovs_st,      // sticky
+    output wire                         o_lerr,        // filtered laser error && primed
+    output wire                         o_lerr_nx,     // look-ahead: the o_lerr of the next call (0 in a
+                                                       // reset call; rephase registers it, DESIGN 4.5)
+    output wire                         o_lerr_alarm,  // sticky while lerr
+    output wire                         o_glitch_st    // sticky: the A or B filter suppressed a pulse
 );
 
     // ---- fixed widths (hls: quad_decoder_cfg, axis_widths) ----------------------------------
-    localparam integer W_GLITCH  = 8;     // glitch filter length register
-    localparam integer W_SPACING = 16;    // minimum edge spacing register, clocks
-    localparam integer W_ERRCNT  = 8;     // illegal transition counter
-    localparam integer W_RAW     = 32;    // raw laser count
+    localparam integer W_GLITCH  = `LX_QD_W_GLITCH;   // glitch filter length register
+    localparam integer W_SPACING = `LX_QD_W_SPACING;  // minimum edge spacing register, clocks
+    localparam integer W_ERRCNT  = `LX_QD_W_ERRCNT;   // illegal transition counter
+    localparam integer W_RAW     = `LX_W_RAW;         // raw laser count
     localparam [W_SPACING-1:0] SINCE_MAX  = {W_SPACING{1'b1}};
     localparam [W_ERRCNT-1:0]  ERRCNT_MAX = {W_ERRCNT{1'b1}};
 

@@ -28,57 +28,58 @@
 // Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module rephase (
-    input  wire               i_clk,
-    input  wire               i_rst,       // synchronous, active high: rephase::reset()
-    input  wire signed [1:0]  i_pstep,     // paced count from the pacer: -1, 0, +1
+    input  wire                         i_clk,
+    input  wire                         i_rst,       // synchronous, active high: rephase::reset()
+    input  wire signed [`LX_W_STEP-1:0] i_pstep,     // paced count from the pacer: -1, 0, +1
     // look-ahead: the i_pstep of the next call, in every call (reset calls included); the pacer's
     // o_pstep_nx. The count's direction relative to the homing direction (s_pos / s_neg) is
     // registered from it, so its decode and fan-out are off the path from the pacer (DESIGN 4.5)
-    input  wire signed [1:0]  i_pstep_nx,
-    input  wire               i_sw,        // debounced reference switch level
-    input  wire               i_sw_valid,  // its input_filter valid flag
-    input  wire               i_rehome,    // register pulse: back to stage 1
-    input  wire               i_unhome,    // laser error level: back to stage 1, no homing
+    input  wire signed [`LX_W_STEP-1:0] i_pstep_nx,
+    input  wire                         i_sw,        // debounced reference switch level
+    input  wire                         i_sw_valid,  // its input_filter valid flag
+    input  wire                         i_rehome,    // register pulse: back to stage 1
+    input  wire                         i_unhome,    // laser error level: back to stage 1, no homing
     // look-ahead: i_unhome and i_rehome of the next call, in every call (reset calls included);
     // the decoder's o_lerr_nx and the top's presented rehome. The block reads registered copies
     // (un_q, re_q) in place of i_unhome / i_rehome, so the decoder's register does not drive
     // the enables here across the chip (DESIGN 4.5); i_unhome / i_rehome are then used only by
     // the formal properties
-    input  wire               i_unhome_nx,
-    input  wire               i_rehome_nx,
-    input  wire [12:0]        i_period,    // P (8..4096, multiple of 8)
+    input  wire                         i_unhome_nx,
+    input  wire                         i_rehome_nx,
+    input  wire [`LX_W_P-1:0]           i_period,    // P (8..4096, multiple of 8)
     // P - 1 and P - 2 as 14-bit signed values ({1'b0, P} - 1, - 2), formed by the caller from the
     // same period value (the top: in its register stage, beside the period register), so no
     // decrement of P sits in front of the travel and phase-wrap equalities. They must equal
     // those of i_period in every call (the testbench forms them from the period column).
-    input  wire signed [13:0] i_period_m1,
-    input  wire signed [13:0] i_period_m2,
-    input  wire [12:0]        i_mark_len,  // C - B in counts (P/4..P)
-    output wire signed [1:0]  o_ostep,     // output count: -1, 0, +1
-    output wire signed [37:0] o_out_pos,   // paced + adj
-    output wire               o_mark,      // reference mark
-    output wire [1:0]         o_stage,     // 1, 2, 3
-    output wire signed [37:0] o_a,         // point A
-    output wire [11:0]        o_d,         // phase advance d in [0, P)
-    output wire signed [37:0] o_b,         // point B
-    output wire signed [37:0] o_c,         // point C (end of mark)
-    output wire signed [37:0] o_z,         // point Z = B + dir * P/4
-    output wire signed [37:0] o_adj,       // applied adjustment
-    output wire               o_homed      // stage == 3
+    input  wire signed [`LX_W_P:0]      i_period_m1,
+    input  wire signed [`LX_W_P:0]      i_period_m2,
+    input  wire [`LX_W_P-1:0]           i_mark_len,  // C - B in counts (P/4..P)
+    output wire signed [`LX_W_STEP-1:0] o_ostep,     // output count: -1, 0, +1
+    output wire signed [`LX_W_POS-1:0]  o_out_pos,   // paced + adj
+    output wire                         o_mark,      // reference mark
+    output wire [`LX_W_STAGE-1:0]       o_stage,     // 1, 2, 3
+    output wire signed [`LX_W_POS-1:0]  o_a,         // point A
+    output wire [`LX_W_PH-1:0]          o_d,         // phase advance d in [0, P)
+    output wire signed [`LX_W_POS-1:0]  o_b,         // point B
+    output wire signed [`LX_W_POS-1:0]  o_c,         // point C (end of mark)
+    output wire signed [`LX_W_POS-1:0]  o_z,         // point Z = B + dir * P/4
+    output wire signed [`LX_W_POS-1:0]  o_adj,       // applied adjustment
+    output wire                         o_homed      // stage == 3
 );
 
     // ---- fixed widths (hls: rephase_cfg, axis_widths) ----------------------------------------
-    localparam integer W_POS = 38;        // positions
-    localparam integer W_P   = 13;        // period and mark_len registers, L
-    localparam integer W_PH  = 12;        // d, num, w: 0..P-1
-    localparam integer W_TR  = W_P + 1;   // travel beyond A, signed
-    localparam integer W_BR  = W_P + 1;   // Bresenham t, v, k, signed
-    localparam integer W_LAG = 2;         // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
-    localparam integer W_X   = W_P + 1;   // w moves and wraps
-    localparam integer W_LO  = W_POS / 2; // low half of a position counter (pos_step)
-    localparam integer W_CZ  = W_P;       // low part of B = A + dir*P, C = B + dir*mark_len, Z
+    localparam integer W_POS = `LX_W_POS;  // positions
+    localparam integer W_P   = `LX_W_P;    // period and mark_len registers, L
+    localparam integer W_PH  = `LX_W_PH;   // d, num, w: 0..P-1
+    localparam integer W_TR  = W_P + 1;    // travel beyond A, signed
+    localparam integer W_BR  = W_P + 1;    // Bresenham t, v, k, signed
+    localparam integer W_LAG = 2;          // adj_tgt - adj, signed: -1..1 (counts >= 2 calls apart)
+    localparam integer W_X   = W_P + 1;    // w moves and wraps
+    localparam integer W_LO  = W_POS / 2;  // low half of a position counter (pos_step)
+    localparam integer W_CZ  = W_P;        // low part of B = A + dir*P, C = B + dir*mark_len, Z
 
     // the referencing stages (DESIGN 4.5), the values of stage_q and o_stage
     localparam [1:0] ST_UNHOMED = 2'd1;  // stage 1: un-homed, waiting for the switch edge (A)

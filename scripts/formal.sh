@@ -191,7 +191,7 @@ selftest() {
         [ "$ENGINE" = sat ] || smt_spec "$proof" >/dev/null || continue
         n=$((n + 1))
         rm -rf "$tmp/rtl"; mkdir -p "$tmp/rtl/formal"
-        cp "$RTL"/*.v "$tmp/rtl/"; cp "$RTL"/formal/*.v "$RTL"/formal/*.smt2 "$tmp/rtl/formal/"
+        cp "$RTL"/*.v "$RTL"/*.vh "$tmp/rtl/"; cp "$RTL"/formal/*.v "$RTL"/formal/*.smt2 "$tmp/rtl/formal/"
         sed -i "$expr" "$tmp/rtl/$file"
         if cmp -s "$RTL/$file" "$tmp/rtl/$file"; then
             echo "formal selftest: $name: the mutation did not apply"; fails=$((fails + 1)); continue

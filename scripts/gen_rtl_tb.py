@@ -632,6 +632,13 @@ def check_spec(b):
 PORT_RE = re.compile(r"^\s*(input|output)\s+wire\s+(signed\s+)?(?:\[([^\]]+)\]\s*)?(\w+)\s*,?", re.M)
 
 
+def width_macros():
+    """{name: value} of the `define lines of rtl_ref/laserax_widths.vh (the generated widths)."""
+    path = os.path.join(ROOT, "rtl_ref", "laserax_widths.vh")
+    with open(path, encoding="utf-8") as fh:
+        return {m.group(1): m.group(2) for m in re.finditer(r"^`define\s+(LX_\w+)\s+([0-9]+)", fh.read(), re.M)}
+
+
 def rtl_ports(path, module, params):
     """{port: (is_in, width or None, signed)} of `module` in `path`."""
     with open(path, encoding="utf-8") as fh:
@@ -643,6 +650,11 @@ def rtl_ports(path, module, params):
     # formal-only ports (`ifdef FORMAL ... `endif) are not part of the simulated interface
     header = re.sub(r"^\s*`ifdef\s+FORMAL\b.*?^\s*`endif", "", header, flags=re.M | re.S)
     values = {k: v for k, v in params if re.fullmatch(r"[0-9]+", v)}
+    # the width macros of rtl_ref/laserax_widths.vh (`LX_*), by value
+    macros = width_macros()
+    for name in set(re.findall(r"`(LX_\w+)", header)) - set(macros):
+        raise SpecError("%s: module %s uses `%s, which rtl_ref/laserax_widths.vh does not define" % (path, module, name))
+    header = re.sub(r"`(LX_\w+)", lambda x: macros[x.group(1)], header)
     ports = {}
     for d, sgn, rng, name in PORT_RE.findall(header):
         width = 1

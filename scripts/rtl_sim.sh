@@ -31,7 +31,7 @@ REGMAP_SETS="laserax_regs laserax_axil"   # regmap_vectors, no _stress set
 CALLS="${RTL_CALLS:-40000}"
 STRESS_CALLS="${RTL_STRESS_CALLS:-30000}"
 REGMAP_CALLS="${RTL_REGMAP_CALLS:-50000}"   # laserax_axil: DDS table loads and homings take room
-IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
+IVERILOG_FLAGS=(-g2005 -grelative-include -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 
 die() { echo "rtl_sim: $*" >&2; exit 1; }
 

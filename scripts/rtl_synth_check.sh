@@ -24,7 +24,7 @@ ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top
          laserax_regs laserax_axil encoder_counter pso)
 COARSE_MODULES=" error_map laserax_top laserax_axil "  # synth -run :fine (see above)
-IVERILOG_FLAGS=(-g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
+IVERILOG_FLAGS=(-g2005 -grelative-include -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 LATCH_CELLS='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 
 die() { echo "rtl_synth_check: $*" >&2; exit 1; }
