@@ -77,7 +77,7 @@ axis_out laserax_top::run(const axis_pins& pins) {
     last_period_ = regs.period;
     was_running_ = running;
     if (!running) {
-        // safe state: every block and every inter-block register (including the t-3 delay of
+        // safe state: every block and every kept block output (including the t-3 outputs of
         // qa/qb/qz/ref_mark) held in reset; outputs and taps zero, cfg_err = alarm = 1, stage 1.
         reset();
         o.cfg_err = true;
@@ -86,18 +86,21 @@ axis_out laserax_top::run(const axis_pins& pins) {
         return o;
     }
 
+    // DESIGN 4.7, connections: every block input that is another block's output is that output
+    // of call t - L (connection_latency); pins and registers are this call's
     const input_filter::out swf_o = swf_.step(pins.sw, regs.sw_debounce);
     const quad_decoder::out dec_o =
         dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
-    const pulse_multiplier::out mul_o = mul_.step(dec_q_.step, ratio_held_, offset_held_);
-    // error map (docs/ERROR_MAP.md §8): uncorrected comp and homed status of the previous call;
-    // its delta joins the multiplier delta at the pacer input
-    const error_map::out emap_o = emap_.step(mul_q_.comp, rep_q_.homed, regs.emap);
-    const output_pacer::out pac_o =
-        pac_.step(mul_q_.delta + emap_q_.delta, regs.pace_m, regs.backlog_thr, regs.clear);
-    const rephase::out rep_o = rep_.step(pac_q_.pstep, swf_q_.f, swf_q_.valid, regs.rehome,
-                                         dec_q_.lerr, regs.period, regs.mark_len);
-    const dds_sincos::out dds_o = dds_.step(rep_q_.ostep, regs.period, regs.amplitude);
+    const pulse_multiplier::out mul_o = mul_.step(dec_past_.at(L::MUL_STEP).step, ratio_held_, offset_held_);
+    // error map (docs/ERROR_MAP.md §8): the uncorrected comp and the homed status; its delta joins
+    // the multiplier delta at the pacer input
+    const error_map::out emap_o = emap_.step(mul_past_.at(L::MAP_P).comp, rep_past_.at(L::MAP_HOMED).homed, regs.emap);
+    const output_pacer::out pac_o = pac_.step(mul_past_.at(L::PAC_DELTA).delta + emap_past_.at(L::PAC_DELTA).delta,
+                                              regs.pace_m, regs.backlog_thr, regs.clear);
+    const input_filter::out& sw_in = swf_past_.at(L::REP_SW);
+    const rephase::out rep_o = rep_.step(pac_past_.at(L::REP_PSTEP).pstep, sw_in.f, sw_in.valid, regs.rehome,
+                                         dec_past_.at(L::REP_UNHOME).lerr, regs.period, regs.mark_len);
+    const dds_sincos::out dds_o = dds_.step(rep_past_.at(L::DDS_OSTEP).ostep, regs.period, regs.amplitude);
 
     // DAC range guard (DESIGN 4.7): codes clamped to +-(2^(dac_width-1) - 1); a clamp sets the
     // sticky dac_clip_st (clear acts first, an event in the same call wins)
@@ -113,13 +116,14 @@ axis_out laserax_top::run(const axis_pins& pins) {
     if (clip) dac_clip_st_ = true;
     o.dac_clip_st = dac_clip_st_;
 
-    // digital outputs from the rephase output of call t-3: index = out_pos mod 4 (true modulo),
+    // digital outputs from the rephase output of call t - 3: index = out_pos mod 4 (true modulo),
     // 0->(0,0), 1->(1,0), 2->(1,1), 3->(0,1)
-    const int64_t qi = ((rep_q3_.out_pos % 4) + 4) % 4;
+    const rephase::out& rep_quad = rep_past_.at(L::OUT_QUAD);
+    const int64_t qi = ((rep_quad.out_pos % 4) + 4) % 4;
     o.qa = qi == 1 || qi == 2;
     o.qb = qi == 2 || qi == 3;
-    o.qz = rep_q3_.mark;
-    o.ref_mark = rep_q3_.mark;
+    o.qz = rep_quad.mark;
+    o.ref_mark = rep_quad.mark;
 
     o.cfg_err = false;
     o.stage = rep_o.stage;
@@ -153,15 +157,13 @@ axis_out laserax_top::run(const axis_pins& pins) {
     o.corr = emap_o.corr;
     o.map_delta = emap_o.delta;
 
-    // advance the inter-block registers
-    swf_q_ = swf_o;
-    dec_q_ = dec_o;
-    mul_q_ = mul_o;
-    pac_q_ = pac_o;
-    emap_q_ = emap_o;
-    rep_q3_ = rep_q2_;
-    rep_q2_ = rep_tap{rep_q_.out_pos, rep_q_.mark};
-    rep_q_ = rep_o;
+    // this call's block outputs join the kept ones
+    swf_past_.push(swf_o);
+    dec_past_.push(dec_o);
+    mul_past_.push(mul_o);
+    emap_past_.push(emap_o);
+    pac_past_.push(pac_o);
+    rep_past_.push(rep_o);
     return o;
 }
 

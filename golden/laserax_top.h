@@ -1,19 +1,16 @@
 // golden/laserax_top.h — golden model of the whole top, DESIGN.md 4.7 (laserax_top),
 // including the configuration check (cfg_ok) and the safe state.
 //
-// Pipeline rule (DESIGN 2, 4.7): one call = one clock edge; a block at call t consumes the
-// outputs its upstream returned at call t-1 (kept in members, all zero at reset).
-//   swf.step(sw)                      (switch input_filter, length sw_debounce)
-//   dec.step(a, b, lerr)              (glitch_n, min_spacing, clear of this call)
-//   mul.step(dec_q.step)
-//   emap.step(mul_q.comp, rep_q.homed) (map registers of this call; docs/ERROR_MAP.md §8)
-//   pac.step(mul_q.delta + emap_q.delta) (pace_m, backlog_thr, clear of this call)
-//   rep.step(pac_q.pstep, swf_q.f, swf_q.valid, rehome of this call, unhome = dec_q.lerr)
-//   dds.step(rep_q.ostep)
-// sin/cos: the DDS outputs of this call; qa, qb (quadrature of out_pos mod 4), qz and ref_mark
-// (= rephase mark) from the rephase outputs of call t-3. While !config_ok every block and every
-// inter-block register is reset in each call and the outputs are the safe state.
+// Written from the connection table of DESIGN 4.7: an input of a block in call t is another
+// block's output of call t - L (or a pin / register of call t). The model keeps each block's
+// outputs of its last calls (`past`, zero after a reset of the chain) and reads them at the
+// latencies of that table (`connection_latency`, one constant per row), so the order in which the
+// blocks are stepped within a call does not matter. sin/cos: the DDS outputs of this call through
+// the DAC range guard. While the configuration check fails every block and every kept output is
+// reset in each call and the outputs are the safe state.
 #pragma once
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 
@@ -88,6 +85,38 @@ struct axis_out {
 // state in the call after one with tbl_we = 1: that needs the previous call, see laserax_top.)
 bool config_ok(const axis_regs& r);
 
+// DESIGN 4.7, connections: the latency L, in calls, of every block input (and top output) that is
+// another block's output. Input in call t = that output of call t - L.
+struct connection_latency {
+    static constexpr int MUL_STEP = 1;    // pulse_multiplier step      <- quad_decoder step
+    static constexpr int MAP_P = 1;       // error_map p                <- pulse_multiplier comp
+    static constexpr int MAP_HOMED = 1;   // error_map homed            <- rephase homed
+    static constexpr int PAC_DELTA = 1;   // output_pacer delta (both)  <- pulse_multiplier delta, error_map delta
+    static constexpr int REP_PSTEP = 1;   // rephase pstep              <- output_pacer pstep
+    static constexpr int REP_SW = 1;      // rephase sw, sw_valid       <- switch filter f, valid
+    static constexpr int REP_UNHOME = 1;  // rephase unhome             <- quad_decoder lerr
+    static constexpr int DDS_OSTEP = 1;   // dds_sincos ostep           <- rephase ostep
+    static constexpr int OUT_QUAD = 3;    // top qa, qb, qz, ref_mark   <- rephase out_pos, mark
+};
+
+// The outputs of one block in its last N calls: at(d) is the output of call t - d (d = 1..N) while
+// call t runs; all zero after construction (a reset of the chain). push() ends a call.
+template <class T, int N>
+class past {
+    static_assert(N >= 1, "a kept output is at least one call old");
+
+public:
+    const T& at(int d) const { return v_[static_cast<size_t>((head_ + N - (d - 1)) % N)]; }
+    void push(const T& x) {
+        head_ = (head_ + 1) % N;
+        v_[static_cast<size_t>(head_)] = x;
+    }
+
+private:
+    std::array<T, N> v_{};
+    int head_ = 0;
+};
+
 class laserax_top {
 public:
     void reset();
@@ -102,19 +131,14 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;  // its tables survive reset(); only the pipeline is reset
-    // inter-block registers: outputs of the previous call (zero at reset)
-    input_filter::out swf_q_{};
-    quad_decoder::out dec_q_{};
-    pulse_multiplier::out mul_q_{};
-    output_pacer::out pac_q_{};
-    error_map::out emap_q_{};
-    rephase::out rep_q_{};   // rephase output of call t-1
-    struct rep_tap {         // the rephase outputs qa, qb, qz and ref_mark use (DESIGN 4.7)
-        int64_t out_pos = 0;
-        bool mark = false;
-    };
-    rep_tap rep_q2_{};  // of call t-2
-    rep_tap rep_q3_{};  // of call t-3
+    // the blocks' outputs of the last calls, as deep as the longest latency that reads them
+    using L = connection_latency;
+    past<input_filter::out, L::REP_SW> swf_past_;
+    past<quad_decoder::out, std::max(L::MUL_STEP, L::REP_UNHOME)> dec_past_;
+    past<pulse_multiplier::out, std::max(L::MAP_P, L::PAC_DELTA)> mul_past_;
+    past<error_map::out, L::PAC_DELTA> emap_past_;
+    past<output_pacer::out, L::REP_PSTEP> pac_past_;
+    past<rephase::out, std::max({L::MAP_HOMED, L::DDS_OSTEP, L::OUT_QUAD})> rep_past_;
     int64_t last_period_ = 0;    // period register of the previous call
     uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
     int64_t offset_held_ = 0;                // comp_offset in force
