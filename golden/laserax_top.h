@@ -106,15 +106,14 @@ class past {
     static_assert(N >= 1, "a kept output is at least one call old");
 
 public:
-    const T& at(int d) const { return v_[static_cast<size_t>((head_ + N - (d - 1)) % N)]; }
+    const T& at(int d) const { return v_[static_cast<size_t>(d - 1)]; }
     void push(const T& x) {
-        head_ = (head_ + 1) % N;
-        v_[static_cast<size_t>(head_)] = x;
+        for (int d = N - 1; d > 0; --d) v_[static_cast<size_t>(d)] = v_[static_cast<size_t>(d - 1)];
+        v_[0] = x;
     }
 
 private:
-    std::array<T, N> v_{};
-    int head_ = 0;
+    std::array<T, N> v_{};  // v_[d - 1]: the output of call t - d
 };
 
 class laserax_top {
