@@ -194,10 +194,56 @@ public:
 
     dds_sincos& dds() { return dds_; }
 
-    LASERAX_FLATTEN axis_out step(const axis_pins& pins, const axis_regs& presented) {
-        // register stage (DESIGN §4.7): this call runs on the registers presented in the previous
-        // call (regs_q_, read in place) and on their configuration check, made (in hardware) in
-        // that call on the presented values and registered (chk_q_)
+#ifndef __SYNTHESIS__
+    // Register write port (issue 13: simulation speed; DESIGN §4.7 unchanged): `r` is the block
+    // presented in every call from the next tick() on, until the next write, i.e. in force from the
+    // call after that tick. Only a write reloads the registers in force and checks them; a tick
+    // with no write since the previous one presents the same block again (nothing to compare).
+    void write_regs(const axis_regs& r) {
+        presented_ = r;
+        written_ = true;
+    }
+    const axis_regs& presented() const { return presented_; }
+
+    // One clock on the presented registers (the last write_regs()). The outputs of the call are the
+    // core's output register file, returned by reference (no copy): valid until the next tick(),
+    // step() or reset(); out() reads them too.
+    LASERAX_FLATTEN const axis_out& tick(const axis_pins& pins) {
+        clock(pins);
+        // the register load and its check, only after a write (same_q_: the block in force in
+        // this call stays in force in the next)
+        same_q_ = !written_;
+        if (written_) {
+            regs_q_ = presented_;
+            chk_q_ = check(regs_q_);
+            written_ = false;
+        }
+        return out_;
+    }
+#endif
+    const axis_out& out() const { return out_; }
+
+    // One clock with the register block `presented` presented in this call (in force in the next):
+    // the write port and tick(). C simulation: a block with the bytes of the presented one is not
+    // written again (it presents the same values). Synthesis: the register stage of every call.
+    axis_out step(const axis_pins& pins, const axis_regs& presented) {
+#ifdef __SYNTHESIS__
+        clock(pins);
+        regs_q_ = presented;
+        chk_q_ = check(regs_q_);
+        same_q_ = false;
+        return out_;
+#else
+        if (!LASERAX_REGS_SAME(presented, presented_)) write_regs(presented);
+        return tick(pins);
+#endif
+    }
+
+private:
+    // the chain's part of a clock: runs on the registers presented in the previous call (regs_q_,
+    // read in place) and on their configuration check, made (in hardware) in that call on the
+    // presented values and registered (chk_q_)
+    void clock(const axis_pins& pins) {
         if (powered_) {
             run(pins, regs_q_);
         } else {
@@ -205,14 +251,6 @@ public:
             powered_ = true;
         }
         tblw_q_ = regs_q_.tbl_we;  // the table write in force in this call (false in the power-up call)
-        // the register load and its check; skipped when the presented block is the one in force
-        // (same bytes: same values, so the same check; the C-simulation shortcut above)
-        same_q_ = LASERAX_REGS_SAME(presented, regs_q_);
-        if (!same_q_) {
-            regs_q_ = presented;
-            chk_q_ = check(regs_q_);
-        }
-        return out_;
     }
 
 private:
@@ -363,6 +401,10 @@ private:
     bool powered_ = false;            // false until the power-up call
     bool tblw_q_ = false;             // tbl_we in force in the previous call (DESIGN §4.6, §4.7)
     bool same_q_ = false;  // regs_q_ holds the block in force in the previous call too (not reloaded)
+#ifndef __SYNTHESIS__
+    alignas(16) axis_regs presented_ = axis_regs{};  // the block presented (write port; C simulation)
+    bool written_ = false;  // presented_ written since the last clock (reload and check after it)
+#endif
 
     static reg_check check(const axis_regs& r) {
         reg_check c;

@@ -5,9 +5,10 @@
 # and the reading of the default table cancel out. Instruction counts of a fixed binary on a fixed
 # stimulus are deterministic (no timer, no sampling).
 #   bash scripts/bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]
-# Then the chain's figure split by block: the instructions of laserax_top::step (every block step is
-# inlined into it) by the source file of the inlined code (callgrind_annotate, the same
-# difference; needs the line information the build gives bench, -g).
+# Then the chain's figure split by block: the instructions of laserax_top::tick (every block step is
+# inlined into it; or of the bench's chain_step when GCC inlines tick there) by the source file of
+# the inlined code (callgrind_annotate, the same difference; needs the line information the build
+# gives bench, -g).
 set -euo pipefail
 bench=${1:?usage: bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]}
 short=${2:-100000}
@@ -35,21 +36,21 @@ for it in "${items[@]}"; do
         'BEGIN { printf "  %-34s %10.1f instructions / clock\n", l, (i2 - i1) / (c2 - c1) }'
 done
 
-# per block inside the chain: Ir of laserax_top::step by source file, (long - short) / call difference
-by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::step, and "calls N"
+# per block inside the chain: Ir of laserax_top::tick (or the chain_step it is inlined into) by source file, (long - short) / call difference
+by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::tick, and "calls N"
     local f out
     f=$(mktemp)
     out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only "hls laserax_top" 2>&1)
     printf '%s\n' "$out" | sed -n 's/.*(\([0-9]*\) calls in .*/calls \1/p' | tail -n 1
     callgrind_annotate --inclusive=no --auto=no "$f" 2>/dev/null | grep -v "=>" |
-        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):lx::laserax_top::step(.*/\2 \1/p' | tr -d ','
+        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):\(lx::laserax_top::step\|lx::laserax_top::tick\|(anonymous namespace)::chain_step\)(.*/\2 \1/p' | tr -d ','
     rm -f "$f"
 }
 if command -v callgrind_annotate >/dev/null; then
     s1=$(by_file "$short")
     s2=$(by_file "$long")
     if printf '%s\n' "$s2" | grep -q '^hls/'; then
-        echo "hls laserax_top (full chain) by block (instructions / clock of the code inlined into laserax_top::step, by source file):"
+        echo "hls laserax_top (full chain) by block (instructions / clock of the code inlined into laserax_top::tick, by source file):"
         awk 'FNR == 1 { part++ }
              $1 == "calls" { c[part] = $2; next }
              { v[part, $1] += $2; k[$1] = 1 }

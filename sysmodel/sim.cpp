@@ -196,6 +196,7 @@ bool controller_decoder::feed(int64_t sin_code, int64_t cos_code, bool qa, bool 
 }
 
 dual_axis::dual_axis(const axis_settings& s) : s_(s), hr_(to_hls(s)), gr_(to_golden(s)) {
+    core_.write_regs(hr_);  // the hls registers go through the core's write port (issue 13)
     load_table(core_, static_cast<int>(s.period), static_cast<int>(s.amplitude));
     gold_.reset();
 }
@@ -208,6 +209,7 @@ void dual_axis::set(const axis_settings& s) {
     f_stale_ = true;
     hr_ = to_hls(s);
     gr_ = to_golden(s);
+    core_.write_regs(hr_);
 }
 
 std::string dual_axis::step(const lx::axis_pins& p) {
@@ -216,7 +218,7 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     gp.b = p.b;
     gp.sw = p.sw;
     gp.lerr = p.lerr;
-    h_ = core_.step(p, hr_);
+    const lx::axis_out& h = core_.tick(p);  // the registers presented: the last write_regs(hr_)
     g_ = gold_.step(gp, gr_);
     ++calls_;
     // the call ran on f_ (the settings presented in the previous call); none in the power-up call
@@ -236,8 +238,9 @@ std::string dual_axis::step(const lx::axis_pins& p) {
         f_stale_ = true;
         hr_.emap.we = false;
         gr_.emap.we = false;
+        core_.write_regs(hr_);
     }
-    std::string m = compare(h_, g_);
+    std::string m = compare(h, g_);
     if (m.empty()) m = integrity();
     if (f_stale_) {  // s_ changed since it was last copied (set(), write_map(), the we clear above)
         f_ = s_;
@@ -254,6 +257,7 @@ void dual_axis::write_map(int addr, int32_t data) {
     f_stale_ = true;
     hr_ = to_hls(s_);
     gr_ = to_golden(s_);
+    core_.write_regs(hr_);
 }
 
 std::string dual_axis::integrity() {
@@ -281,7 +285,8 @@ std::string dual_axis::integrity() {
                             !g_.dac_clip_st;
         if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
         prev_use_sc_ = use_sc;
-        const bool ok = dec_.feed(use_sc ? h_.sin.to_int64() : 0, use_sc ? h_.cos.to_int64() : 1, h_.qa, h_.qb);
+        const lx::axis_out& h = core_.out();
+        const bool ok = dec_.feed(use_sc ? h.sin.to_int64() : 0, use_sc ? h.cos.to_int64() : 1, h.qa, h.qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
         if (m.empty() && hist_n_ >= kOutLag) {
             const int64_t want = out_hist_[kOutLag - 1];

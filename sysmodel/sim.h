@@ -131,7 +131,8 @@ public:
     // One error-map table word for the next step() of both models (the write port writes the bank
     // not selected by bank_sel in that call); the write enable is cleared after that call.
     void write_map(int addr, int32_t data);
-    const lx::axis_out& hls() const { return h_; }
+    // the hls outputs of the last step(): the core's output register file (laserax_top::out())
+    const lx::axis_out& hls() const { return core_.out(); }
     const golden::axis_out& gold() const { return g_; }
     lx::laserax_top& core() { return core_; }
     const axis_settings& settings() const { return s_; }
@@ -143,7 +144,6 @@ private:
     golden::axis_regs gr_;
     lx::laserax_top core_;
     golden::laserax_top gold_;
-    lx::axis_out h_{};
     golden::axis_out g_{};
     uint64_t calls_ = 0;
     // integrity state

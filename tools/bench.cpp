@@ -39,10 +39,11 @@ const char* g_only = nullptr;
 // affected.  // --only KEY: run only the items whose name contains KEY
 
 // The chain item calls the chain through this non-inlined function, as a testbench does: the whole
-// axis_out is returned (inlined into the bench loop, the unused outputs would not be computed).
-__attribute__((noinline)) lx::axis_out chain_step(lx::laserax_top& core, const lx::axis_pins& p,
-                                                  const lx::axis_regs& regs) {
-    return core.step(p, regs);
+// axis_out is produced (inlined into the bench loop, the unused outputs would not be computed). It
+// uses the interface the testbenches use (lxt::dual_axis): registers through the write port,
+// laserax_top::tick(), the outputs by reference (issue 13).
+__attribute__((noinline)) const lx::axis_out& chain_step(lx::laserax_top& core, const lx::axis_pins& p) {
+    return core.tick(p);
 }
 
 template <typename F>
@@ -91,11 +92,12 @@ int main(int argc, char** argv) {
     report("hls laserax_top (full chain)", n, [&](long long k) {
         const std::unique_ptr<lx::laserax_top> core_p(new lx::laserax_top);  // on the heap: see heap_note
         lx::laserax_top& core = *core_p;
+        core.write_regs(regs);
         long long acc = 0;
         for (long long t = 0; t < k; ++t) {
             lx::axis_pins p;
             pins_at(t, p);
-            acc += chain_step(core, p, regs).sin.to_int64();
+            acc += chain_step(core, p).sin.to_int64();
         }
         sink = acc;
     });
