@@ -2,9 +2,13 @@
 // rephase -> dds_sincos, with the error_map beside the pacer input, plus the switch debounce,
 // the configuration check and the digital A/B/Z outputs (DESIGN §4.7, register map §5).
 //
-// One call of step() is one clock. Between two blocks there is exactly one register stage: a
-// block consumes the outputs its upstream block returned at the previous call (held in out_, the
-// outputs of the previous call, and in the *_q members for those no output shows).
+// One call of step() (or of tick()) is one clock. step(pins, regs) presents a register block in
+// every call; the C simulation also has a register write port, write_regs(), and tick(), which
+// presents the last block written and returns the outputs by reference (the interface the
+// testbenches use, lxt::dual_axis; issue 13: simulation speed). Between two blocks there is
+// exactly one register stage: a block consumes the outputs its upstream block returned at the
+// previous call (held in out_, the outputs of the previous call, and in the *_q members for those
+// no output shows).
 // qa/qb/qz/ref_mark take the rephase outputs of three calls ago so that they change in the same
 // call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1, DESIGN 4.7).
 //
@@ -202,6 +206,7 @@ public:
     void write_regs(const axis_regs& r) {
         presented_ = r;
         written_ = true;
+        fast_ = false;
     }
     const axis_regs& presented() const { return presented_; }
 
@@ -209,6 +214,13 @@ public:
     // core's output register file, returned by reference (no copy): valid until the next tick(),
     // step() or reset(); out() reads them too.
     LASERAX_FLATTEN const axis_out& tick(const axis_pins& pins) {
+        // fast_: no write since the previous call, which ran on the same registers without a
+        // reload: run() would skip its loads and checks, tbl_we in force is 0 (it fails the check)
+        // and the block in force stays in force; only the blocks run
+        if (fast_) {
+            blocks(pins, regs_q_);
+            return out_;
+        }
         clock(pins);
         // the register load and its check, only after a write (same_q_: the block in force in
         // this call stays in force in the next)
@@ -218,6 +230,7 @@ public:
             chk_q_ = check(regs_q_);
             written_ = false;
         }
+        fast_ = same_q_ && run_q_;
         return out_;
     }
 #endif
@@ -295,6 +308,11 @@ private:
                 return;
             }
         }
+        blocks(pins, regs);
+    }
+
+    // the blocks of one running call on the registers in force (run() made the checks)
+    void blocks(const axis_pins& pins, const axis_regs& regs) {
         // Every block reads only inter-block registers of the previous call, so the order of the
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
@@ -404,6 +422,7 @@ private:
 #ifndef __SYNTHESIS__
     alignas(16) axis_regs presented_ = axis_regs{};  // the block presented (write port; C simulation)
     bool written_ = false;  // presented_ written since the last clock (reload and check after it)
+    bool fast_ = false;     // the next tick runs the blocks only (see tick)
 #endif
 
     static reg_check check(const axis_regs& r) {

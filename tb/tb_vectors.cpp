@@ -6,7 +6,11 @@
 //   fresh hls laserax_top and compares every output column on every row; replays the dds_sincos
 //   (table port included), pulse_multiplier (preset included) and error_map (its directed tail
 //   included) block files into fresh hls blocks the same way (the files, not the generator, are
-//   the reference here). Columns are found by
+//   the reference here). The laserax_top replay runs a second hls core that takes the row's
+//   registers through its write port on every row (laserax_top::write_regs + tick: the register
+//   reload and check in every call) beside the first one's step(), which writes only a block that
+//   differs from the presented one (the in-force shortcut, issue 13): all 36 outputs must agree
+//   on every row. Columns are found by
 //   name: a replay fails if the file has an input column it does not apply or an output column it
 //   cannot compare, so a new column cannot go unchecked;
 // * malformed files (truncated row, bad number, wrong header, wrong hex width, bad hex digit,
@@ -83,11 +87,30 @@ bool check_outputs(tbu::result& res, const lxt::vec_table& t, size_t r, const st
     return true;
 }
 
+// the 36 outputs of a laserax_top call by name (the output columns of laserax_top.csv)
+std::vector<named> top_outputs(const lx::axis_out& x) {
+    return {
+        {"sin", x.sin.to_int64()}, {"cos", x.cos.to_int64()}, {"ref_mark", x.ref_mark}, {"qa", x.qa},
+        {"qb", x.qb}, {"qz", x.qz}, {"cfg_err", x.cfg_err}, {"stage", x.stage.to_int64()}, {"homed", x.homed},
+        {"lerr_alarm", x.lerr_alarm}, {"illegal_st", x.illegal_st}, {"err_cnt", x.err_cnt.to_int64()},
+        {"ovs_edge_st", x.ovs_edge_st}, {"ovs_backlog_st", x.ovs_backlog_st}, {"glitch_st", x.glitch_st},
+        {"alarm", x.alarm}, {"raw_count", x.raw_count.to_int64()}, {"comp_pos", x.comp_pos.to_int64()},
+        {"paced_pos", x.paced_pos.to_int64()}, {"out_pos", x.out_pos.to_int64()}, {"d", x.d.to_int64()},
+        {"step", x.step.to_int64()}, {"delta", x.delta.to_int64()}, {"backlog", x.backlog.to_int64()},
+        {"pstep", x.pstep.to_int64()}, {"ostep", x.ostep.to_int64()}, {"adj", x.adj.to_int64()},
+        {"a_pos", x.a_pos.to_int64()}, {"b_pos", x.b_pos.to_int64()}, {"c_pos", x.c_pos.to_int64()},
+        {"z_pos", x.z_pos.to_int64()}, {"rep_mark", x.rep_mark}, {"map_cfg_err", x.map_cfg_err},
+        {"corr", x.corr.to_int64()}, {"map_delta", x.map_delta.to_int64()}};
+}
+
 void replay_top(tbu::result& res, const lxt::vec_table& t) {
     lx::laserax_top core;
     lxt::load_table(core, 256, 32767);
+    lx::laserax_top reload;  // written on every row (no shortcut of an unchanged block)
+    lxt::load_table(reload, 256, 32767);
     inputs in(t);
     long bad = 0;
+    long reload_bad = 0;
     for (size_t r = 0; r < t.rows.size() && bad < 5; ++r) {
         in.row(t.rows[r]);
         lxt::axis_settings s;
@@ -128,19 +151,17 @@ void replay_top(tbu::result& res, const lxt::vec_table& t) {
         p.sw = in("sw") != 0;
         p.lerr = in("lerr") != 0;
         const lx::axis_out o = core.step(p, regs);
-        const std::vector<named> got = {
-            {"sin", o.sin.to_int64()}, {"cos", o.cos.to_int64()}, {"ref_mark", o.ref_mark}, {"qa", o.qa},
-            {"qb", o.qb}, {"qz", o.qz}, {"cfg_err", o.cfg_err}, {"stage", o.stage.to_int64()}, {"homed", o.homed},
-            {"lerr_alarm", o.lerr_alarm}, {"illegal_st", o.illegal_st}, {"err_cnt", o.err_cnt.to_int64()},
-            {"ovs_edge_st", o.ovs_edge_st}, {"ovs_backlog_st", o.ovs_backlog_st}, {"glitch_st", o.glitch_st},
-            {"alarm", o.alarm}, {"raw_count", o.raw_count.to_int64()}, {"comp_pos", o.comp_pos.to_int64()},
-            {"paced_pos", o.paced_pos.to_int64()}, {"out_pos", o.out_pos.to_int64()}, {"d", o.d.to_int64()},
-            {"step", o.step.to_int64()}, {"delta", o.delta.to_int64()}, {"backlog", o.backlog.to_int64()},
-            {"pstep", o.pstep.to_int64()}, {"ostep", o.ostep.to_int64()}, {"adj", o.adj.to_int64()},
-            {"a_pos", o.a_pos.to_int64()}, {"b_pos", o.b_pos.to_int64()}, {"c_pos", o.c_pos.to_int64()},
-            {"z_pos", o.z_pos.to_int64()}, {"rep_mark", o.rep_mark}, {"map_cfg_err", o.map_cfg_err},
-            {"corr", o.corr.to_int64()}, {"map_delta", o.map_delta.to_int64()}};
+        reload.write_regs(regs);
+        const lx::axis_out& ro = reload.tick(p);
+        const std::vector<named> got = top_outputs(o);
         if (!check_outputs(res, t, r, got)) ++bad;
+        const std::vector<named> rgot = top_outputs(ro);
+        for (size_t i = 0; i < got.size() && reload_bad < 5; ++i)
+            if (!res.expect(rgot[i].value == got[i].value, [&] {
+                    return "laserax_top row " + std::to_string(r) + ": " + got[i].name + " " + std::to_string(got[i].value) +
+                           " with step(), " + std::to_string(rgot[i].value) + " with a register write every call";
+                }))
+                ++reload_bad;
     }
     in.report(res);
     const std::vector<int64_t>& last = t.rows.back();
