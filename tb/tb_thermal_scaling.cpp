@@ -120,7 +120,7 @@ int main(int argc, char** argv) {
         res.check(!lxt::make_thermal(std::nan(""), 20.0, 0, &tp).ok, "alpha NaN accepted");
         res.check(!lxt::make_thermal(11.5, 20.0, (int64_t(1) << 53) + 1, &tp).ok, "origin beyond 2^53 accepted");
         res.check(lxt::make_thermal(-300.0, 80.0, -(int64_t(1) << 53), &tp).ok, "limits rejected");
-        // steel at 25 °C: alpha (20 - T) = -57.5 ppm, K169 = -5.75 (seed 002 units of 1e-5)
+        // steel at 25 °C: alpha (20 - T) = -57.5 ppm, K169 = -5.75 (ETEL encoder scaling: units of 1e-5)
         res.check(lxt::make_thermal(11.5, 25.0, 1000, &tp).ok, "steel at 25 degC rejected");
         const lxt::encoder_scaling es = lxt::to_encoder_scaling(tp);
         res.check(es.k168 == 1000 && es.k169_e7 == -57500000 && lxt::k169_value(es) == -5.75,

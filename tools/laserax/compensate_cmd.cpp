@@ -146,7 +146,7 @@ int cmd_compensate(const std::vector<std::string>& args, size_t first, FILE* out
                  scale_from_ratio(c.ratio, in.wavelength_nm).scale);
     std::fprintf(out, "  comp_offset (Q32.32)      %lld  (%.6Lf output counts = -K168 * K169 * 1e-5)\n",
                  static_cast<long long>(c.comp_offset), static_cast<long double>(c.comp_offset) / 4294967296.0L);
-    std::fprintf(out, "  encoder scaling (seed 002): K168 = %lld counts (%.4f um), K169 = %.7f (units of 1e-5)\n",
+    std::fprintf(out, "  ETEL encoder scaling: K168 = %lld counts (%.4f um), K169 = %.7f (units of 1e-5)\n",
                  static_cast<long long>(c.scaling.k168), static_cast<double>(c.scaling.k168) * kOutputCountNmComp / 1000.0,
                  lxt::k169_value(c.scaling));
     if (std::fabs(static_cast<double>(c.scaling.k168) - c.origin_counts_exact) > 1e-9)

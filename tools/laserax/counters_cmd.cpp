@@ -117,7 +117,7 @@ int cmd_counters(const std::vector<std::string>& args, size_t first) {
         return 2;
     }
 
-    // Scale factors (seed 001): counter 0 by the constant-speed form, counter 1 from a
+    // Scale factors (RTC5 linear movements): counter 0 by the constant-speed form, counter 1 from a
     // calibration run (start/end readings across the wrap and a least-squares fit).
     const double scale0 = golden::encoder_scale_at_rate(kbits, vmm, rate);
     const int64_t wrap_preset = 2147483647LL - static_cast<int64_t>(0.3 * enc_speed * calls_d);
