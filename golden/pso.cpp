@@ -17,7 +17,7 @@ int sgn(int64_t v) { return (v > 0) - (v < 0); }
 
 }  // namespace
 
-pso::pso() : ram_(kArrDepth, 0), ram_m2_(kArrDepth, 0), ram_g2_(kArrDepth, 0) { reset(); }
+pso::pso() : ram_(kArrDepth, 0), ram_m2_(kArrDepth, 0), ram_m3_(kArrDepth, 0), ram_g3_(kArrDepth, 0) { reset(); }
 
 uint64_t pso::inc_max() { return static_cast<uint64_t>(floorl(kPulseHzMax * kQ / kClockHz)); }
 
@@ -65,7 +65,7 @@ void pso::reset_run() {
         est_hist_[k] = 0;
         inwin_hist_[k] = false;
     }
-    fd_m1_ = fd_m2_ = 0;
+    fd_m1_ = fd_m2_ = fd_m3_ = 0;
     sp_pending_ = false;
     ps_count_ = 0;
     idx_ = 0;
@@ -86,9 +86,10 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
     // register stage: this call works with the values presented in the previous call
     const pso_regs r = force_;
     force_ = presented;
-    // the RAM as it stood after call t-2 (a fire of this call takes the next threshold from it)
-    ram_g2_ = ram_m2_;
-    ram_m2_ = ram_;  // the RAM after the previous call: "after call n-2" of the next call
+    // the RAM as it stood after call t-3 (a fire of this call takes the next threshold from it)
+    ram_g3_ = ram_m3_;
+    ram_m3_ = ram_m2_;  // the RAM after call t-2: "after call n-3" of the next call
+    ram_m2_ = ram_;     // the RAM after the previous call
     if (r.arr_we) ram_[static_cast<size_t>(r.arr_addr) % kArrDepth] = r.arr_data;
     out o;
     if (!config_ok(r)) {
@@ -114,9 +115,9 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
         // the start of the run takes the first threshold: fire_dist of this call, or entry 0 as
         // the RAM stands after this call's write
         if (t == 0) thr_ = arr_en_ ? counts(ram_[0]) : counts(r.fire_dist);
-        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 5)
+        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 6)
 
-        // ---- fire on the estimate of call t - 5 ----
+        // ---- fire on the estimate of call t - 6 ----
         const bool was_done = done_;
         o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr_;
         if (o.fire) {
@@ -132,9 +133,9 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
             if (done_) {
                 frozen_ = est_old - fired_;
             } else {
-                // the threshold of the next fire, taken at this fire: fire_dist of call t-2, or
-                // the entry of the next index as the RAM stood after call t-2
-                thr_ = arr_en_ ? counts(ram_g2_[static_cast<size_t>(idx_)]) : counts(fd_m2_);
+                // the threshold of the next fire, taken at this fire: fire_dist of call t-3, or
+                // the entry of the next index as the RAM stood after call t-3
+                thr_ = arr_en_ ? counts(ram_g3_[static_cast<size_t>(idx_)]) : counts(fd_m3_);
             }
         }
         o.dist = was_done ? frozen_ : est_old - fired_;
@@ -211,6 +212,7 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
         }
         est_hist_[0] = est;
         inwin_hist_[0] = inwin;
+        fd_m3_ = fd_m2_;
         fd_m2_ = fd_m1_;
         fd_m1_ = r.fire_dist;
         ++t_;

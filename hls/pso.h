@@ -2,7 +2,7 @@
 // firing comparator with remainder carry, pulse output of programmable width, a position window,
 // an array of firing distances and the part-speed pulse generator (24 MHz limit).
 //
-// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the five stages); in short:
+// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the six stages); in short:
 //
 //   stage A  (this call's inputs)  tracking window: per-axis signed travel D since the window
 //                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
@@ -14,10 +14,13 @@
 //   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (the BRAM's address
 //                                  register is A's s), the estimate step Y = chord + one - (the
 //                                  open chord, unless a reversal closed it).
-//   stage B1 (R of the last call)  the loop operands: Y, and Y - thr for the two candidate
-//                                  thresholds of the fire after the next (the index before and
-//                                  after the move of the decision being taken in B2).
-//   stage B2 (B1 of the last call) the loop on u = value - thr: decide the entry in u (fire when
+//   stage B1 (R of the last call)  Y - thr for three candidate thresholds of the fire after the
+//                                  next (next .. next^3 of the index before the move of the
+//                                  decision being taken in B2).
+//   stage P  (B1 of the last call) the loop operands: Y, and the two differences for the index
+//                                  before and after the move B2 decided in the last call,
+//                                  picked by that move.
+//   stage B2 (P of the last call)  the loop on u = value - thr: decide the entry in u (fire when
 //                                  u >= 0) and add the next entry's operand, picked by that sign
 //                                  (u + Y - thr' after a fire, u + Y otherwise: the threshold is
 //                                  taken at a fire, docs/PSO_COUNTERS.md §2.5).
@@ -32,8 +35,8 @@
 // u (value - thr) and dist 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
 // (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
 // stage; the configuration check is formed on the presented values and registered).
-// Latency: a step at call t can fire at call t+5 (FIRE_LAT; the fire/emit/pulse
-// outputs of call t+5); rate_over is an output of the command's call; spacing_err of run call
+// Latency: a step at call t can fire at call t+6 (FIRE_LAT; the fire/emit/pulse
+// outputs of call t+6); rate_over is an output of the command's call; spacing_err of run call
 // 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
@@ -72,7 +75,7 @@ struct pso_cfg {
     static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
     static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
-    static constexpr int FIRE_LAT = 5;                               // calls from a step to its fire
+    static constexpr int FIRE_LAT = 6;                               // calls from a step to its fire
     static constexpr int REG_LAT = 1;                                // calls from presenting a register to its use
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
@@ -283,18 +286,22 @@ public:
             run_q_ = true;
         }
         // ---- stage B1 thresholds (read before B2 moves the index) ----
-        // the thresholds of the fire after the next: if this call's B2 does not move the index,
-        // entry next(idx) (thF0), else next^2(idx) (thF1); fire_dist in force otherwise. The RAM
-        // is read after this call's write. The first operands of a run take the start
-        // threshold thr_.
+        // the candidate thresholds of the fire after the next: entries next(idx) .. next^3(idx)
+        // of the index before this call's B2 move (P picks two of them in the next call, by that
+        // move); fire_dist in force otherwise. The RAM is read after this call's write. The
+        // first operands of a run take the start threshold thr_.
         cfg::len_t nx = idx_ + 1;
         if (nx >= arr_len_q_) nx = 0;
         cfg::len_t nx2 = nx + 1;
         if (nx2 >= arr_len_q_) nx2 = 0;
-        const bool first = r_v_ && !b_v_;
-        const cfg::dist_t thF0 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
-        const cfg::dist_t thF1 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
+        cfg::len_t nx3 = nx2 + 1;
+        if (nx3 >= arr_len_q_) nx3 = 0;
+        const bool first = r_v_ && !p_v_;
+        const cfg::dist_t th1 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
+        const cfg::dist_t th2 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
+        const cfg::dist_t th3 = arr_en_q_ ? arr_[nx3.to_uint()] : r.fire_dist;
         const cfg::dist_t thr_in = thr_;  // the threshold of the next fire (spacing sample)
+        const bool adv_last = adv_;       // the last call's move (P's pick; B2 overwrites adv_)
 
         // ---- stage B3 (from the B2 registers): apply the decision of the last call ----
         const bool fire = c_fire_;
@@ -352,23 +359,38 @@ public:
         u_v_ = b_v_;
         u_inwin_ = b_inwin_;
 
-        // ---- stage B1 (from the R registers): the loop operands (0 until R holds data) ----
+        // ---- stage P (from the B1 registers): the loop operands, picked by the last call's move
+        // (B1's candidates are for the index before it) ----
+        b_y_ = p_y_;
+        b_opF0_ = adv_last ? p_d2_ : p_d1_;
+        b_opF1_ = adv_last ? p_d3_ : p_d2_;
+        b_thF0_ = adv_last ? p_th2_ : p_th1_;
+        b_thF1_ = adv_last ? p_th3_ : p_th2_;
+        b_inwin_ = p_inwin_;
+        b_v_ = p_v_;
+
+        // ---- stage B1 (from the R registers): Y - th for the three candidates (0 until R holds
+        // data) ----
         if (r_v_) {
             const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
-            b_y_ = r_y_;
-            b_opF0_ = y_v - static_cast<int64_t>(thF0.to_uint64());
-            b_opF1_ = y_v - static_cast<int64_t>(thF1.to_uint64());
-            b_thF0_ = thF0;
-            b_thF1_ = thF1;
+            p_y_ = r_y_;
+            p_d1_ = y_v - static_cast<int64_t>(th1.to_uint64());
+            p_d2_ = y_v - static_cast<int64_t>(th2.to_uint64());
+            p_d3_ = y_v - static_cast<int64_t>(th3.to_uint64());
+            p_th1_ = th1;
+            p_th2_ = th2;
+            p_th3_ = th3;
         } else {
-            b_y_ = 0;
-            b_opF0_ = 0;
-            b_opF1_ = 0;
-            b_thF0_ = 0;
-            b_thF1_ = 0;
+            p_y_ = 0;
+            p_d1_ = 0;
+            p_d2_ = 0;
+            p_d3_ = 0;
+            p_th1_ = 0;
+            p_th2_ = 0;
+            p_th3_ = 0;
         }
-        b_inwin_ = r_v_ && r_inwin_;
-        b_v_ = r_v_;
+        p_inwin_ = r_v_ && r_inwin_;
+        p_v_ = r_v_;
 
         // ---- stage R: chord ROM read at the address stage A wrote, the estimate step ----
         const uint64_t chord = pso_chord(a_s_).to_uint64();
@@ -481,6 +503,15 @@ private:
         r_inwin_ = false;
         r_v_ = false;
         part_ = 0;
+        p_y_ = 0;
+        p_d1_ = 0;
+        p_d2_ = 0;
+        p_d3_ = 0;
+        p_th1_ = 0;
+        p_th2_ = 0;
+        p_th3_ = 0;
+        p_inwin_ = false;
+        p_v_ = false;
         b_y_ = 0;
         b_opF0_ = 0;
         b_opF1_ = 0;
@@ -561,7 +592,13 @@ private:
     cfg::incr_t r_y_;    // Y: the estimate step of the entry
     cfg::chord_t part_;  // chord of the open window
     bool r_inwin_, r_v_;
-    // stage B1 (the loop operands)
+    // stage B1 (the differences for three candidate thresholds)
+    cfg::incr_t p_y_;
+    cfg::rem_t p_d1_, p_d2_, p_d3_;      // Y - th1 .. Y - th3
+    cfg::dist_t p_th1_, p_th2_, p_th3_;  // entries next .. next^3 of the index before the move
+                                         //   decided in the same call (or fire_dist)
+    bool p_inwin_, p_v_;
+    // stage P (the loop operands)
     cfg::incr_t b_y_;
     cfg::rem_t b_opF0_, b_opF1_;   // Y - thF0, Y - thF1
     cfg::dist_t b_thF0_, b_thF1_;  // thresholds after a fire: index not moved / moved by the last decision
@@ -570,7 +607,7 @@ private:
     cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
     bool u_v_, u_inwin_;
     cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
-    bool adv_;           // the last call's decision moved the index (picks the B1 candidate)
+    bool adv_;           // the last call's decision moved the index (P's and B2's picks)
     cfg::len_t idx_;
     bool done_;
     bool c_fire_, c_inwin_, c_live_;

@@ -11,7 +11,7 @@
 // accuracy:  firing position against the ideal continuous path (point at k * distance of arc
 //            length), in nm, for K = 1, 4, 8, 16 on lines, arcs, reversals, polylines (2D and
 //            3D), printed as a table; regression bounds for the default K = 16 (beyond the
-//            FIRE_LAT = 5 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
+//            FIRE_LAT = 6 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
@@ -19,7 +19,7 @@
 //            every emit), laser frequency flag, part-speed 24 MHz clamp and its flag, minimum
 //            spacing flag, every bad configuration flagged with no pulse; the threshold of a fire
 //            is taken at the previous fire (a live distance change acts from the next fire: taken
-//            when in force 2 calls before that fire, not 1 call before).
+//            when in force 3 calls before that fire, not 2 calls before).
 // command:   `laserax pso` (cmd_pso) on its demo path returns 0 (bit-exact) into the build dir.
 #include <algorithm>
 #include <cmath>
@@ -436,7 +436,7 @@ void test_directed(tbu::result& res) {
     }
     // threshold taken at the previous fire: x moves one count per call (position t after call t),
     // distance 10 counts: fire 1 in call 10 + L (L = FIRE_LAT). Distance 4 counts from call p on:
-    // presented in call 7 + L it is in force in call 8 + L = (fire 1) - 2 and is taken for fire
+    // presented in call 6 + L it is in force in call 7 + L = (fire 1) - 3 and is taken for fire
     // 2 (fires at positions 10, 14, 18); presented one call later it is not (10, 20, 24). Under
     // the earlier rule (thr of a fire = fire_dist two calls before it) both would fire at 14.
     for (int late = 0; late <= 1; ++late) {
@@ -446,7 +446,7 @@ void test_directed(tbu::result& res) {
         r.axis_mask = 1;
         r.pulse_w = 1;
         constexpr long long L = lx::pso_cfg::FIRE_LAT;
-        const long long p_call = 7 + L + late;
+        const long long p_call = 6 + L + late;
         std::vector<long long> fires;
         for (long long t = 0; t < 60 && fires.size() < 3; ++t) {
             r.fire_dist = (t >= p_call ? 4 : 10) * kQ;
