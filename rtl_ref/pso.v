@@ -27,10 +27,14 @@
 //       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (a_rev ?
 //       0 : part), the growth of the estimate; part' = a_kclose ? 0 : chord; the window
 //       compares.
-//   B1  the loop operands: Y, and Y - thF for the two candidate thresholds of the fire after the
-//       next (entries next(idx), next^2(idx) of this call's index, or fire_dist; the first
-//       operands of a run take the start threshold thr); all 0 while R holds no data. A 38-bit
-//       add (Y < 2^38), its carry picking the upper bits between ~thF and -thF.
+//   B1  Y - th for the four prefetched thresholds (entries next .. next^4 of the index before
+//       the last call's move, or fire_dist; the first operands of a run take the start
+//       threshold thr as the first), straight from registers: no select in front of the adds;
+//       all 0 while R holds no data. Each a 38-bit add (Y < 2^38) in 19-bit carry-select, its
+//       carry picking the upper bits between ~th and -th (the prefetch registers hold ~th).
+//   P   the loop operands: Y, and Y - thF for the two candidate thresholds of the fire after the
+//       next (hls: next(idx), next^2(idx) of the index after the last call's move), picked
+//       from B1's four by the moves of the last two calls (registers): selects only.
 //   B2  the loop on u = value - thr of the entry held: the decision is u >= 0, the sign of the
 //       registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry out of lo
 //       added into hi at the next update, and a flag "hi[27:0] all ones" formed beside the
@@ -41,15 +45,16 @@
 //   B3  applies the decision of the last call (c_fire): fire / emit, pulse timer, overlap /
 //       frequency flags, counters, dist = u (+ thr if it did not fire) resolved from the
 //       registered halves, the index and done outputs.
-// A step in call t fires in call t + 5.
+// A step in call t fires in call t + 6.
 //
-// Array RAM (64 x 56): four copies (one read port each, the write port shared), read in call
-// t - 2 at next(idx) .. next^4(idx) of that call. Threshold prefetch: in call t - 1 three of the
-// four (picked by the registered index move of call t - 2) are completed with the writes in
+// Array RAM (64 x 56): five copies (one read port each, the write port shared), read in call
+// t - 2 at next(idx) .. next^5(idx) of that call. Threshold prefetch: in call t - 1 four of the
+// five (picked by the registered index move of call t - 2) are completed with the writes in
 // force in calls t - 1 and t (forwarded: the first was written after the read, the second is
 // presented in call t - 1), or replaced by fire_dist in force in call t, and registered
-// (th1..th3: the entries next(idx) .. next^3(idx) of call t - 1). B1 in call t picks two of
-// them with the index move of call t - 1. The threshold register thr is loaded, while the
+// inverted (thn1..thn4: ~ the entries next(idx) .. next^4(idx) of call t - 1). B1 in call t
+// subtracts all four from Y; P in call t + 1 picks two with the index moves of calls t - 1
+// and t. The threshold register thr is loaded, while the
 // tracking state is in reset, with the start threshold of a run beginning in the next call
 // (fire_dist presented, or entry 0 from a copy register, entry0, with the presented write).
 //
@@ -149,6 +154,14 @@ module pso (
         end
     endfunction
 
+    function [15:0] gt_table;   // bit v: v > k (a 4-bit compare with a constant, as a table)
+        input [3:0] k;
+        integer v;
+        begin
+            for (v = 0; v < 16; v = v + 1) gt_table[v] = (v > k);
+        end
+    endfunction
+
     // ---- chord ROM contents: round(sqrt(s) * 2^32), digit-by-digit (as pso_chord_rom) ---------
     function [W_CHORD-1:0] round_sqrt;
         input [W_S-1:0] s;
@@ -184,6 +197,7 @@ module pso (
     reg [W_DIST-1:0] arr2 [0:63];
     reg [W_DIST-1:0] arr3 [0:63];
     reg [W_DIST-1:0] arr4 [0:63];
+    reg [W_DIST-1:0] arr5 [0:63];
     integer ai;
     initial begin
         for (ai = 0; ai < 64; ai = ai + 1) begin
@@ -191,6 +205,7 @@ module pso (
             arr2[ai] = {W_DIST{1'b0}};
             arr3[ai] = {W_DIST{1'b0}};
             arr4[ai] = {W_DIST{1'b0}};
+            arr5[ai] = {W_DIST{1'b0}};
         end
     end
 
@@ -212,19 +227,20 @@ module pso (
     reg [63:0]              bad_q;        // entry below 2 counts (or never written), after the
                                           //   writes presented so far
     reg [W_DIST-1:0]        entry0_q;     // copy of entry 0 (the RAM after the last edge)
-    reg [W_DIST-1:0]        rd1_q, rd2_q, rd3_q, rd4_q;   // array read data (BRAM output registers)
-    reg                     fw1_q, fw2_q, fw3_q, fw4_q;   // the write presented with the read hit its address
-    reg [W_DIST-1:0]        th1_q, th2_q, th3_q;          // thresholds: entries next(idx) .. next^3(idx)
-                                                          //   of the last call, or fire_dist
+    reg [W_DIST-1:0]        rd1_q, rd2_q, rd3_q, rd4_q, rd5_q;   // array read data (BRAM output registers)
+    reg                     fw1_q, fw2_q, fw3_q, fw4_q, fw5_q;   // the write presented with the read hit its address
+    reg [W_DIST-1:0]        thn1_q, thn2_q, thn3_q, thn4_q;      // thresholds, inverted: ~ entries
+                                                          //   next(idx) .. next^4(idx) of the last call, or ~fire_dist
     reg                     adv_q;        // the last call moved the index (B2's operand pick)
     // copies of adv_q, one per group of its loads (about 60 each instead of about 450 on one
     // net): each is adv and a register that is 1 in every call that can move the index (the
     // valid bits and the check, all 1 while the tracking state runs), so that Yosys keeps them
     // apart (equal flip-flops would be merged into one)
     reg                     adv_t_q;      //   B2's threshold pick, done_c
-    reg                     adv_b0_q, adv_b1_q;   // B1's thF0, thF1
-    reg                     adv_g1_q, adv_g2_q, adv_g3_q;   // the prefetch's g1 .. g3, pw1 .. pw3
-    reg                     adv_i_q;      //   the index registers' pick (idx_l .. nx4_l)
+    reg                     adv_g1_q, adv_g2_q, adv_g3_q, adv_g4_q;   // the prefetch's g1 .. g4, pw1 .. pw4
+    reg                     adv_i_q;      //   the index registers' pick (idx_l .. nx5_l)
+    reg [3:0]               adv_p_q;      //   P's picks (opF0, opF1, thF0, thF1): the last call's move
+    reg [3:0]               adv_pp_q;     //   P's picks: the move of the call before (adv_q delayed)
     // run state and latched mode registers
     reg                     run_q, ps_q, arr_en_q, arr_wrap_q;
     reg [2:0]               mask_q;
@@ -249,7 +265,9 @@ module pso (
     reg                     sp_en_q;      // a sample is held, its min_period != 0 and its
                                           //   threshold < 2^48 (else the product is below it)
     reg                     sp_go_q;      // this call shows a sample's check: sp_load && sp_en
-    reg                     sp_gt_q;      // the held sample's product > its threshold
+    reg                     sp_gth_q, sp_eqh_q, sp_gtl_q;   // the held sample's product > its
+                                          //   threshold, in 24-bit halves: upper >, upper ==,
+                                          //   lower > (combined where it is shown)
     reg [W_INC-1:0]         sp_inc_q;
     reg [W_GAP-1:0]         sp_m_q;       // min_period, shifted right once per step
     reg [W_PROD-1:0]        sp_thr_q;     // its threshold, low 48 bits
@@ -262,6 +280,11 @@ module pso (
     reg                     r_wen_q;      // window enable, and the window compares in halves:
     reg [5:0]               r_wc_q;       //   hls r_inwin = !r_wen || (lo <= w && w <= hi), below
     // stage B1
+    reg [W_INCR-1:0]        p_y_q;
+    reg [W_REM-1:0]         p_d1_q, p_d2_q, p_d3_q, p_d4_q;   // Y - th1 .. Y - th4
+    reg [W_DIST-1:0]        p_thn1_q, p_thn2_q, p_thn3_q, p_thn4_q;   // ~th1 .. ~th4
+    reg                     p_inwin_q, p_v_q;
+    // stage P
     reg [W_INCR-1:0]        b_y_q;
     reg [W_REM-1:0]         b_opf0_q, b_opf1_q;   // Y - thF0, Y - thF1
     reg [W_DIST-1:0]        b_thf0_q, b_thf1_q;   // the thresholds after a fire: the index not
@@ -275,8 +298,8 @@ module pso (
     reg [W_DIST-1:0]        thr_q;        // threshold of the next fire
     reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
     reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it
-    reg [6:0]               nx5_p_q;      // next^5 of it (so that a move of the deepest read is a
-                                          //   select of registers)
+    reg [6:0]               nx5_p_q, nx6_p_q;   // next^5, next^6 of it (so that a move of the
+                                          //   deepest read is a select of registers)
     reg                     done_q;
     reg                     stop0_q, stop1_q;   // a fire ends the array (arr_en, no wrap, the last
                                                 //   entry) with the index before / after the last
@@ -366,22 +389,23 @@ module pso (
         end
     endfunction
 
-    // y - th for y < 2^38 (W_REM bits): the low 19 bits one chain with carry-in 1, bits 37..19
-    // for carry 0 and 1, and for each the upper 20 bits picked by that part's carry out (nh =
-    // -th[55:38], 20 bits, or ~th[55:38] with two ones), so the low carry makes the last select
+    // y - th = y + thn + 1 for y < 2^38 (W_REM bits; thn = ~th, a register): the low 19 bits
+    // one chain with carry-in 1, bits 37..19 for carry 0 and 1, and for each the upper 20 bits
+    // picked by that part's carry out (nh = -th[55:38], 20 bits, or ~th[55:38] with two ones),
+    // so the low carry makes the last select
     function [W_REM-1:0] sub_y;
         input [W_INCR-1:0] y;
-        input [W_DIST-1:0] th;
+        input [W_DIST-1:0] thn;
         input [19:0]       nh;
         reg [20:0] lo;
         reg [19:0] m0;
         reg [20:0] m1;
         reg [19:0] ih, u0, u1;
         begin
-            lo = {1'b0, y[18:0], 1'b1} + {1'b0, ~th[18:0], 1'b1};
-            m0 = {1'b0, y[37:19]} + {1'b0, ~th[37:19]};
-            m1 = {1'b0, y[37:19], 1'b1} + {1'b0, ~th[37:19], 1'b1};
-            ih = {2'b11, ~th[W_DIST-1:W_INCR]};
+            lo = {1'b0, y[18:0], 1'b1} + {1'b0, thn[18:0], 1'b1};
+            m0 = {1'b0, y[37:19]} + {1'b0, thn[37:19]};
+            m1 = {1'b0, y[37:19], 1'b1} + {1'b0, thn[37:19], 1'b1};
+            ih = {2'b11, thn[W_DIST-1:W_INCR]};
             u0 = m0[19] ? nh : ih;
             u1 = m1[20] ? nh : ih;
             sub_y = lo[20] ? {u1, m1[19:1], lo[19:1]} : {u0, m0[18:0], lo[19:1]};
@@ -472,20 +496,23 @@ module pso (
     wire [6:0]       nx2_l  = adv_i_q ? nx3_p_q : nx2_p_q;
     wire [6:0]       nx3_l  = adv_i_q ? nx4_p_q : nx3_p_q;
     wire [6:0]       nx4_l  = adv_i_q ? nx5_p_q : nx4_p_q;
-    wire [6:0]       nx5_l  = adv_i_q ? next_idx(nx5_p_q, len_q) : nx5_p_q;
+    wire [6:0]       nx5_l  = adv_i_q ? nx6_p_q : nx5_p_q;
+    wire [6:0]       nx6_l  = adv_i_q ? next_idx(nx6_p_q, len_q) : nx6_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
-    // read data of the last call (addresses next(idx) .. next^4(idx) of that call), the write
+    // read data of the last call (addresses next(idx) .. next^5(idx) of that call), the write
     // presented with the read forwarded (it was made after the read: read-before-write),
-    // shifted by one entry when the last call moved the index: entries next(idx) .. next^3(idx)
+    // shifted by one entry when the last call moved the index: entries next(idx) .. next^4(idx)
     // of this call, after the write in force in this call
     wire [W_DIST-1:0] e1 = fw1_q ? f_data_q : rd1_q;
     wire [W_DIST-1:0] e2 = fw2_q ? f_data_q : rd2_q;
     wire [W_DIST-1:0] e3 = fw3_q ? f_data_q : rd3_q;
     wire [W_DIST-1:0] e4 = fw4_q ? f_data_q : rd4_q;
+    wire [W_DIST-1:0] e5 = fw5_q ? f_data_q : rd5_q;
     wire [W_DIST-1:0] g1 = adv_g1_q ? e2 : e1;
     wire [W_DIST-1:0] g2 = adv_g2_q ? e3 : e2;
     wire [W_DIST-1:0] g3 = adv_g3_q ? e4 : e3;
+    wire [W_DIST-1:0] g4 = adv_g4_q ? e5 : e4;
     // the write presented in this call (in force in the next) forwarded: its address compared
     // with both index registers, picked by adv_q after the compare; the forward is the last
     // select (pwk: the write hits entry k of the next call in array mode; th1 of the run's first
@@ -496,37 +523,53 @@ module pso (
     wire              eq2   = (i_arr_addr == nx2_p_q[5:0]);
     wire              eq3   = (i_arr_addr == nx3_p_q[5:0]);
     wire              eq4   = (i_arr_addr == nx4_p_q[5:0]);
+    wire              eq5   = (i_arr_addr == nx5_p_q[5:0]);
     wire              pw1   = pwe && !nf && (adv_g1_q ? eq2 : eq1);
     wire              pw2   = pwe && (adv_g2_q ? eq3 : eq2);
     wire              pw3   = pwe && (adv_g3_q ? eq4 : eq3);
+    wire              pw4   = pwe && (adv_g4_q ? eq5 : eq4);
     // array mode of the next call (a run's calls 1, 2, ..: the latched mode), else fire_dist
     // presented now; the first operands of a run take the start threshold thr (th1, picked
     // with adv_q = 0)
     wire [W_DIST-1:0] q1    = nf ? thr_q : arr_en_e ? g1 : i_fire_dist;
     wire [W_DIST-1:0] q2    = arr_en_e ? g2 : i_fire_dist;
     wire [W_DIST-1:0] q3    = arr_en_e ? g3 : i_fire_dist;
+    wire [W_DIST-1:0] q4    = arr_en_e ? g4 : i_fire_dist;
     wire [W_DIST-1:0] th1_d = pw1 ? i_arr_data : q1;
     wire [W_DIST-1:0] th2_d = pw2 ? i_arr_data : q2;
     wire [W_DIST-1:0] th3_d = pw3 ? i_arr_data : q3;
+    wire [W_DIST-1:0] th4_d = pw4 ? i_arr_data : q4;
     // the start threshold of a run beginning in the next call (loaded while the tracking state is
     // in reset): fire_dist presented now, or entry 0 after the write presented now
     wire [W_DIST-1:0] thr_st = i_arr_en ? ((i_arr_we && i_arr_addr == 6'd0) ? i_arr_data : entry0_q)
                                         : i_fire_dist;
 
     // ---- stage B1 ------------------------------------------------------------------------------
-    // thresholds of the fire after the next if this call's B2 does not move the index (thf0) and
-    // if it does (thf1): entries next(idx), next^2(idx) of this call (idx moved by adv_q)
-    wire [W_DIST-1:0] thf0 = adv_b0_q ? th2_q : th1_q;
-    wire [W_DIST-1:0] thf1 = adv_b1_q ? th3_q : th2_q;
-    // Y - thF = Y + ~thF + 1. Y < 2^38, so bits 57..38 are {2'b11, ~thF[55:38]} plus the carry
-    // out of bit 37: that part for carry 1 (-thF[55:38]) is formed from the prefetch registers
-    // beside the add, and the add itself is 38 bits in carry-select (19-bit chains)
-    wire [19:0]       nh1    = ~{2'b00, th1_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [19:0]       nh2    = ~{2'b00, th2_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [19:0]       nh3    = ~{2'b00, th3_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [W_REM-1:0]  opf0_d = sub_y(r_y_q, thf0, adv_b0_q ? nh2 : nh1);
-    wire [W_REM-1:0]  opf1_d = sub_y(r_y_q, thf1, adv_b1_q ? nh3 : nh2);
+    // Y - th for the four prefetched thresholds (entries next(idx) .. next^4(idx) of the last
+    // call's index: the candidates of hls for this call's index, next .. next^3, are three of
+    // them, picked by the last call's move in P). Y - th = Y + ~th + 1. Y < 2^38, so bits 57..38
+    // are {2'b11, ~th[55:38]} plus the carry out of bit 37: that part for carry 1 (-th[55:38])
+    // is formed from the prefetch registers beside the add, and the add itself is 38 bits in
+    // carry-select (19-bit chains)
+    wire [19:0]       nh1    = {2'b11, thn1_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [19:0]       nh2    = {2'b11, thn2_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [19:0]       nh3    = {2'b11, thn3_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [19:0]       nh4    = {2'b11, thn4_q[W_DIST-1:W_INCR]} + 20'd1;
+    wire [W_REM-1:0]  d1_d   = sub_y(r_y_q, thn1_q, nh1);
+    wire [W_REM-1:0]  d2_d   = sub_y(r_y_q, thn2_q, nh2);
+    wire [W_REM-1:0]  d3_d   = sub_y(r_y_q, thn3_q, nh3);
+    wire [W_REM-1:0]  d4_d   = sub_y(r_y_q, thn4_q, nh4);
     wire              b_clr  = rst_trk || !r_v_q;   // no operands before R holds data
+
+    // ---- stage P -------------------------------------------------------------------------------
+    // hls: B1's candidates next .. next^3 of the index before the move of call t - 1 are
+    // p_d(1 + m1) .. p_d(3 + m1), m1 = that move (adv_pp); P picks two of them by the move of
+    // the last call (adv_p): the operands for the index before and after this call's move
+    wire [W_REM-1:0]  opf0_d = adv_pp_q[0] ? (adv_p_q[0] ? p_d3_q : p_d2_q) : (adv_p_q[0] ? p_d2_q : p_d1_q);
+    wire [W_REM-1:0]  opf1_d = adv_pp_q[1] ? (adv_p_q[1] ? p_d4_q : p_d3_q) : (adv_p_q[1] ? p_d3_q : p_d2_q);
+    wire [W_DIST-1:0] thf0_d = ~(adv_pp_q[2] ? (adv_p_q[2] ? p_thn3_q : p_thn2_q) : (adv_p_q[2] ? p_thn2_q : p_thn1_q));
+    wire [W_DIST-1:0] thf1_d = ~(adv_pp_q[3] ? (adv_p_q[3] ? p_thn4_q : p_thn3_q) : (adv_p_q[3] ? p_thn3_q : p_thn2_q));
+    wire              pb_clr = rst_trk || !p_v_q;
 
     // ---- stage B2: the loop ----------------------------------------------------------------------
     // u = (hi + c) * 2^29 + lo; its sign is hi[28] flipped by the deferred carry iff hi[27:0] is
@@ -563,6 +606,8 @@ module pso (
     wire [6:0]       nx4_0  = (i_arr_len > 7'd4) ? 7'd4 : (i_arr_len == 7'd3) ? 7'd1 : 7'd0;
     wire [6:0]       nx5_0  = (i_arr_len > 7'd5) ? 7'd5 : (i_arr_len == 7'd3) ? 7'd2 :
                               (i_arr_len == 7'd2 || i_arr_len == 7'd4) ? 7'd1 : 7'd0;
+    wire [6:0]       nx6_0  = (i_arr_len > 7'd6) ? 7'd6 : (i_arr_len == 7'd4) ? 7'd2 :
+                              (i_arr_len == 7'd5) ? 7'd1 : 7'd0;
     // stop0 / stop1 of the next call: the latched modes (or the ones in force in the next call
     // when it starts a run) and next(idx) = 0 for the index registers written now
     wire             stop_m = run_q ? (arr_en_q && !arr_wrap_q) : (f_arr_en_q && !f_arr_wrap_q);
@@ -588,11 +633,26 @@ module pso (
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
-    // (16-bit halves: the compare as hi > | hi == and lo >, the command's sum carry-select)
-    wire             ov_hi     = (i_ps_inc[31:16] >  INC_MAX[31:16]);
-    wire             eq_hi     = (i_ps_inc[31:16] == INC_MAX[31:16]);
-    wire             ov_lo     = (i_ps_inc[15:0]  >  INC_MAX[15:0]);
-    wire             over      = ov_hi || (eq_hi && ov_lo);   // i_ps_inc > INC_MAX
+    // (the compare with the constant INC_MAX without a carry chain: per nibble "greater" as a
+    // table of the nibble and "equal", combined in a tree of gates; the command's sum in
+    // carry-select 16-bit halves)
+    wire [7:0]       nb_gt, nb_eq;
+    genvar nb;
+    generate
+        for (nb = 0; nb < 8; nb = nb + 1) begin : g_nib
+            wire [15:0] gtab = gt_table(INC_MAX[4*nb+3:4*nb]);
+            assign nb_gt[nb] = gtab[i_ps_inc[4*nb+3:4*nb]];
+            assign nb_eq[nb] = (i_ps_inc[4*nb+3:4*nb] == INC_MAX[4*nb+3:4*nb]);
+        end
+    endgenerate
+    // pairs of nibbles, then pairs of pairs: greater = the upper greater, or the upper equal
+    // and the lower greater
+    wire [3:0]       p1_gt     = {nb_gt[7] | (nb_eq[7] & nb_gt[6]), nb_gt[5] | (nb_eq[5] & nb_gt[4]),
+                                  nb_gt[3] | (nb_eq[3] & nb_gt[2]), nb_gt[1] | (nb_eq[1] & nb_gt[0])};
+    wire [3:0]       p1_eq     = {nb_eq[7] & nb_eq[6], nb_eq[5] & nb_eq[4], nb_eq[3] & nb_eq[2], nb_eq[1] & nb_eq[0]};
+    wire [1:0]       p2_gt     = {p1_gt[3] | (p1_eq[3] & p1_gt[2]), p1_gt[1] | (p1_eq[1] & p1_gt[0])};
+    wire             p2_eq_hi  = p1_eq[3] & p1_eq[2];
+    wire             over      = p2_gt[1] | (p2_eq_hi & p2_gt[0]);   // i_ps_inc > INC_MAX
     wire             rate_over = ps_e && over;
     wire [W_INC-1:0] inc       = over ? INC_MAX : i_ps_inc;
     wire [16:0]      pi_lo     = {1'b0, ph_q[15:0]} + {1'b0, i_ps_inc[15:0]};
@@ -623,9 +683,10 @@ module pso (
     wire [W_PROD-1:0] sp_prod  = {sp_hi_q[W_INC-1:0], sp_lo_q};
     // The load call also makes step 0 (hi starts at 0: a select, no add), calls k = 1..15 make
     // steps 1..15, so the product is complete one call early and call k = 16 registers the
-    // compare (sp_gt); the sample call shows it. (hls: steps 0..15 in calls 1..16; the same
-    // product and flag.)
-    wire             spacing_err = sp_go_q && sp_gt_q;
+    // compare in 24-bit halves (sp_gth, sp_eqh, sp_gtl); the sample call shows it. (hls: steps
+    // 0..15 in calls 1..16; the same product and flag.)
+    wire             sp_gt       = sp_gth_q || (sp_eqh_q && sp_gtl_q);   // product > threshold
+    wire             spacing_err = sp_go_q && sp_gt;
     wire [W_SPHI-1:0] sp_h0    = f_min_period_q[0] ? {1'b0, inc} : {W_SPHI{1'b0}};   // step 0
     wire [W_SPHI-1:0] sp_sh    = sp_hi_q + (sp_m_q[0] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}});
 
@@ -774,19 +835,23 @@ module pso (
             arr2[i_arr_addr] <= i_arr_data;
             arr3[i_arr_addr] <= i_arr_data;
             arr4[i_arr_addr] <= i_arr_data;
+            arr5[i_arr_addr] <= i_arr_data;
         end
         rd1_q <= arr1[nx_l[5:0]];
         rd2_q <= arr2[nx2_l[5:0]];
         rd3_q <= arr3[nx3_l[5:0]];
         rd4_q <= arr4[nx4_l[5:0]];
+        rd5_q <= arr5[nx5_l[5:0]];
         fw1_q <= i_arr_we && (i_arr_addr == nx_l[5:0]);
         fw2_q <= i_arr_we && (i_arr_addr == nx2_l[5:0]);
         fw3_q <= i_arr_we && (i_arr_addr == nx3_l[5:0]);
         fw4_q <= i_arr_we && (i_arr_addr == nx4_l[5:0]);
+        fw5_q <= i_arr_we && (i_arr_addr == nx5_l[5:0]);
         f_data_q <= i_arr_data;
-        th1_q <= th1_d;
-        th2_q <= th2_d;
-        th3_q <= th3_d;
+        thn1_q <= ~th1_d;
+        thn2_q <= ~th2_d;
+        thn3_q <= ~th3_d;
+        thn4_q <= ~th4_d;
     end
 
     // chord ROM: the block RAM registers this call's address s (stage A), its data is used in
@@ -806,21 +871,41 @@ module pso (
         end
     end
 
-    // stage B1 registers: cleared with the tracking state and while R holds no data
+    // stage B1 registers: cleared with the tracking state and while R holds no data (the
+    // thresholds are not: they are used only by a take, which needs valid operands)
     always @(posedge i_clk) begin
         if (b_clr) begin
+            p_y_q <= {W_INCR{1'b0}};
+            p_d1_q <= {W_REM{1'b0}};
+            p_d2_q <= {W_REM{1'b0}};
+            p_d3_q <= {W_REM{1'b0}};
+            p_d4_q <= {W_REM{1'b0}};
+        end else begin
+            p_y_q <= r_y_q;
+            p_d1_q <= d1_d;
+            p_d2_q <= d2_d;
+            p_d3_q <= d3_d;
+            p_d4_q <= d4_d;
+        end
+        p_thn1_q <= thn1_q;
+        p_thn2_q <= thn2_q;
+        p_thn3_q <= thn3_q;
+        p_thn4_q <= thn4_q;
+    end
+
+    // stage P registers: cleared with the tracking state and while B1 holds no data
+    always @(posedge i_clk) begin
+        if (pb_clr) begin
             b_y_q <= {W_INCR{1'b0}};
             b_opf0_q <= {W_REM{1'b0}};
             b_opf1_q <= {W_REM{1'b0}};
-            b_thf0_q <= {W_DIST{1'b0}};
-            b_thf1_q <= {W_DIST{1'b0}};
         end else begin
-            b_y_q <= r_y_q;
+            b_y_q <= p_y_q;
             b_opf0_q <= opf0_d;
             b_opf1_q <= opf1_d;
-            b_thf0_q <= thf0;
-            b_thf1_q <= thf1;
         end
+        b_thf0_q <= thf0_d;
+        b_thf1_q <= thf1_d;
     end
 
     // the threshold of the next fire: the start threshold while the tracking state is in reset,
@@ -860,7 +945,9 @@ module pso (
             sp_k_q <= 5'd0;
             sp_en_q <= 1'b0;
             sp_go_q <= 1'b0;
-            sp_gt_q <= 1'b0;
+            sp_gth_q <= 1'b0;
+            sp_eqh_q <= 1'b0;
+            sp_gtl_q <= 1'b0;
             sp_inc_q <= {W_INC{1'b0}};
             sp_m_q <= {W_GAP{1'b0}};
             sp_thr_q <= {W_PROD{1'b0}};
@@ -869,6 +956,8 @@ module pso (
             r_wen_q <= 1'b0;
             r_wc_q <= 6'd0;
             r_v_q <= 1'b0;
+            p_inwin_q <= 1'b0;
+            p_v_q <= 1'b0;
             b_inwin_q <= 1'b0;
             b_v_q <= 1'b0;
             u_hi_q <= {LH{1'b0}};
@@ -890,17 +979,19 @@ module pso (
             idx_p_q <= 7'd0;
             adv_q <= 1'b0;
             adv_t_q <= 1'b0;
-            adv_b0_q <= 1'b0;
-            adv_b1_q <= 1'b0;
             adv_g1_q <= 1'b0;
             adv_g2_q <= 1'b0;
             adv_g3_q <= 1'b0;
+            adv_g4_q <= 1'b0;
             adv_i_q <= 1'b0;
+            adv_p_q <= 4'd0;
+            adv_pp_q <= 4'd0;
             nx_p_q <= i_rst ? 7'd0 : nx_0;
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
             nx4_p_q <= i_rst ? 7'd0 : nx4_0;
             nx5_p_q <= i_rst ? 7'd0 : nx5_0;
+            nx6_p_q <= i_rst ? 7'd0 : nx6_0;
             stop0_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx_0 == 7'd0);
             stop1_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx2_0 == 7'd0);
             done_q <= 1'b0;
@@ -952,7 +1043,9 @@ module pso (
             end else if (sp_step) begin
                 sp_k_q <= (sp_k_q == 5'd16) ? 5'd0 : sp_k_q + 5'd1;
                 if (sp_k_q == 5'd16) begin
-                    sp_gt_q <= (sp_prod > sp_thr_q);
+                    sp_gth_q <= (sp_prod[W_PROD-1:W_PROD/2] > sp_thr_q[W_PROD-1:W_PROD/2]);
+                    sp_eqh_q <= (sp_prod[W_PROD-1:W_PROD/2] == sp_thr_q[W_PROD-1:W_PROD/2]);
+                    sp_gtl_q <= (sp_prod[W_PROD/2-1:0] > sp_thr_q[W_PROD/2-1:0]);
                 end else begin
                     sp_m_q <= sp_m_q >> 1;
                     sp_hi_q <= sp_sh >> 1;
@@ -964,8 +1057,11 @@ module pso (
             r_wc_q <= r_wc_d;
             r_v_q <= a_v_q;
             // B1
-            b_inwin_q <= b_inwin_d;
-            b_v_q <= r_v_q;
+            p_inwin_q <= b_inwin_d;
+            p_v_q <= r_v_q;
+            // P
+            b_inwin_q <= p_inwin_q;
+            b_v_q <= p_v_q;
             // B2
             u_hi_q <= pos ? sf_hi : sn_hi;
             u_lo_q <= pos ? sf_lo[LH-1:0] : sn_lo[LH-1:0];
@@ -983,17 +1079,20 @@ module pso (
             idx_p_q <= idx_l;
             adv_q <= adv;
             adv_t_q <= adv && b_v_q;      // (adv implies each of these registers is 1)
-            adv_b0_q <= adv && r_v_q;
-            adv_b1_q <= adv && a_v_q;
             adv_g1_q <= adv && u_v_q;
             adv_g2_q <= adv && run_q;
             adv_g3_q <= adv && ok_ae_q;
+            adv_g4_q <= adv && ok_t_q;
             adv_i_q <= adv && ok_w_q;
+            adv_p_q <= {adv && a_v_q, adv && r_v_q, adv && p_v_q, adv && ok_a_q};
+            // (adv_q implies each of these registers is 1 in this call, too)
+            adv_pp_q <= {adv_q && a_v_q, adv_q && r_v_q, adv_q && p_v_q, adv_q && ok_a_q};
             nx_p_q <= nx_l;
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
             nx4_p_q <= nx4_l;
             nx5_p_q <= nx5_l;
+            nx6_p_q <= nx6_l;
             stop0_q <= stop0_d;
             stop1_q <= stop1_d;
             done_q <= done_d;
