@@ -965,7 +965,11 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // writes presented with each of the four reads and forwarded into the thresholds. Calls
 // 700..759: a tracking run on x with each kind of invalid configuration presented for one call
 // in every sixth call (K 0, K 17, distance below 2 counts, length 0 and 65, no axis, pulse
-// width 0, low > high, source 3 without part-speed, an array with an entry not written).
+// width 0, low > high, source 3 without part-speed, an array with an entry not written). Calls
+// 760..899: one count per call on x with K = 1 on an array of four 4- or 5-count entries with
+// wrap (fires 4 or 5 calls apart) and an entry rewritten in every call at offsets 0..3 from the
+// index shown: writes presented in the call of an index move, forwarded into the thresholds of
+// the fire after the next.
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -1224,6 +1228,23 @@ vec_table pso_stress(rng_t& r, long long calls) {
             x.arr_we = n < 605 || n >= 608;
             x.arr_addr = static_cast<int>(n < 605 ? n - 600 : (last_idx + n % 5) % 5);
             x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n % 4) << 26);   // 2 .. 2.05 counts
+        }
+        if (n >= 760 && n < 900) {  // directed: fires 4 or 5 calls apart while every call rewrites an entry
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.axis_mask = 1;
+            x.win_k = 1;
+            x.pulse_w = 1;
+            x.arr_en = true;
+            x.arr_len = 4;
+            x.arr_wrap = true;
+            in.step[0] = 1;
+            in.pos[0] = n;
+            x.enable = n >= 766;
+            x.arr_we = true;
+            const uint64_t h = (static_cast<uint64_t>(n) * 2654435761ULL) >> 9;   // (no draw)
+            x.arr_addr = static_cast<int>(n < 764 ? n - 760 : (last_idx + static_cast<int64_t>(h % 4)) % 4);
+            x.arr_data = (n < 764 || ((h >> 2) & 1) == 0 ? 4 : 5) * C::ONE;
         }
         if (n >= 700 && n < 760) {  // directed: each kind of invalid configuration for one call
             x = golden::pso_regs{};
