@@ -129,7 +129,7 @@ private:
     bool overlap_st_ = false, rate_over_st_ = false, spacing_st_ = false, freq_st_ = false;
 };
 
-// ---- part-speed helpers (seed 003): feed rates in units/s, counts per unit --------------------
+// ---- part-speed helpers (Aerotech Part-Speed PSO): feed rates in units/s, counts per unit ------
 // Maximum programmed vector feed rate: pulse generator limit / counts per unit.
 double pso_max_feed(double counts_per_unit, double pulse_hz = 24e6);
 // Minimum firing spacing (units) at a feed rate for a laser limited to laser_hz pulses/s.

@@ -61,7 +61,7 @@ struct pso_cfg {
     static constexpr int W_FCNT = 32;       // emitted-pulse counter (wraps)
     static constexpr int W_OVL = 16;        // overlap counter (saturating)
     static constexpr int CLOCK_HZ = 100000000;
-    static constexpr int PULSE_HZ_MAX = 24000000;  // pulse generator limit (seed 003)
+    static constexpr int PULSE_HZ_MAX = 24000000;  // pulse generator limit (Aerotech Part-Speed PSO)
     // derived
     static constexpr int W_DIST = D_INT + D_FRAC;                    // 56, unsigned
     static constexpr int W_REM = D_INT + 2 + D_FRAC;                 // 58, signed
@@ -105,7 +105,8 @@ struct pso_cfg {
     using sphi_t = uint<W_SPHI>;
     using spk_t = uint<W_SPK>;
     using mask_t = uint<N_AXES>;
-    using src_t = uint<2>;      // window source: 0..2 axis position, 3 part-speed pulse count
+    static constexpr int W_SRC = 2;                                  // window source register
+    using src_t = uint<W_SRC>;  // window source: 0..2 axis position, 3 part-speed pulse count
     using bad_t = uint<ARR_DEPTH>;
 };
 
@@ -177,7 +178,7 @@ struct pso_in {
     pso_cfg::inc_t ps_inc;         // part-speed commanded vector rate, Q0.32 counts per clock
 
     pso_in() : ps_inc(0) {
-        for (int i = 0; i < pso_cfg::N_AXES; ++i) {
+        LX_LOOP(pso_in_init) for (int i = 0; i < pso_cfg::N_AXES; ++i) {
             step[i] = 0;
             pos[i] = 0;
         }
@@ -224,7 +225,7 @@ public:
     };
 
     pso() {
-        for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
+        LX_LOOP(arr_init) for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
         arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
         rq_ = pso_regs();           // register stage: the reset values in force
         ok_q_ = pso_config_ok(rq_, arr_bad_);
@@ -439,7 +440,7 @@ public:
 
         bool rev = false;
         cfg::win_t d[cfg::N_AXES];
-        for (int i = 0; i < cfg::N_AXES; ++i) {
+        LX_LOOP(axis_step) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             const bool tracked = !ps_q_ && ((mask_q_ >> i) & 1) != 0;
             d[i] = tracked ? cfg::win_t(in.step[i]) : cfg::win_t(0);
@@ -448,14 +449,14 @@ public:
         bool kclose = false;
         uint<cfg::W_S> s = 0;
         cfg::win_t dn[cfg::N_AXES];
-        for (int i = 0; i < cfg::N_AXES; ++i) {
+        LX_LOOP(axis_travel) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             dn[i] = (rev ? cfg::win_t(0) : trav_[i]) + d[i];
             const cfg::k_t mag = dn[i] < 0 ? cfg::k_t(-dn[i]) : cfg::k_t(dn[i]);
             if (mag >= r.win_k) kclose = true;
             s = s + uint<cfg::W_S>(uint<2 * cfg::W_K>(mag) * mag);
         }
-        for (int i = 0; i < cfg::N_AXES; ++i) {
+        LX_LOOP(axis_close) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             trav_[i] = kclose ? cfg::win_t(0) : dn[i];
         }
@@ -492,7 +493,7 @@ private:
     }
 
     void reset_track() {
-        for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
+        LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
         a_rev_ = false;
         a_kclose_ = false;
         a_s_ = 0;

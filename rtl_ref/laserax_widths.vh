@@ -60,4 +60,26 @@
 `define LX_EC_W_POSIN 32                 // encoder_counter_cfg::W_POSIN
 `define LX_EC_W_CORR 40                  // encoder_counter_cfg::W_CORR
 
+// pso (lx::pso_cfg)
+`define LX_PSO_N_AXES 3                  // pso_cfg::N_AXES: axes, axis_mask register
+`define LX_PSO_D_FRAC 32                 // pso_cfg::D_FRAC: distance fraction bits
+`define LX_PSO_W_DIST 56                 // pso_cfg::W_DIST: fire_dist, array entries
+`define LX_PSO_W_REM 58                  // pso_cfg::W_REM: dist, signed
+`define LX_PSO_K_MAX 16                  // pso_cfg::K_MAX: longest tracking window
+`define LX_PSO_W_K 5                     // pso_cfg::W_K: win_k register
+`define LX_PSO_S_MAX 768                 // pso_cfg::S_MAX: chord ROM, last address
+`define LX_PSO_W_S 10                    // pso_cfg::W_S: chord ROM address
+`define LX_PSO_W_CHORD 37                // pso_cfg::W_CHORD: chord ROM word
+`define LX_PSO_W_INCR 38                 // pso_cfg::W_INCR: estimate step
+`define LX_PSO_W_INC 32                  // pso_cfg::W_INC: part-speed rate Q0.32
+`define LX_PSO_W_ADDR 6                  // pso_cfg::W_ADDR: array address
+`define LX_PSO_W_LEN 7                   // pso_cfg::W_LEN: arr_len register, index
+`define LX_PSO_W_PW 16                   // pso_cfg::W_PW: pulse width register
+`define LX_PSO_W_GAP 16                  // pso_cfg::W_GAP: min_period register
+`define LX_PSO_W_FCNT 32                 // pso_cfg::W_FCNT: emitted-pulse counter
+`define LX_PSO_W_OVL 16                  // pso_cfg::W_OVL: overlap counter
+`define LX_PSO_W_PROD 48                 // pso_cfg::W_PROD: inc * min_period
+`define LX_PSO_W_SPHI 33                 // pso_cfg::W_SPHI: spacing shift-add upper part
+`define LX_PSO_W_SRC 2                   // pso_cfg::W_SRC: win_src register
+
 `endif

@@ -63,78 +63,79 @@
 // laser minimum period 16, fire counter 32 (wraps), overlap counter 16 (saturates).
 `timescale 1ns / 1ps
 `default_nettype none
+`include "laserax_widths.vh"
 
 module pso (
-    input  wire               i_clk,
-    input  wire               i_rst,         // synchronous, active high: a fresh lx::pso
+    input  wire                            i_clk,
+    input  wire                            i_rst,          // synchronous, active high: a fresh lx::pso
     // per-call inputs (pso_in)
-    input  wire signed [1:0]  i_step0,       // tracked axis steps (-1, 0, +1)
-    input  wire signed [1:0]  i_step1,
-    input  wire signed [1:0]  i_step2,
-    input  wire signed [37:0] i_pos0,        // axis positions after the step (window)
-    input  wire signed [37:0] i_pos1,
-    input  wire signed [37:0] i_pos2,
-    input  wire [31:0]        i_ps_inc,      // part-speed command, Q0.32 counts per clock
+    input  wire signed [`LX_W_STEP-1:0]    i_step0,        // tracked axis steps (-1, 0, +1)
+    input  wire signed [`LX_W_STEP-1:0]    i_step1,
+    input  wire signed [`LX_W_STEP-1:0]    i_step2,
+    input  wire signed [`LX_W_POS-1:0]     i_pos0,         // axis positions after the step (window)
+    input  wire signed [`LX_W_POS-1:0]     i_pos1,
+    input  wire signed [`LX_W_POS-1:0]     i_pos2,
+    input  wire [`LX_PSO_W_INC-1:0]        i_ps_inc,       // part-speed command, Q0.32 counts per clock
     // registers (pso_regs)
-    input  wire               i_enable,
-    input  wire               i_part_speed,  // latched at the start of a run
-    input  wire [2:0]         i_axis_mask,   // latched; != 0 unless part_speed
-    input  wire [4:0]         i_win_k,       // tracking window K, 1..16
-    input  wire [55:0]        i_fire_dist,   // Q24.32 counts, >= 2 counts unless arr_en
-    input  wire               i_arr_en,      // latched
-    input  wire [6:0]         i_arr_len,     // latched; 1..64 when arr_en
-    input  wire               i_arr_wrap,    // latched
-    input  wire               i_arr_we,      // array write port (every call, also disabled)
-    input  wire [5:0]         i_arr_addr,
-    input  wire [55:0]        i_arr_data,
-    input  wire [15:0]        i_pulse_w,     // pulse width, clocks, >= 1
-    input  wire               i_win_en,
-    input  wire [1:0]         i_win_src,     // 0..2 axis position, 3 pulse count (part-speed)
-    input  wire signed [37:0] i_win_low,
-    input  wire signed [37:0] i_win_high,
-    input  wire [15:0]        i_min_period,  // laser minimum period, clocks (0: no check)
-    input  wire               i_clear,       // pulse: clears sticky flags and overlap counter
+    input  wire                            i_enable,
+    input  wire                            i_part_speed,   // latched at the start of a run
+    input  wire [`LX_PSO_N_AXES-1:0]       i_axis_mask,    // latched; != 0 unless part_speed
+    input  wire [`LX_PSO_W_K-1:0]          i_win_k,        // tracking window K, 1..16
+    input  wire [`LX_PSO_W_DIST-1:0]       i_fire_dist,    // Q24.32 counts, >= 2 counts unless arr_en
+    input  wire                            i_arr_en,       // latched
+    input  wire [`LX_PSO_W_LEN-1:0]        i_arr_len,      // latched; 1..64 when arr_en
+    input  wire                            i_arr_wrap,     // latched
+    input  wire                            i_arr_we,       // array write port (every call, also disabled)
+    input  wire [`LX_PSO_W_ADDR-1:0]       i_arr_addr,
+    input  wire [`LX_PSO_W_DIST-1:0]       i_arr_data,
+    input  wire [`LX_PSO_W_PW-1:0]         i_pulse_w,      // pulse width, clocks, >= 1
+    input  wire                            i_win_en,
+    input  wire [`LX_PSO_W_SRC-1:0]        i_win_src,      // 0..2 axis position, 3 pulse count (part-speed)
+    input  wire signed [`LX_W_POS-1:0]     i_win_low,
+    input  wire signed [`LX_W_POS-1:0]     i_win_high,
+    input  wire [`LX_PSO_W_GAP-1:0]        i_min_period,   // laser minimum period, clocks (0: no check)
+    input  wire                            i_clear,        // pulse: clears sticky flags and overlap counter
     // outputs (pso::out_t)
-    output wire               o_fire,
-    output wire               o_emit,
-    output wire               o_pulse,
-    output wire               o_in_win,
-    output wire signed [57:0] o_dist,        // distance since the last fire, Q.32
-    output wire [6:0]         o_idx,
-    output wire               o_arr_done,
-    output wire [31:0]        o_fire_cnt,
-    output wire [15:0]        o_overlap_cnt,
-    output wire               o_overlap,
-    output wire               o_overlap_st,
-    output wire               o_rate_over,
-    output wire               o_rate_over_st,
-    output wire               o_spacing_err,
-    output wire               o_spacing_st,
-    output wire               o_freq_err,
-    output wire               o_freq_st,
-    output wire               o_ps_pulse,
-    output wire signed [37:0] o_ps_count,
-    output wire               o_cfg_err
+    output wire                            o_fire,
+    output wire                            o_emit,
+    output wire                            o_pulse,
+    output wire                            o_in_win,
+    output wire signed [`LX_PSO_W_REM-1:0] o_dist,         // distance since the last fire, Q.32
+    output wire [`LX_PSO_W_LEN-1:0]        o_idx,
+    output wire                            o_arr_done,
+    output wire [`LX_PSO_W_FCNT-1:0]       o_fire_cnt,
+    output wire [`LX_PSO_W_OVL-1:0]        o_overlap_cnt,
+    output wire                            o_overlap,
+    output wire                            o_overlap_st,
+    output wire                            o_rate_over,
+    output wire                            o_rate_over_st,
+    output wire                            o_spacing_err,
+    output wire                            o_spacing_st,
+    output wire                            o_freq_err,
+    output wire                            o_freq_st,
+    output wire                            o_ps_pulse,
+    output wire signed [`LX_W_POS-1:0]     o_ps_count,
+    output wire                            o_cfg_err
 );
 
     // ---- fixed widths (hls: pso_cfg) ---------------------------------------------------------
-    localparam integer D_FRAC   = 32;   // fraction bits of every distance
-    localparam integer W_DIST   = 56;   // Q24.32 unsigned
-    localparam integer W_REM    = 58;   // u (value - thr) and dist, signed
-    localparam integer K_MAX    = 16;   // longest tracking window
-    localparam integer W_K      = 5;
-    localparam integer S_MAX    = 768;  // 3 K_MAX^2
-    localparam integer W_S      = 10;
-    localparam integer W_CHORD  = 37;
-    localparam integer W_INCR   = 38;   // x, y
-    localparam integer W_POS    = 38;
-    localparam integer W_INC    = 32;
-    localparam integer W_GAP    = 16;
-    localparam integer W_PW     = 16;
-    localparam integer W_FCNT   = 32;
-    localparam integer W_OVL    = 16;
-    localparam integer W_PROD   = 48;   // inc * min_period
-    localparam integer W_SPHI   = 33;
+    localparam integer D_FRAC   = `LX_PSO_D_FRAC;  // fraction bits of every distance
+    localparam integer W_DIST   = `LX_PSO_W_DIST;  // Q24.32 unsigned
+    localparam integer W_REM    = `LX_PSO_W_REM;   // u (value - thr) and dist, signed
+    localparam integer K_MAX    = `LX_PSO_K_MAX;   // longest tracking window
+    localparam integer W_K      = `LX_PSO_W_K;
+    localparam integer S_MAX    = `LX_PSO_S_MAX;   // 3 K_MAX^2
+    localparam integer W_S      = `LX_PSO_W_S;
+    localparam integer W_CHORD  = `LX_PSO_W_CHORD;
+    localparam integer W_INCR   = `LX_PSO_W_INCR;  // x, y
+    localparam integer W_POS    = `LX_W_POS;
+    localparam integer W_INC    = `LX_PSO_W_INC;
+    localparam integer W_GAP    = `LX_PSO_W_GAP;
+    localparam integer W_PW     = `LX_PSO_W_PW;
+    localparam integer W_FCNT   = `LX_PSO_W_FCNT;
+    localparam integer W_OVL    = `LX_PSO_W_OVL;
+    localparam integer W_PROD   = `LX_PSO_W_PROD;  // inc * min_period
+    localparam integer W_SPHI   = `LX_PSO_W_SPHI;
     localparam [W_INC-1:0] INC_MAX = 32'd1030792151;  // floor(0.24 * 2^32): 24 MHz
     localparam integer LH       = W_REM / 2;   // 29: halves of u and of the carry-select adds
 

@@ -18,8 +18,7 @@ import re
 import sys
 import tempfile
 
-EXEMPT_FILES = {"laserax_regs.v", "pso.v"}   # laserax_regs.v: generated from regmap/laserax_regs.csv
-# (its own single source); pso.v: TEMPORARY, converted after the FIRE_LAT 6 branch lands
+EXEMPT_FILES = {"laserax_regs.v"}   # generated from regmap/laserax_regs.csv (its own single source)
 PORT_RE = re.compile(r"^\s*(input|output)\s+wire\s+(?:signed\s+)?\[([^\]]+)\]\s*(\w+)", re.M)
 
 

@@ -15,6 +15,7 @@
 #include "hls/error_map.h"
 #include "hls/laserax_top.h"
 #include "hls/output_pacer.h"
+#include "hls/pso.h"
 #include "hls/pulse_multiplier.h"
 #include "hls/quad_decoder.h"
 #include "hls/rephase.h"
@@ -90,6 +91,27 @@ void write(std::ostream& os, const std::string& command) {
     w.def("EC_W_PER", lx::encoder_counter_cfg::W_PER, "encoder_counter_cfg::W_PER: correction period");
     w.def("EC_W_POSIN", lx::encoder_counter_cfg::W_POSIN, "encoder_counter_cfg::W_POSIN");
     w.def("EC_W_CORR", lx::encoder_counter_cfg::W_CORR, "encoder_counter_cfg::W_CORR");
+    w.group("pso (lx::pso_cfg)");
+    w.def("PSO_N_AXES", lx::pso_cfg::N_AXES, "pso_cfg::N_AXES: axes, axis_mask register");
+    w.def("PSO_D_FRAC", lx::pso_cfg::D_FRAC, "pso_cfg::D_FRAC: distance fraction bits");
+    w.def("PSO_W_DIST", lx::pso_cfg::W_DIST, "pso_cfg::W_DIST: fire_dist, array entries");
+    w.def("PSO_W_REM", lx::pso_cfg::W_REM, "pso_cfg::W_REM: dist, signed");
+    w.def("PSO_K_MAX", lx::pso_cfg::K_MAX, "pso_cfg::K_MAX: longest tracking window");
+    w.def("PSO_W_K", lx::pso_cfg::W_K, "pso_cfg::W_K: win_k register");
+    w.def("PSO_S_MAX", lx::pso_cfg::S_MAX, "pso_cfg::S_MAX: chord ROM, last address");
+    w.def("PSO_W_S", lx::pso_cfg::W_S, "pso_cfg::W_S: chord ROM address");
+    w.def("PSO_W_CHORD", lx::pso_cfg::W_CHORD, "pso_cfg::W_CHORD: chord ROM word");
+    w.def("PSO_W_INCR", lx::pso_cfg::W_INCR, "pso_cfg::W_INCR: estimate step");
+    w.def("PSO_W_INC", lx::pso_cfg::W_INC, "pso_cfg::W_INC: part-speed rate Q0.32");
+    w.def("PSO_W_ADDR", lx::pso_cfg::W_ADDR, "pso_cfg::W_ADDR: array address");
+    w.def("PSO_W_LEN", lx::pso_cfg::W_LEN, "pso_cfg::W_LEN: arr_len register, index");
+    w.def("PSO_W_PW", lx::pso_cfg::W_PW, "pso_cfg::W_PW: pulse width register");
+    w.def("PSO_W_GAP", lx::pso_cfg::W_GAP, "pso_cfg::W_GAP: min_period register");
+    w.def("PSO_W_FCNT", lx::pso_cfg::W_FCNT, "pso_cfg::W_FCNT: emitted-pulse counter");
+    w.def("PSO_W_OVL", lx::pso_cfg::W_OVL, "pso_cfg::W_OVL: overlap counter");
+    w.def("PSO_W_PROD", lx::pso_cfg::W_PROD, "pso_cfg::W_PROD: inc * min_period");
+    w.def("PSO_W_SPHI", lx::pso_cfg::W_SPHI, "pso_cfg::W_SPHI: spacing shift-add upper part");
+    w.def("PSO_W_SRC", lx::pso_cfg::W_SRC, "pso_cfg::W_SRC: win_src register");
     os << "\n`endif\n";
 }
 
