@@ -81,7 +81,11 @@ module rephase (
     localparam integer W_LO  = W_POS / 2;  // low half of a position counter (pos_step)
     localparam integer W_CZ  = W_P;        // low part of B = A + dir*P, C = B + dir*mark_len, Z
 
-    // the referencing stages (DESIGN 4.5), the values of stage_q and o_stage
+    // the referencing stages (DESIGN 4.5), the values of stage_q and o_stage. The stage machine
+    // below is an if-chain on stage_q with "hold" as the last branch (the 0 encoding is never
+    // reached and holds). The same machine as `case (stage_q)` with a `default` hold, measured
+    // (HX8K, seed 1): the top 104.4 MHz instead of 108.4, and nextpnr's router did not converge for
+    // the block alone within 15 minutes; so the chain stays (hls/rephase.h: switch with default).
     localparam [1:0] ST_UNHOMED = 2'd1;  // stage 1: un-homed, waiting for the switch edge (A)
     localparam [1:0] ST_WINDOW  = 2'd2;  // stage 2: from A towards B, d paid out over P counts
     localparam [1:0] ST_HOMED   = 2'd3;  // stage 3: homed, phase locked, mark on [B, C]
