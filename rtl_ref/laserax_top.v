@@ -148,9 +148,16 @@ module laserax_top #(
     reg        [12:0]   r_period;
     // constants of the period that rephase and dds_sincos compare with, formed here from the
     // presented period (a decrement in front of a register) instead of behind r_period in every
-    // call: P - 1, P - 2 (14-bit signed) and P/4 - 1 (11 bits), always those of r_period
-    reg signed [13:0]   r_period_m1, r_period_m2;
-    reg        [10:0]   r_qtr_m1;
+    // call: P - 1, P - 2 (14-bit signed) and P/4 - 1 (11 bits), those of r_period in every
+    // running call. A running call's period passed the check (P % 8 == 0, 8 <= P <= 4096), so
+    // all three are P/8 - 1 (0..511) with constant low bits: P - 1 = 8 (P/8 - 1) + 7,
+    // P - 2 = 8 (P/8 - 1) + 6, P/4 - 1 = 2 (P/8 - 1) + 1; one 10-bit decrement (r_p8_m1). In a
+    // safe-state call they may differ from P - 1 etc., and are not read: rephase and dds_sincos
+    // are in reset, and their registers that a reset does not set take none of them.
+    reg        [9:0]    r_p8_m1;         // P/8 - 1 of the presented period (10 bits, wrapping)
+    wire signed [13:0]  r_period_m1 = $signed({1'b0, r_p8_m1, 3'b111});
+    wire signed [13:0]  r_period_m2 = $signed({1'b0, r_p8_m1, 3'b110});
+    wire       [10:0]   r_qtr_m1    = {r_p8_m1, 1'b1};
     reg        [7:0]    r_glitch_n;
     reg        [15:0]   r_sw_debounce;
     reg        [15:0]   r_min_spacing;
@@ -191,9 +198,7 @@ module laserax_top #(
     end
     always @(posedge i_clk) begin
         r_period        <= i_period;
-        r_period_m1     <= $signed({1'b0, i_period}) - 14'sd1;
-        r_period_m2     <= $signed({1'b0, i_period}) - 14'sd2;
-        r_qtr_m1        <= i_period[12:2] - 11'd1;
+        r_p8_m1         <= i_period[12:3] - 10'd1;
         r_glitch_n      <= i_glitch_n;
         r_sw_debounce   <= i_sw_debounce;
         r_min_spacing   <= i_min_spacing;
@@ -266,7 +271,13 @@ module laserax_top #(
         endcase
     end
     wire        amp_ok    = width_ok && i_amplitude != 18'd0 && (i_amplitude & amp_hi) == 18'd0;
-    wire        mark_ok   = i_mark_len >= {2'b00, i_period[12:2]} && i_mark_len <= i_period;
+    // P/4 <= mark_len <= P as two carry chains that share the one inverted operand ~mark_len
+    // (an inverted operand costs a LUT per bit in front of a chain): mark_len <= P <=> carry of
+    // P + ~mark_len + 1; mark_len >= P/4 <=> !(P/4 > mark_len) <=> no carry of P/4 + ~mark_len
+    wire [12:0] mark_n    = ~i_mark_len;
+    wire [13:0] mark_le_s = {1'b0, i_period} + {1'b0, mark_n} + 14'd1;
+    wire [13:0] mark_lt_s = {3'b000, i_period[12:2]} + {1'b0, mark_n};
+    wire        mark_ok   = !mark_lt_s[13] && mark_le_s[13];
     // count integrity (DESIGN 4.2): min_spacing > max(glitch_n, 1). glitch_n has 8 bits, so an
     // upper byte of min_spacing that is not 0 passes by itself; else an 8-bit compare (no 16-bit
     // chain in front of the check's AND tree)
@@ -428,7 +439,6 @@ module laserax_top #(
     // dac_width of call t and its clear are registered with the DDS outputs, so the clamp sits
     // after registers only.
     reg  signed [17:0] dac_hi;      // 2^(dac_width-1) - 1 of call t, formed before the register
-    reg  signed [17:0] dac_lo;      // -dac_hi, also a register (no negation before the compare)
     reg                clear_q, clip_st_q;
     // (dac_hi_d, the bound of the next call, is formed in front of dds_sincos, which reads it)
     wire               run_now  = run_out_q;     // dac_width is legal (12..18) in a running call
@@ -438,8 +448,12 @@ module laserax_top #(
     // (o_sin_over / o_cos_over): the clamp and the sticky flag follow registers by one or two LUT
     // levels, no compare chain after the DDS registers. In a call that is not running the DDS
     // registers are 0 (the DDS was reset at the edge before): no flag, no clamp.
-    wire               sin_hi   = dds_sin_over && !dds_sin[17], sin_lo = dds_sin_over && dds_sin[17];
-    wire               cos_hi   = dds_cos_over && !dds_cos[17], cos_lo = dds_cos_over && dds_cos[17];
+    // The clamped code is +dac_hi or -dac_hi by the code's sign. dac_hi = 2^(w-1) - 1 is odd for
+    // every width (and its reset value 32767), so -dac_hi = ~dac_hi + 1 has bit 0 = 1 and bits
+    // >= 1 equal to ~dac_hi: the bound of the sign is dac_hi with bits >= 1 XORed with the sign,
+    // four inputs per output bit (over, sign, dac_hi bit, code bit), no -dac_hi register.
+    wire signed [17:0] sin_bound = dac_hi ^ {{17{dds_sin[17]}}, 1'b0};
+    wire signed [17:0] cos_bound = dac_hi ^ {{17{dds_cos[17]}}, 1'b0};
     (* keep *) wire    clip_hold;
     wire               clip_any  = dds_sin_over || dds_cos_over;
     assign clip_hold = clip_st_q && !clear_q;
@@ -447,18 +461,16 @@ module laserax_top #(
     always @(posedge i_clk) begin
         if (i_rst) begin
             dac_hi    <= 18'sd32767;
-            dac_lo    <= -18'sd32767;
             clear_q   <= 1'b0;
             clip_st_q <= 1'b0;
         end else begin
             dac_hi    <= $signed(dac_hi_d);
-            dac_lo    <= -$signed(dac_hi_d);    // a constant per width as well
             clear_q   <= r_clear;
             clip_st_q <= clip_st;
         end
     end
-    assign o_sin    = sin_hi ? dac_hi : (sin_lo ? dac_lo : dds_sin);
-    assign o_cos    = cos_hi ? dac_hi : (cos_lo ? dac_lo : dds_cos);
+    assign o_sin    = dds_sin_over ? sin_bound : dds_sin;
+    assign o_cos    = dds_cos_over ? cos_bound : dds_cos;
     assign o_dac_clip_st = clip_st;
 
     // ---- status (block registers are in their reset state after a safe-state call) -----------
