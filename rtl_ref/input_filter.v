@@ -46,31 +46,36 @@ module input_filter #(
     // ---- registers -------------------------------------------------------------------------
     reg             s1_q, s2_q, f_q, valid_q, glitch_q, ready_q;
     reg             take_q;     // this call loads f from s2 if s2 != f: valid ? ready : fill == 2
-    // the stability counter cnt of hls/input_filter.h is kept as cnt + 2 (c2, W_CNT + 1 bits:
-    // cnt < max(N,1) <= 2^W_CNT - 1, so cnt + 2 <= 2^W_CNT), the value the pass compare needs
-    reg [W_CNT:0]   c2_q;
-    reg             cnz_q;      // c2 != 2 (cnt != 0), kept beside c2 so the glitch test is one LUT
+    // the stability counter cnt of hls/input_filter.h is kept as ~(cnt + 2) (nc2, W_CNT + 1 bits:
+    // cnt < max(N,1) <= 2^W_CNT - 1, so cnt + 2 <= 2^W_CNT): cnt + 2 is the value the pass compare
+    // needs, and held inverted it meets i_n in a carry chain without an inverted operand (which
+    // costs a LUT per bit on the iCE40); the count is a decrement of nc2
+    reg [W_CNT:0]   nc2_q;
+    reg             cnz_q;      // nc2 != ~2 (cnt != 0), kept beside nc2 so the glitch test is one LUT
     reg [1:0]       fill_q;
 
     reg             s1_d, s2_d, f_d, valid_d, glitch_d, ready_d, take_d;
-    reg [W_CNT:0]   c2_d;
+    reg [W_CNT:0]   nc2_d;
     reg             cnz_d;
     reg [1:0]       fill_d;
 
     // Pass decision of the next edge (DESIGN 4.1 `ready`), with this edge's N: cnt' + 1 >= max(N,1).
     // cnt' is 0 (-> 1 >= max(N,1)) or cnt + 1 (-> cnt + 2 >= max(N,1)); both compares are formed
     // from the registers and i_n in parallel with the filter logic, which only selects.
-    // max(N,1) <= 1 <=> N <= 1, and (cnt + 2 >= 2) max(N,1) <= cnt + 2 <=> N <= cnt + 2: the
-    // compares take i_n and the register c2 = cnt + 2 as they are (one chain, no add before it)
-    localparam [W_CNT:0] C2_ZERO = 2;    // c2 of cnt = 0
+    // max(N,1) <= 1 <=> N <= 1, and (cnt + 2 >= 2) max(N,1) <= cnt + 2 <=> N <= cnt + 2 <=>
+    // !(N > cnt + 2) <=> no carry out of N + ~(cnt + 2) (W_CNT + 1 bits): the compare takes i_n
+    // and the register nc2 = ~(cnt + 2) as they are (one chain, no add or inverter before it)
+    localparam [W_CNT:0] C2_ZERO  = 2;          // cnt + 2 of cnt = 0
+    localparam [W_CNT:0] NC2_ZERO = ~C2_ZERO;   // nc2 of cnt = 0
     wire             rdy_0   = {1'b0, i_n} <= {{W_CNT{1'b0}}, 1'b1};
-    wire             rdy_inc = c2_q >= {1'b0, i_n};
+    wire [W_CNT+1:0] n_gt_s  = {2'b00, i_n} + {1'b0, nc2_q};
+    wire             rdy_inc = !n_gt_s[W_CNT+1];
 
     always @* begin
         s1_d     = i_pin;
         s2_d     = s1_q;
         valid_d  = valid_q;
-        c2_d     = c2_q;
+        nc2_d    = nc2_q;
         cnz_d    = cnz_q;
         fill_d   = fill_q;
         glitch_d = valid_q && (s2_q == f_q) && cnz_q;
@@ -81,13 +86,13 @@ module input_filter #(
                 fill_d = fill_q + 2'd1;
             end
         end else if (s2_q == f_q) begin
-            c2_d  = C2_ZERO;
+            nc2_d = NC2_ZERO;
             cnz_d = 1'b0;
         end else if (ready_q) begin
-            c2_d  = C2_ZERO;             // f loaded (take)
+            nc2_d = NC2_ZERO;            // f loaded (take)
             cnz_d = 1'b0;
         end else begin
-            c2_d  = c2_q + 1'b1;         // cnt + 1 < max(N(t-1),1) <= 2^W_CNT - 1: fits
+            nc2_d = nc2_q - 1'b1;        // ~(c2 + 1); cnt + 1 < max(N(t-1),1) <= 2^W_CNT - 1: fits
             cnz_d = 1'b1;                // c2 >= 2, so c2 + 1 >= 3
         end
         ready_d = (valid_q && s2_q != f_q && !ready_q) ? rdy_inc : rdy_0;
@@ -106,7 +111,7 @@ module input_filter #(
             glitch_q <= 1'b0;
             ready_q  <= 1'b0;
             take_q   <= 1'b0;
-            c2_q     <= C2_ZERO;
+            nc2_q    <= NC2_ZERO;
             cnz_q    <= 1'b0;
             fill_q   <= 2'd0;
         end else begin
@@ -117,7 +122,7 @@ module input_filter #(
             glitch_q <= glitch_d;
             ready_q  <= ready_d;
             take_q   <= take_d;
-            c2_q     <= c2_d;
+            nc2_q    <= nc2_d;
             cnz_q    <= cnz_d;
             fill_q   <= fill_d;
         end
@@ -140,12 +145,13 @@ module input_filter #(
     // c2 = cnt + 2 stays in [2, 2^W_CNT]: it counts only while !ready, and !ready says that the
     // last count left it below N <= 2^W_CNT - 1; before the first sample it holds its reset value
     localparam [W_CNT:0] C2_MAX = {1'b1, {W_CNT{1'b0}}};   // 2^W_CNT
+    wire       [W_CNT:0] f_c2 = ~nc2_q;                     // cnt + 2
     always @* if (f_init_if) begin
         assert(take_q == (valid_q ? ready_q : (fill_q == 2'd2)));
-        assert(c2_q >= C2_ZERO && c2_q <= C2_MAX);
-        assert(cnz_q == (c2_q != C2_ZERO));
-        if (!valid_q) assert(c2_q == C2_ZERO);
-        if (!ready_q) assert(c2_q < C2_MAX);
+        assert(f_c2 >= C2_ZERO && f_c2 <= C2_MAX);
+        assert(cnz_q == (f_c2 != C2_ZERO));
+        if (!valid_q) assert(f_c2 == C2_ZERO);
+        if (!ready_q) assert(f_c2 < C2_MAX);
     end
 `endif
 

@@ -134,7 +134,7 @@ MUTATIONS=(
   "qd_lerr_alarm|quad_decoder.v|quad_decoder|s/if (lerr_d) lerr_alarm_d = 1'b1;/if (lerr_q) lerr_alarm_d = 1'b1;/"
   "qd_lerr_unprimed|quad_decoder.v|quad_decoder|s/lerr_d   = primed_q \&\& fe_f_d;/lerr_d   = fe_f_d;/"
   "qd_lerr_nx_rst|quad_decoder.v|quad_decoder|s/assign o_lerr_nx    = !i_rst \&\& lerr_d;/assign o_lerr_nx    = lerr_d;/"
-  "qd_pins_latency|input_filter.v|quad_decoder_pins|s/wire             rdy_inc = c2_q >= {1'b0, i_n};/wire             rdy_inc = c2_q > {1'b0, i_n};/"
+  "qd_pins_latency|input_filter.v|quad_decoder_pins|s/n_gt_s  = {2'b00, i_n} + {1'b0, nc2_q};/n_gt_s  = {2'b00, i_n} + {1'b0, nc2_q} + 1'b1;/"
   "op_gap|output_pacer.v|output_pacer|s/tm_d = emit_nz ? i_pace_m$/tm_d = emit_nz ? i_pace_m - {{(W_PACE-1){1'b0}}, 1'b1}/"
   "op_alarm|output_pacer.v|output_pacer|s/gt_ll  = bl_l > tl_l;/gt_ll  = bl_l >= tl_l;/"
   "op_tz_emit|output_pacer.v|output_pacer|s/wire              tz_d = !emit_nz \&\& /wire              tz_d = /"
