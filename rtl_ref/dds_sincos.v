@@ -111,6 +111,7 @@ module dds_sincos #(
     // ---- registers ---------------------------------------------------------------------------
     reg [1:0]        q_q;
     reg [W_R-1:0]    r_q, rp1_q, rm1_q;  // phase offset r and its neighbours r + 1, r - 1
+    reg [W_R-1:0]    nr_q;               // ~r
     reg              wrap_q;             // r + 1 == P/4 of the previous call (the up count wraps)
     reg [W_TBL-1:0]  t_dir_q, t_mir_q;   // RAM read data (read-first), next-phase addresses
     reg [W_ADDR-1:0] a_dir_q, a_mir_q;   // their addresses
@@ -151,7 +152,10 @@ module dds_sincos #(
     wire           wrap_d = (s_same && wrap_q) || (s_inc && rp1_q == q_m1) || (s_dec && r_q == quarter)
                           || s_wdn || (s_wup && quarter == one);
     // P/4 - r' (don't-care when r' = 0: the amplitude is used)
-    wire [W_R-1:0] m_d   = ({W_R{s_same}} & (quarter - r_q)) | ({W_R{ostep_pos}} & (quarter - rp1_q))
+    // P/4 - (r + 1) = P/4 + ~r: from the register nr = ~r kept beside r (rp1 = r + 1 mod 2^W_R
+    // always), so no inverted operand sits in front of that chain (one LUT per bit on the iCE40)
+    wire [W_R:0]   m_same = {1'b0, quarter} + {1'b0, nr_q} + {{W_R{1'b0}}, 1'b1};   // P/4 - r
+    wire [W_R-1:0] m_d   = ({W_R{s_same}} & m_same[W_R-1:0]) | ({W_R{ostep_pos}} & (quarter + nr_q))
                          | ({W_R{s_dec}} & (quarter - rm1_q)) | ({W_R{s_wdn}} & one);
     // reset: the phase-0 words (r' < P/4 <= 1024: the address is the low W_ADDR bits)
     wire [W_ADDR-1:0] a_dir = {W_ADDR{!i_rst}} & r_d[W_ADDR-1:0];
@@ -209,6 +213,7 @@ module dds_sincos #(
         if (i_rst) begin
             q_q        <= 2'd0;
             r_q        <= {W_R{1'b0}};
+            nr_q       <= {W_R{1'b1}};
             rp1_q      <= one;
             rm1_q      <= {W_R{1'b1}};
             wrap_q     <= 1'b0;                  // P/4 of the reset call read as 0: r + 1 != 0
@@ -223,6 +228,7 @@ module dds_sincos #(
         end else begin
             q_q        <= q_d;
             r_q        <= r_d;
+            nr_q       <= ~r_d;
             rp1_q      <= rp1_d;
             rm1_q      <= rm1_d;
             wrap_q     <= wrap_d;
@@ -323,6 +329,7 @@ module dds_sincos #(
             assert(r_q < quarter);
             assert(f_qr == f_ph);
             assert(rp1_q == r_q + one);
+            assert(nr_q == ~r_q);                     // the inverted copy of r
             assert(rm1_q == r_q - one);
             assert(wrap_q == (rp1_q == quarter));       // the registered wrap test (P constant)
             // helper invariants: the addresses read at the last edge are those of (q_q, r_q)

@@ -70,7 +70,7 @@ module quad_decoder (
     reg                    pa_q, pb_q, primed_q;
     reg signed [W_RAW-1:0] raw_q;
     reg [W_ERRCNT-1:0]     err_cnt_q;
-    reg [W_SPACING:0]      sp2_q;          // since + 2 (DESIGN 4.2 `since`, offset by 2)
+    reg [W_SPACING:0]      nsp2_q;         // ~(since + 2) (DESIGN 4.2 `since`, offset by 2, inverted)
     reg                    illegal_st_q, ovs_st_q, lerr_alarm_q, glitch_st_q;
     reg signed [1:0]       step_q;
     reg                    illegal_q, ovs_q, lerr_q;
@@ -78,7 +78,7 @@ module quad_decoder (
     reg                    pa_d, pb_d, primed_d;
     reg signed [W_RAW-1:0] raw_d;
     reg [W_ERRCNT-1:0]     err_cnt_d;
-    reg [W_SPACING:0]      sp2_d;
+    reg [W_SPACING:0]      nsp2_d;
     reg                    illegal_st_d, ovs_st_d, lerr_alarm_d, glitch_st_d;
     reg signed [1:0]       step_d;
     reg                    illegal_d, ovs_d, lerr_d;
@@ -89,10 +89,16 @@ module quad_decoder (
     reg                    close_q, close_d;   // DESIGN 4.2 `close`: since + 1 < min_spacing
     // `since` is kept as sp2 = since + 2 (65537 = since saturated at 65535), so that the overspeed
     // comparison of the next edge is one comparator on registers for both values since' can take:
-    // since' = 0 after a step -> 1 < min_spacing; since' = since + 1 -> sp2 < min_spacing
-    localparam [W_SPACING:0] SP2_MAX = {1'b0, SINCE_MAX} + {{(W_SPACING-1){1'b0}}, 2'd2};
+    // since' = 0 after a step -> 1 < min_spacing; since' = since + 1 -> sp2 < min_spacing.
+    // sp2 is held inverted (nsp2 = ~sp2), so sp2 < min_spacing is the carry out of
+    // min_spacing + ~sp2 (W_SPACING + 1 bits) with no inverted operand in front of the chain (one
+    // LUT per bit on the iCE40); a count is a decrement of nsp2
+    localparam [W_SPACING:0] SP2_MAX  = {1'b0, SINCE_MAX} + {{(W_SPACING-1){1'b0}}, 2'd2};
+    localparam [W_SPACING:0] NSP2_MAX = ~SP2_MAX;
+    localparam [W_SPACING:0] NSP2_TWO = ~{{(W_SPACING-1){1'b0}}, 2'd2};
     wire                   close_0   = {{(W_SPACING-1){1'b0}}, 1'b1} < i_min_spacing;
-    wire                   close_inc = sp2_q < {1'b0, i_min_spacing};
+    wire [W_SPACING+1:0]   close_s   = {2'b00, i_min_spacing} + {1'b0, nsp2_q};
+    wire                   close_inc = close_s[W_SPACING+1];
 
     always @* begin
         // clear acts first
@@ -129,14 +135,14 @@ module quad_decoder (
 
         // edge spacing
         ovs_d   = 1'b0;
-        sp2_d   = sp2_q;
+        nsp2_d  = nsp2_q;
         close_d = 1'b0;                          // since stays 65535: 65536 < min_spacing never
         if (step_d != 2'sd0) begin
             ovs_d   = close_q;
-            sp2_d   = {{(W_SPACING-1){1'b0}}, 2'd2};
+            nsp2_d  = NSP2_TWO;
             close_d = close_0;
-        end else if (sp2_q != SP2_MAX) begin
-            sp2_d   = sp2_q + {{W_SPACING{1'b0}}, 1'b1};
+        end else if (nsp2_q != NSP2_MAX) begin
+            nsp2_d  = nsp2_q - {{W_SPACING{1'b0}}, 1'b1};
             close_d = close_inc;
         end
 
@@ -160,7 +166,7 @@ module quad_decoder (
             primed_q     <= 1'b0;
             raw_q        <= {W_RAW{1'b0}};
             err_cnt_q    <= {W_ERRCNT{1'b0}};
-            sp2_q        <= SP2_MAX;
+            nsp2_q       <= NSP2_MAX;
             close_q      <= 1'b0;
             illegal_st_q <= 1'b0;
             ovs_st_q     <= 1'b0;
@@ -176,7 +182,7 @@ module quad_decoder (
             primed_q     <= primed_d;
             raw_q        <= raw_d;
             err_cnt_q    <= err_cnt_d;
-            sp2_q        <= sp2_d;
+            nsp2_q       <= nsp2_d;
             close_q      <= close_d;
             illegal_st_q <= illegal_st_d;
             ovs_st_q     <= ovs_st_d;
@@ -223,6 +229,7 @@ module quad_decoder (
     // made one call early); min_spacing = 0 never flags.
     localparam [W_SPACING:0] F_DIST_MAX = {(W_SPACING+1){1'b1}};
     reg [W_SPACING:0]      f_dist;              // spacing an edge of the present call would have
+    wire [W_SPACING:0]     f_sp2 = ~nsp2_q;     // since + 2 (the register holds it inverted)
     reg [W_SPACING-1:0]    f_ms_p;              // min_spacing of the previous call
     reg                    f_ovs_exp_p;         // the call was an edge closer than min_spacing
     reg                    f_ovs_st_p, f_fe_p, f_primed_p, f_alarm_p;
@@ -326,7 +333,7 @@ module quad_decoder (
             assert(primed_q == fa_valid);
             // helper invariants (induction): since (kept as sp2 = since + 2) and the
             // registered comparison close follow the reference spacing
-            assert(sp2_q == ((f_dist > {1'b0, SINCE_MAX}) ? SP2_MAX : f_dist + 1'b1));
+            assert(f_sp2 == ((f_dist > {1'b0, SINCE_MAX}) ? SP2_MAX : f_dist + 1'b1));
             assert(close_q == (f_dist < {1'b0, f_ms_p}));
         end
     end
