@@ -382,13 +382,7 @@ public:
             p_th2_ = th2;
             p_th3_ = th3;
         } else {
-            p_y_ = 0;
-            p_d1_ = 0;
-            p_d2_ = 0;
-            p_d3_ = 0;
-            p_th1_ = 0;
-            p_th2_ = 0;
-            p_th3_ = 0;
+            clear_p_operands();
         }
         p_inwin_ = r_v_ && r_inwin_;
         p_v_ = r_v_;
@@ -492,6 +486,17 @@ private:
         return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : arr_[0];
     }
 
+    // stage P's operand registers (B1's results) at 0: while R holds no data, and in reset_track()
+    void clear_p_operands() {
+        p_y_ = 0;
+        p_d1_ = 0;
+        p_d2_ = 0;
+        p_d3_ = 0;
+        p_th1_ = 0;
+        p_th2_ = 0;
+        p_th3_ = 0;
+    }
+
     void reset_track() {
         LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
         a_rev_ = false;
@@ -504,13 +509,7 @@ private:
         r_inwin_ = false;
         r_v_ = false;
         part_ = 0;
-        p_y_ = 0;
-        p_d1_ = 0;
-        p_d2_ = 0;
-        p_d3_ = 0;
-        p_th1_ = 0;
-        p_th2_ = 0;
-        p_th3_ = 0;
+        clear_p_operands();
         p_inwin_ = false;
         p_v_ = false;
         b_y_ = 0;
