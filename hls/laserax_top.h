@@ -192,8 +192,9 @@ public:
         swf_q_ = input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t{false, false, false};
         lerr_q_ = false;
         dec_alarm_ = false;
-        rep_q2_ = rep_tap{};
-        rep_q3_ = rep_tap{};
+        dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
+        dig_q2_ = dig_tap{};
+        dig_q3_ = dig_tap{};
     }
 
     dds_sincos& dds() { return dds_; }
@@ -328,10 +329,12 @@ private:
         if (clip) dac_clip_st_ = true;
         o.dac_clip_st = dac_clip_st_;
         o.cfg_err = false;
-        // digital outputs from the rephase outputs of call t-3
-        quad_levels(rep_q3_.out_pos, o.qa, o.qb);
-        o.ref_mark = rep_q3_.mark;
-        o.qz = rep_q3_.mark;
+        // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
+        // that produced them and shifted through two taps)
+        o.ref_mark = dig_q3_.ref_mark;
+        o.qa = dig_q3_.qa;
+        o.qb = dig_q3_.qb;
+        o.qz = dig_q3_.qz;
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
@@ -339,11 +342,11 @@ private:
         const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
         const rephase::out_t rep = rep_.step(o.pstep, swf_q_.f, swf_q_.valid, regs.rehome, lerr_q_,
                                              regs.period, regs.mark_len);
-        rep_q3_ = rep_q2_;
-        rep_q2_.out_pos = o.out_pos;
-        rep_q2_.mark = o.rep_mark;
+        dig_q3_ = dig_q2_;
+        dig_q2_ = dig_q1_;
         o.ostep = rep.ostep;
-        if (!rep.held) {  // (held: the other rephase outputs are those out_ holds)
+        if (!rep.held) {  // (held: the other rephase outputs are those out_ holds, dig_q1_ too)
+            dig_q1_ = dig_levels(rep.out_pos, rep.mark);
             o.stage = rep.stage;
             o.homed = rep.homed;
             o.out_pos = rep.out_pos;
@@ -399,11 +402,20 @@ private:
     input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t swf_q_;
     bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
     bool dec_alarm_;  // the decoder's part of alarm: lerr_alarm || illegal_st || ovs_st (out_)
-    struct rep_tap {         // the two rephase outputs the digital outputs use, calls t-2, t-3
-        pos_t out_pos = 0;
-        bool mark = false;
+    // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
+    // mark twice), in axis_out's order
+    struct dig_tap {
+        bool ref_mark = false, qa = false, qb = false, qz = false;
     };
-    rep_tap rep_q2_, rep_q3_;
+    static dig_tap dig_levels(pos_t out_pos, bool mark) {
+        dig_tap d;
+        quad_levels(out_pos, d.qa, d.qb);
+        d.ref_mark = mark;
+        d.qz = mark;
+        return d;
+    }
+    // of the rephase outputs in out_ (call t-1), and of calls t-2, t-3
+    dig_tap dig_q1_, dig_q2_, dig_q3_;
     period_t period_q_ = 0;  // period register of the previous call
     ratio_t ratio_h_ = laserax_top_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
     offset_t offset_h_ = 0;                           // comp_offset in force
