@@ -117,6 +117,7 @@ public:
         z0_ = false;
         h_ = false;
         w_init_ = false;
+        qk_ = false;
         u_ = 0;
         len_ = 0;
         mark_ = false;
@@ -135,8 +136,8 @@ public:
         //    t, v, k, bs, at_last (formed from held registers and P), the stage-1 window state and
         //    the switch samples (a clock enable of the rest; issue 13: simulation speed; same
         //    outputs)
-        if (pstep == 0 && lag_ == 0 && w_init_ && !dnew_ && !first_ && !rehome && !unhome &&
-            !(sw && !sw_prev_ && sw_seen_)) {
+        //    (qk_: the register part of the condition, lag = 0, w_init, !dnew, !first)
+        if (pstep == 0 && qk_ && !rehome && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
             if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
                 t_ = cfg::br_t(cfg::br_t(num_) + k_);
                 v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
@@ -366,6 +367,7 @@ private:
         o.adj = adj_;
         o.d = dnew_ ? d_of(wa_, dm_, pp) : d_;
         o.homed = stage_ == cfg::STAGE_HOMED;
+        qk_ = lag_ == 0 && w_init_ && !dnew_ && !first_;
         return o;
     }
 
@@ -439,6 +441,9 @@ private:
     cfg::lag_t lag_;
     cfg::ph_t w_;
     bool t1_, z0_, h_, w_init_;
+    // lag_ == 0 && w_init_ && !dnew_ && !first_, formed at the end of every full call (step_run,
+    // the only one that changes them) and in reset: the register part of the quiet-call test
+    bool qk_;
     pos_t u_;
     cfg::p_t len_;
     bool mark_;        // the mark
