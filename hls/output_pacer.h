@@ -95,25 +95,28 @@ public:
 
     out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
         // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
-        const bool hi_neg = hi_ < 0;
-        bool h_zero = false;  // hi + cq == 0
-        bool h_neg = false;   // hi + cq < 0
-        if (cq_ == 0) {
-            h_zero = hi_ == 0;
-            h_neg = hi_neg;
-        } else if (cq_ == 1) {
-            h_zero = hi_ == -1;
-            h_neg = hi_neg && hi_ != -1;
-        } else if (cq_ == 2) {
-            h_zero = hi_ == -2;
-            h_neg = hi_neg && hi_ != -1 && hi_ != -2;
-        } else {
-            h_zero = hi_ == 1;
-            h_neg = hi_neg || hi_ == 0;
-        }
-        const bool x_nz = !(h_zero && lo_ == 0);
+        // (the trees are read only with timer = 0 and e_prev = 0: formed only then)
         step_t emit = 0;
-        if (timer_ == 0 && e_prev_ == 0 && x_nz) emit = h_neg ? step_t(-1) : step_t(1);
+        if (timer_ == 0 && e_prev_ == 0) {
+            const bool hi_neg = hi_ < 0;
+            bool h_zero = false;  // hi + cq == 0
+            bool h_neg = false;   // hi + cq < 0
+            if (cq_ == 0) {
+                h_zero = hi_ == 0;
+                h_neg = hi_neg;
+            } else if (cq_ == 1) {
+                h_zero = hi_ == -1;
+                h_neg = hi_neg && hi_ != -1;
+            } else if (cq_ == 2) {
+                h_zero = hi_ == -2;
+                h_neg = hi_neg && hi_ != -1 && hi_ != -2;
+            } else {
+                h_zero = hi_ == 1;
+                h_neg = hi_neg || hi_ == 0;
+            }
+            const bool x_nz = !(h_zero && lo_ == 0);
+            if (x_nz) emit = h_neg ? step_t(-1) : step_t(1);
+        }
 
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
@@ -130,23 +133,37 @@ public:
         o_held_ = b_hi_next == b_hi_ && a_lo_ == b_lo_;  // (and thr_q_: the thr of the stage above)
         b_hi_ = b_hi_next;
         b_lo_ = a_lo_;
-        const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
-        a_lo_ = cfg::lo_t(al);
-        a_cy_ = cfg::cy_t(al >> cfg::L);
-        a_hi_ = cfg::hi_t(hi_ + cq_);
-        // paced: split counter fed by e(t-1); the lower half is delayed one call
-        p_lo_d_ = p_lo_;
-        p_hi_ = cfg::phi_t(p_hi_ + p_cy_);
-        const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
-        p_lo_ = cfg::plo_t(ps);
-        p_cy_ = cfg::cy_t(ps >> cfg::LP);
+        // (nc: no count left in the previous call and no carry pending, e_prev = cq = p_cy = 0;
+        // then the sums below are the plain registers: lo - 0 = lo in 0 .. 2^L - 1 (a_cy = 0),
+        // hi + 0, p_lo + 0 (p_cy = 0), p_hi + 0; and with delta = add = 0 too X holds (t = lo,
+        // cq = 0). The same values, without the wraps: issue 13, simulation speed)
+        const bool nc = e_prev_ == 0 && cq_ == 0 && p_cy_ == 0;
+        if (nc) {
+            a_lo_ = lo_;
+            a_cy_ = 0;
+            a_hi_ = hi_;
+            p_lo_d_ = p_lo_;
+        } else {
+            const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
+            a_lo_ = cfg::lo_t(al);
+            a_cy_ = cfg::cy_t(al >> cfg::L);
+            a_hi_ = cfg::hi_t(hi_ + cq_);
+            // paced: split counter fed by e(t-1); the lower half is delayed one call
+            p_lo_d_ = p_lo_;
+            p_hi_ = cfg::phi_t(p_hi_ + p_cy_);
+            const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
+            p_lo_ = cfg::plo_t(ps);
+            p_cy_ = cfg::cy_t(ps >> cfg::LP);
+        }
 
         // ---- X' = X + delta + add - e_prev (split, registered carry; add joins the lower half) ----
-        const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
-        const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
-        hi_ = cfg::hi_t(hi_ + d_hi + cq_);
-        lo_ = cfg::lo_t(t);
-        cq_ = cfg::cq_t(t >> cfg::L);
+        if (!(nc && delta == 0 && add == 0)) {
+            const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
+            const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
+            hi_ = cfg::hi_t(hi_ + d_hi + cq_);
+            lo_ = cfg::lo_t(t);
+            cq_ = cfg::cq_t(t >> cfg::L);
+        }
 
         // ---- timer ----
         if (emit != 0) {
