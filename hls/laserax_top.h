@@ -323,8 +323,9 @@ private:
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         const dac_t dac_hi = chk_q_.dac_hi;
         bool clip = false;
-        o.sin = clamp_dac(dds.sin, dac_hi, clip);
-        o.cos = clamp_dac(dds.cos, dac_hi, clip);
+        const dac_t dac_lo = chk_q_.dac_lo;
+        o.sin = clamp_dac(dds.sin, dac_hi, dac_lo, clip);
+        o.cos = clamp_dac(dds.cos, dac_hi, dac_lo, clip);
         if (regs.clear) dac_clip_st_ = false;
         if (clip) dac_clip_st_ = true;
         o.dac_clip_st = dac_clip_st_;
@@ -426,6 +427,7 @@ private:
     struct reg_check {
         bool ok = false;
         dac_t dac_hi = 0;
+        dac_t dac_lo = 0;  // -dac_hi
     };
     reg_check chk_q_ = check(axis_regs{});
     bool powered_ = false;            // false until the power-up call
@@ -442,17 +444,19 @@ private:
         c.ok = axis_config_ok(r);
         // read only while ok, i.e. with dac_width in W_DAC_MIN..W_DAC_MAX (the shift is defined)
         if (c.ok) c.dac_hi = dac_t((dds_sincos_cfg::amp_t(1) << (r.dac_width - 1)) - 1);
+        c.dac_lo = dac_t(-c.dac_hi);
         return c;
     }
 
-    static dac_t clamp_dac(dac_t v, dac_t hi, bool& clip) {
+    // v clamped to lo .. hi (lo = -hi, formed with hi in check())
+    static dac_t clamp_dac(dac_t v, dac_t hi, dac_t lo, bool& clip) {
         if (v > hi) {
             clip = true;
             return hi;
         }
-        if (v < dac_t(-hi)) {
+        if (v < lo) {
             clip = true;
-            return dac_t(-hi);
+            return lo;
         }
         return v;
     }
