@@ -73,18 +73,16 @@ public:
     out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
                bool clear) {
         // the three filters settled at the pin levels (so A' = pa, B' = pb: no count, no glitch),
-        // primed and no clear: the call below holds every register but the filters' pass
-        // decisions, since / close and the laser alarm (a clock enable of the rest; issue 13:
-        // simulation speed; same outputs)
-        // (idle_key_: the pin levels and clear = 0 of such a call, packed, while primed and the three
-        // filters quiet; IDLE_NONE otherwise: one compare instead of seven tests)
+        // the laser error filter at 0, primed and no clear: the call below holds every register but
+        // the filters' pass decisions and since / close (a clock enable of the rest; issue 13:
+        // simulation speed; same outputs). (idle_key_: the pin levels and clear = 0 of such a
+        // call, packed, while primed, the three filters quiet and E = 0; IDLE_NONE otherwise: one
+        // compare instead of eight tests)
         if (idle_pack(a, b, lerr, clear) == idle_key_) {
             fa_.hold(glitch_n);
             fb_.hold(glitch_n);
             fe_.hold(glitch_n);
-            const bool lerr_q = fe_.level();
             count_since(false, min_spacing);
-            if (lerr_q) lerr_alarm_ = true;
             out_t q;
             q.step = 0;
             q.raw_count = raw_;
@@ -93,12 +91,12 @@ public:
             q.err_cnt = err_cnt_;
             q.illegal_st = illegal_st_;
             q.ovs_st = ovs_st_;
-            q.lerr = lerr_q;
+            q.lerr = false;
             q.lerr_alarm = lerr_alarm_;
             q.glitch_st = glitch_st_;
             // lerr = 0 now and in the previous call (the laser error filter held its level 0):
             // every register output is that of the previous call
-            q.held = !lerr_q;
+            q.held = true;
             return q;
         }
         const input_filter<cfg::W_GLITCH>::out_t ra = fa_.step(a, glitch_n);
@@ -144,8 +142,8 @@ public:
         if (ra.glitch || rb.glitch) glitch_st_ = true;
         if (lerr_now) lerr_alarm_ = true;
         raw_ = raw_ + step;
-        idle_key_ = (primed_ && fa_.quiet() && fb_.quiet() && fe_.quiet())
-                        ? cfg::idle_t(idle_pack(fa_.level(), fb_.level(), fe_.level(), false))
+        idle_key_ = (primed_ && fa_.quiet() && fb_.quiet() && fe_.quiet() && !fe_.level())
+                        ? cfg::idle_t(idle_pack(fa_.level(), fb_.level(), false, false))
                         : cfg::idle_t(cfg::IDLE_NONE);
 
         out_t o;
@@ -185,9 +183,9 @@ private:
     cfg::spacing_t since_;
     bool close_;  // a step in the next call is closer than min_spacing (of this call)
     bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
-    // idle_pack(A, B, E, 0) of the three filters' levels while primed_ and fa_, fb_, fe_ are quiet
-    // (settled at those levels), else IDLE_NONE (no pack equals it); formed after every full call
-    // (the only calls that change primed_ or a filter's quiet / level)
+    // idle_pack(A, B, 0, 0) of the A / B filters' levels while primed_ and fa_, fb_, fe_ are quiet
+    // (settled at those levels) with E = 0, else IDLE_NONE (no pack equals it); formed after every
+    // full call (the only calls that change primed_ or a filter's quiet / level)
     cfg::idle_t idle_key_;
 };
 
