@@ -164,6 +164,10 @@ module laserax_top #(
     reg        [15:0]   r_pace_m;
     reg        [31:0]   r_backlog_thr;
     reg        [12:0]   r_mark_len;
+    // ~mark_len for rephase's mark compares (its i_mark_len_n): the inverted operand the
+    // configuration check forms anyway (mark_n below), registered, so rephase's compare chains
+    // need no inverter of their own
+    reg        [12:0]   r_mark_len_n;
     reg        [17:0]   r_dac_hi;        // 2^(dac_width-1) - 1 of the presented dac_width (below)
     reg        [17:0]   r_amplitude;
     reg                 r_rehome;
@@ -205,6 +209,7 @@ module laserax_top #(
         r_pace_m        <= i_pace_m;
         r_backlog_thr   <= i_backlog_thr;
         r_mark_len      <= i_mark_len;
+        r_mark_len_n    <= ~i_mark_len;
         r_dac_hi        <= dac_hi_in;
         r_amplitude     <= i_amplitude;
         r_rehome        <= i_rehome;
@@ -387,7 +392,7 @@ module laserax_top #(
         .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_pstep_nx(pac_pstep_nx), .i_sw(swf_f), .i_sw_valid(swf_valid),
         .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_unhome_nx(dec_lerr_nx), .i_rehome_nx(i_rehome),
         .i_period(r_period), .i_period_m1(r_period_m1),
-        .i_period_m2(r_period_m2), .i_mark_len(r_mark_len),
+        .i_period_m2(r_period_m2), .i_mark_len(r_mark_len), .i_mark_len_n(r_mark_len_n),
         .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
         .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),
         .o_homed(rep_homed));

@@ -57,6 +57,11 @@ module rephase (
     input  wire signed [`LX_W_P:0]      i_period_m1,
     input  wire signed [`LX_W_P:0]      i_period_m2,
     input  wire [`LX_W_P-1:0]           i_mark_len,  // C - B in counts (P/4..P)
+    // ~mark_len, formed by the caller from the same value (the top: the configuration check's
+    // inverted operand, registered beside r_mark_len), so the mark compares of u with L and L + 1
+    // are carry chains without an inverted operand (one LUT per bit on the iCE40). It must equal
+    // ~i_mark_len in every call (the testbench forms it from the mark_len column).
+    input  wire [`LX_W_P-1:0]           i_mark_len_n,
     output wire signed [`LX_W_STEP-1:0] o_ostep,     // output count: -1, 0, +1
     output wire signed [`LX_W_POS-1:0]  o_out_pos,   // paced + adj
     output wire                         o_mark,      // reference mark
@@ -115,8 +120,8 @@ module rephase (
     reg                    t1_q, z0_q, w_init_q;  // w == P - 1, w == 0
     reg                    h_q;                // w >= P/2
     reg signed [W_POS-1:0] u_q, u_d;
-    reg [W_P-1:0]          len_q, len_d;
-    reg [W_P:0]            len1_q, len1_d;      // L + 1
+    reg [W_P-1:0]          nlen_q, nlen_d;      // ~L (L = mark_len at homing)
+    reg [W_P:0]            nlen1_q, nlen1_d;    // ~(L + 1) in W_P + 1 bits
     reg signed [W_POS-1:0] b_q, b_d, c_q, c_d, z_q, z_d;
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
@@ -128,8 +133,10 @@ module rephase (
     reg                    op_one_q, op_zero_q; // out_pos's low half is all ones / zero
     reg                    pa_ones_q, pa_zero_q, pa_one_q; // paced's low half is all ones / 0 / 1
     (* keep *) reg         bw_c_q, bw_z_q;     // !fwd_q, copies for the C and Z adds
+    (* keep *) reg         bw_b_q;             // !fwd_q, the copy for A + dir*P (bs)
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
     reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
+    (* keep *) reg         osd_w_q;            // osd_q, the copy for w's step chain (x_s)
     reg                    hom_q;              // this call is the homing count (from the look-ahead)
 
     // ---- position counters: x + s, s in -2..1 (a 2-bit step), as two halves --------------------
@@ -198,9 +205,10 @@ module rephase (
     wire                  t1   = t1_q;
     wire                  z0   = z0_q;
     wire signed [W_X-1:0] w0x  = $signed({{(W_X-W_PH){1'b0}}, w0});
-    // one chain w0 +/- 1 (the step from the register osd_q); the wrap and move selects are
-    // formed from registers beside it, so one select level follows the chain
-    wire [W_PH-1:0]       x_s  = w0 + {{(W_PH-1){edn}}, 1'b1};
+    // one chain w0 +/- 1 (the step from osd_w_q, a copy of osd_q kept beside the chain); the
+    // wrap and move selects are formed from registers beside it, so one select level follows
+    // the chain
+    wire [W_PH-1:0]       x_s  = w0 + {{(W_PH-1){osd_w_q}}, 1'b1};
     wire signed [W_X-1:0] p_m1 = i_period_m1;     // px - 1
     wire signed [W_X-1:0] p_m2 = i_period_m2;     // px - 2
     wire                  w_wr = (eup && t1) || (edn && z0);             // wrap: 0 up, P - 1 down
@@ -258,7 +266,7 @@ module rephase (
     // add and a select of the high part: bs's, or bs's + dir (bs_pm, a register formed from
     // bs in the calls before: exact from the third call after A), by the low part's carry
     // (forward) or its absence (backward)
-    wire                    bwd_x  = !fwd_q;
+    wire                    bwd_x  = bw_b_q;   // !fwd_q (a register: no inverter in front of the chain)
     wire [W_CZ:0]           bs_lo  = {1'b0, a_q[W_CZ-1:0]} +
                                      {1'b0, period_x[W_CZ-1:0] ^ {W_CZ{bwd_x}}} + {{W_CZ{1'b0}}, bwd_x};
     wire [W_POS-W_CZ-1:0]   bs_hi  = a_q[W_POS-1:W_CZ] + {(W_POS-W_CZ){bwd_x}} +
@@ -336,14 +344,18 @@ module rephase (
     // 6. mark test on u before the count: u' = u + s in [0, L]. Without a count it is the mark
     //    register itself (in stage 3 mark_q is the test of u_q). For a count (s = +1: u in
     //    [-1, L - 1]; s = -1: u in [1, L + 1]) the tests are registers (mp_q, mn_q) formed in the
-    //    previous call from u_q and len_q: u and L do not change in the call before a count
+    //    previous call from u_q and L: u and L do not change in the call before a count
     //    (real counts are >= 2 calls apart, and homing is a count), so no compare precedes the
-    //    mark register
+    //    mark register. L is held inverted (nlen_q = ~L, nlen1_q = ~(L + 1)), so each compare is
+    //    the carry of a chain without an inverted operand: u < L <=> no carry of u + ~L + 1,
+    //    u <= L + 1 <=> no carry of u + ~(L + 1) (W_P + 1 bits)
     wire        u_hz   = u_q[W_POS-1:W_P+1] == {(W_POS-W_P-1){1'b0}}; // 0 <= u < 2^14
     wire        u_m1   = u_q == {W_POS{1'b1}};                         // u == -1
     wire [W_P:0] u_lo  = u_q[W_P:0];
-    wire        u_lt   = u_lo < {1'b0, len_q};
-    wire        u_le1  = u_lo <= len1_q;
+    wire [W_P+1:0] lt_s = {1'b0, u_lo} + {2'b01, nlen_q} + {{(W_P+1){1'b0}}, 1'b1};
+    wire [W_P+1:0] le_s = {1'b0, u_lo} + {1'b0, nlen1_q};
+    wire        u_lt   = !lt_s[W_P+1];
+    wire        u_le1  = !le_s[W_P+1];
     wire        u_ge1  = u_lo != {(W_P+1){1'b0}};
     wire        mp_n   = u_m1 || (u_hz && u_lt);                      // u + 1 in [0, L]
     wire        mn_n   = u_hz && u_ge1 && u_le1;                      // u - 1 in [0, L]
@@ -388,8 +400,8 @@ module rephase (
         b_d        = b_q;
         c_d        = c_q;
         z_d        = z_q;
-        len_d      = len_q;
-        len1_d     = len1_q;
+        nlen_d     = nlen_q;
+        nlen1_d    = nlen1_q;
         wa_d       = wa_q;
         dm_d       = dm_q;
         dnew_d     = 1'b0;
@@ -444,8 +456,8 @@ module rephase (
             b_d     = bs_q;
             c_d     = c_hom;
             z_d     = z_hom;
-            len_d   = i_mark_len;
-            len1_d  = {1'b0, i_mark_len} + 1'b1;
+            nlen_d  = i_mark_len_n;
+            nlen1_d = {1'b1, i_mark_len_n} + {(W_P+1){1'b1}};   // ~L - 1 = ~(L + 1)
         end
         // tr' > 0 without a compare after the tr add (tr >= 0 always: the step back past A
         // leaves with tr' = 0): 0 at A and on that step; +1 gives tr' >= 1; -1 gives tr' > 0 iff
@@ -509,6 +521,7 @@ module rephase (
             bs_pm_q    <= {(W_POS-W_CZ){1'b0}};
             fwd_q      <= 1'b1;
             bw_c_q     <= 1'b0;
+            bw_b_q     <= 1'b0;
             bw_z_q     <= 1'b0;
             d_q        <= {W_PH{1'b0}};
             wa_q       <= {W_PH{1'b0}};
@@ -530,8 +543,8 @@ module rephase (
             h_q        <= 1'b0;
             w_init_q   <= 1'b0;
             u_q        <= {W_POS{1'b0}};
-            len_q      <= {W_P{1'b0}};
-            len1_q     <= {{W_P{1'b0}}, 1'b1};  // L + 1 of L = 0
+            nlen_q     <= {W_P{1'b1}};              // ~L of L = 0
+            nlen1_q    <= {{W_P{1'b1}}, 1'b0};      // ~(L + 1) of L = 0
             b_q        <= {W_POS{1'b0}};
             c_q        <= {W_POS{1'b0}};
             z_q        <= {W_POS{1'b0}};
@@ -558,6 +571,7 @@ module rephase (
             bs_pm_q    <= bs_pm_n;
             fwd_q      <= fwd_d;
             bw_c_q     <= !fwd_d;
+            bw_b_q     <= !fwd_d;
             bw_z_q     <= !fwd_d;
             d_q        <= d_d;
             wa_q       <= wa_d;
@@ -579,8 +593,8 @@ module rephase (
             h_q        <= h_n;
             w_init_q   <= 1'b1;
             u_q        <= u_d;
-            len_q      <= len_d;
-            len1_q     <= len1_d;
+            nlen_q     <= nlen_d;
+            nlen1_q    <= nlen1_d;
             b_q        <= b_d;
             c_q        <= c_d;
             z_q        <= z_d;
@@ -603,6 +617,7 @@ module rephase (
         // a reset call)
         osu_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n == 2'sd1) : (i_pstep_nx == 2'sd1);
         osd_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n[1]) : i_pstep_nx[1];
+        osd_w_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n[1]) : i_pstep_nx[1];
         as_q  <= {i_pstep_nx == 2'sd0 && !i_rst && lag_n[1],
                   i_pstep_nx == 2'sd0 && !i_rst && lag_n != 2'sd0};
         re_q <= i_rehome_nx;
@@ -720,6 +735,7 @@ module rephase (
     // the RTL's pending count and mark length extended to positions; tr from the RTL's paced
     wire [W_POS-1:0] f_lagx   = {{(W_POS-W_LAG){lag_q[W_LAG-1]}}, lag_q};
     wire [W_POS-1:0] f_ta     = f_dx(f_dir, paced_q - f_a);
+    wire [W_P-1:0]   len_q    = ~nlen_q;                          // L
     wire [W_POS-1:0] f_lenx   = {{(W_POS-W_P){1'b0}}, len_q};
     wire [W_P-1:0]   f_plag   = f_stp(f_po, lag_q[1:0], f_per);  // (out_pos + lag) mod P
 
@@ -807,6 +823,7 @@ module rephase (
         assume(!f_init || (i_unhome == f_unx && i_rehome == f_rnx));
         assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart
         assume(i_mark_len >= f_p4 && i_mark_len <= f_per);
+        assume(i_mark_len_n == ~i_mark_len);
 
         if (f_init) begin
             // the registered level copies are this call's unhome / rehome
@@ -818,6 +835,7 @@ module rephase (
             assert(us_q == {s_neg, s_pos || s_neg});
             assert(osu_q == (i_pstep == 2'sd1 || (i_pstep == 2'sd0 && lag_q == 2'sd1)));
             assert(osd_q == (i_pstep == -2'sd1 || (i_pstep == 2'sd0 && lag_q[1])));
+            assert(osd_w_q == osd_q);
             assert(as_q == {i_pstep == 2'sd0 && lag_q[1], i_pstep == 2'sd0 && lag_q != 2'sd0});
             // the paced stream, the stage machine and its inputs follow the text
             assert(paced_q == f_paced);
@@ -827,9 +845,9 @@ module rephase (
             // call; lag = adj_tgt - adj is -1, 0 or +1, non-zero only right after a real count
             // (so it is paid out in the next call), its sign register exact
             assert(out_pos_q == paced_q + adj_q);
-            assert(bw_c_q == !fwd_q && bw_z_q == !fwd_q);
+            assert(bw_c_q == !fwd_q && bw_z_q == !fwd_q && bw_b_q == !fwd_q);
             assert(hom_q == (in2 && s_pos && at_last_q));
-            assert(len1_q == {1'b0, len_q} + 1'b1);
+            assert(nlen1_q == ~({1'b0, len_q} + 1'b1));
             // the mark tests of a count: those of u and L, which did not change in a call without
             // a count (homing is a count)
             if (!f_pnz) assert(mp_q == (u_q >= -38'sd1 && u_q < f_lq) && mn_q == (u_q >= 38'sd1 && u_q <= f_lq + 38'sd1));
@@ -934,7 +952,7 @@ module rephase (
                 assert(b_q == f_b && f_b == f_a + f_dx(f_dir, f_perx));
                 assert(z_q - a_q == f_dx(f_dir, f_perx + {{(W_POS-W_P){1'b0}}, f_p4}));
                 assert(len_q == f_len && c_q == b_q + f_dx(f_dir, f_lenx));
-                assert(len1_q == {1'b0, len_q} + 1'b1);
+                assert(nlen1_q == ~({1'b0, len_q} + 1'b1));
                 // the adjustment is fixed from homing on: the output travels exactly as the
                 // paced stream (out_pos = paced + adj, adj + lag = its value at homing, lag
                 // paid out in the call after a count)

@@ -237,8 +237,10 @@ BLOCKS = [
             OUT("adj", 38, S),
             OUT("homed", 1),
         ],
-        # P - 1 and P - 2 of the period column (the top forms them in its register stage)
+        # P - 1 and P - 2 of the period column, ~mark_len of the mark_len column (the top forms
+        # them in its register stage)
         unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2),
+                IN("mark_len_n", 13, idle=8191),
                 IN("pstep_nx", 2, S), IN("unhome_nx", 1), IN("rehome_nx", 1)],
         extra=dict(
             decls="""\
@@ -249,6 +251,7 @@ BLOCKS = [
             apply="""\
             i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
+            i_mark_len_n = ~i_mark_len;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
             i_pstep_nx = @next.pstep@;
             i_unhome_nx = @next.unhome@;

@@ -56,6 +56,7 @@ module tb_rephase;
     reg  [12:0] i_mark_len;
     reg  [13:0] i_period_m1;   // idle (not in the vectors)
     reg  [13:0] i_period_m2;   // idle (not in the vectors)
+    reg  [12:0] i_mark_len_n;   // idle (not in the vectors)
     reg  [1:0] i_pstep_nx;   // idle (not in the vectors)
     reg  i_unhome_nx;   // idle (not in the vectors)
     reg  i_rehome_nx;   // idle (not in the vectors)
@@ -83,6 +84,7 @@ module tb_rephase;
         .i_mark_len(i_mark_len),
         .i_period_m1(i_period_m1),
         .i_period_m2(i_period_m2),
+        .i_mark_len_n(i_mark_len_n),
         .i_pstep_nx(i_pstep_nx),
         .i_unhome_nx(i_unhome_nx),
         .i_rehome_nx(i_rehome_nx),
@@ -116,6 +118,7 @@ module tb_rephase;
             i_mark_len = row[280:268];
             i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
+            i_mark_len_n = ~i_mark_len;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
             i_pstep_nx = row_nx[317:316];
             i_unhome_nx = row_nx[300:300];
@@ -134,6 +137,7 @@ module tb_rephase;
             i_mark_len = 13'd0;
             i_period_m1 = 14'd16383;
             i_period_m2 = 14'd16382;
+            i_mark_len_n = 13'd8191;
             i_pstep_nx = 2'd0;
             i_unhome_nx = 1'd0;
             i_rehome_nx = 1'd0;
