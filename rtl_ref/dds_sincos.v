@@ -140,13 +140,15 @@ module dds_sincos #(
     wire s_wdn     = ostep_neg && at_0;
     wire s_same    = !ostep_pos && !ostep_neg;
     wire [W_R-1:0] q_m1 = i_qtr_m1;                    // P/4 - 1
+    // P/4 - 2: P/4 - 1 with bit 0 cleared (P/4 - 1 is odd: P is a multiple of 8), no decrement
+    wire [W_R-1:0] q_m2 = {q_m1[W_R-1:1], 1'b0};
     wire [1:0]     q_d   = s_wup ? q_q + 2'd1 : (s_wdn ? q_q - 2'd1 : q_q);
     wire [W_R-1:0] r_d   = ({W_R{s_same}} & r_q) | ({W_R{s_inc}} & rp1_q) | ({W_R{s_dec}} & rm1_q)
                          | ({W_R{s_wdn}} & q_m1);                                // s_wup: 0
     wire [W_R-1:0] rp1_d = ({W_R{s_same}} & rp1_q) | ({W_R{s_inc}} & (rp1_q + one)) | ({W_R{s_dec}} & r_q)
                          | ({W_R{s_wdn}} & quarter) | ({W_R{s_wup}} & one);
     wire [W_R-1:0] rm1_d = ({W_R{s_same}} & rm1_q) | ({W_R{s_inc}} & r_q) | ({W_R{s_dec}} & (rm1_q - one))
-                         | ({W_R{s_wdn}} & (q_m1 - one)) | {W_R{s_wup}};
+                         | ({W_R{s_wdn}} & q_m2) | {W_R{s_wup}};
     // r' + 1 == P/4, registered for the next call's up count: equalities of registers with P/4 and
     // P/4 - 1 beside the candidates (r + 1 + 1 == P/4 is r + 1 == P/4 - 1), selected by the step
     wire           wrap_d = (s_same && wrap_q) || (s_inc && rp1_q == q_m1) || (s_dec && r_q == quarter)
@@ -155,8 +157,11 @@ module dds_sincos #(
     // P/4 - (r + 1) = P/4 + ~r: from the register nr = ~r kept beside r (rp1 = r + 1 mod 2^W_R
     // always), so no inverted operand sits in front of that chain (one LUT per bit on the iCE40)
     wire [W_R:0]   m_same = {1'b0, quarter} + {1'b0, nr_q} + {{W_R{1'b0}}, 1'b1};   // P/4 - r
+    // P/4 - (r - 1) = (P/4 + 1) + ~r + 1, with P/4 + 1 = P/4 with bit 0 set (P/4 is even: P is a
+    // multiple of 8), so no inverted operand (~(r - 1)) sits in front of that chain either
+    wire [W_R:0]   m_dec  = {1'b0, quarter[W_R-1:1], 1'b1} + {1'b0, nr_q} + {{W_R{1'b0}}, 1'b1};
     wire [W_R-1:0] m_d   = ({W_R{s_same}} & m_same[W_R-1:0]) | ({W_R{ostep_pos}} & (quarter + nr_q))
-                         | ({W_R{s_dec}} & (quarter - rm1_q)) | ({W_R{s_wdn}} & one);
+                         | ({W_R{s_dec}} & m_dec[W_R-1:0]) | ({W_R{s_wdn}} & one);
     // reset: the phase-0 words (r' < P/4 <= 1024: the address is the low W_ADDR bits)
     wire [W_ADDR-1:0] a_dir = {W_ADDR{!i_rst}} & r_d[W_ADDR-1:0];
     wire [W_ADDR-1:0] a_mir = m_d[W_ADDR-1:0];

@@ -154,7 +154,8 @@ module error_map (
     reg                     a_c;
     reg        [4:0]        a_kc;
     reg        [W_FRAC-1:0] a_u;
-    reg        [W_ADDR-1:0] a_last;
+    reg        [W_ADDR-1:0] na_last;   // ~last, last = n - 1 (the inversion of the decrement is
+                                        // free; stage B's compare then has no inverted operand)
     reg                     a_bank, a_act, a_err;
     wire                    sh = a_kc != 5'd0 && !ph0 && !ph1;   // S: calls 2 .. 21 of the sample
     always @(posedge i_clk) begin
@@ -164,7 +165,7 @@ module error_map (
             a_phi  <= {i_p[37], i_p[37:W_LO]};
             a_ohi  <= {ng_origin[37], ng_origin[37:W_LO]};
             a_kc   <= g_k;
-            a_last <= n_m1[W_ADDR-1:0];
+            na_last <= ~n_m1[W_ADDR-1:0];
             a_bank <= i_bank_sel;
             a_u    <= {W_FRAC{1'b0}};
         end else if (ph1) begin
@@ -186,9 +187,12 @@ module error_map (
     // ---- stage B (every call; the sample's in call t+22): the shifted offset's fields, the
     // compares with last, the even addresses, all from registers ---------------------------------
     wire [W_ADDR:0] ai_p1   = {1'b0, a_off[W_ADDR-1:0]} + {{W_ADDR{1'b0}}, 1'b1};
-    wire [W_ADDR:0] last_p1 = {1'b0, a_last} + {{W_ADDR{1'b0}}, 1'b1};
+    // last + 1 = ~(~last - 1) (W_ADDR + 1 bits), from ~last without an inverted operand
+    wire [W_ADDR:0] last_p1 = ~({1'b1, na_last} + {(W_ADDR+1){1'b1}});
+    // i >= last: the carry of i + ~last + 1
+    wire [W_ADDR:0] ge_s    = {1'b0, a_off[W_ADDR-1:0]} + {1'b0, na_last} + {{W_ADDR{1'b0}}, 1'b1};
     reg                      b_neg, b_hi, b_ge, b_eq, b_u0, b_bank, b_act, b_err;
-    reg        [W_ADDR-1:0]  b_i, b_last;
+    reg        [W_ADDR-1:0]  b_i, nb_last;                 // nb_last: ~last
     reg        [W_HADDR-1:0] b_ie, b_le;             // (i + 1) / 2, (last + 1) / 2
     reg        [W_FRAC-1:0]  b_u;
     always @(posedge i_clk) begin
@@ -196,12 +200,12 @@ module error_map (
         b_hi   <= |a_off[W_OFF-2:W_ADDR];            // floor(off / 2^k) beyond every address
         b_i    <= a_off[W_ADDR-1:0];
         b_u    <= a_u;
-        b_ge   <= a_off[W_ADDR-1:0] >= a_last;
-        b_eq   <= a_off[W_ADDR-1:0] == a_last;
+        b_ge   <= ge_s[W_ADDR];
+        b_eq   <= a_off[W_ADDR-1:0] == ~na_last;
         b_u0   <= a_u == {W_FRAC{1'b0}};
         b_ie   <= ai_p1[W_HADDR:1];
         b_le   <= last_p1[W_HADDR:1];
-        b_last <= a_last;
+        nb_last <= na_last;
         b_bank <= a_bank;
         if (i_rst) begin
             b_act <= 1'b0;
@@ -214,7 +218,7 @@ module error_map (
 
     // ---- stage C (every call): clamp (multiplexers only), the two RAM addresses (registered) ------
     wire                above  = !b_neg && (b_hi || b_ge);
-    wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? b_last : b_i;
+    wire [W_ADDR-1:0]   ci     = b_neg ? {W_ADDR{1'b0}} : above ? ~nb_last : b_i;
     wire [W_FRAC-1:0]   cu     = (b_neg || above) ? {W_FRAC{1'b0}} : b_u;
     wire                cinr   = !b_neg && (!above || (!b_hi && b_eq && b_u0));
     wire [W_HADDR-1:0]  ea     = b_neg ? {W_HADDR{1'b0}} : above ? b_le : b_ie;   // (i+1)/2
@@ -360,11 +364,19 @@ module error_map (
     // M's two enables (load, step) are flip-flops, decoded in the call before from the next
     // phase, so the enables of its ~70 flip-flops do not wait for a phase subtract and compare
     wire [4:0]              ph_nx  = i_rst ? 5'd0 : ph + 5'd1;
-    wire [4:0]              m_j_nx = ph_nx - (PH_LOAD + 5'd1);
     reg                     m_ld_q, m_step_q;                  // ph == PH_LOAD, m_j < N_STEP
+    // m_j < N_STEP of the next call <=> ph_nx in 27 .. 31, 0 .. 15 (PH_LOAD + 1 .. PH_LOAD +
+    // N_STEP mod 32), as bit logic: a subtract and a compare with a constant would be two carry
+    // chains (the compare with an inverter per bit) behind the phase increment
+    wire                    m_step_nx = !ph_nx[4] || (ph_nx[3] && (ph_nx[2] || (ph_nx[1] && ph_nx[0])));
+    generate
+        if (PH_LOAD != 5'd26 || N_STEP != 21) begin : g_bad_m_step
+            error_map_m_step_nx_is_written_for_27_to_15 u_param_error ();
+        end
+    endgenerate
     always @(posedge i_clk) begin
         m_ld_q   <= ph_nx == PH_LOAD;
-        m_step_q <= m_j_nx < N_STEP;
+        m_step_q <= m_step_nx;
     end
     wire signed [W_MHI-1:0] m_add  = m_v[0] ? {m_diff[W_DIFF-1], m_diff} : {W_MHI{1'b0}};
     wire signed [W_MHI-1:0] m_s    = m_hi + m_add;

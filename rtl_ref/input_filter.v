@@ -67,7 +67,9 @@ module input_filter #(
     // and the register nc2 = ~(cnt + 2) as they are (one chain, no add or inverter before it)
     localparam [W_CNT:0] C2_ZERO  = 2;          // cnt + 2 of cnt = 0
     localparam [W_CNT:0] NC2_ZERO = ~C2_ZERO;   // nc2 of cnt = 0
-    wire             rdy_0   = {1'b0, i_n} <= {{W_CNT{1'b0}}, 1'b1};
+    // N <= 1 as a zero test of N's bits above bit 0 (a compare with the constant 1 is mapped to a
+    // carry chain with an inverter per bit of N on the iCE40)
+    wire             rdy_0   = (i_n >> 1) == {W_CNT{1'b0}};
     wire [W_CNT+1:0] n_gt_s  = {2'b00, i_n} + {1'b0, nc2_q};
     wire             rdy_inc = !n_gt_s[W_CNT+1];
 

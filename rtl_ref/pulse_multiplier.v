@@ -152,8 +152,33 @@ module pulse_multiplier (
     // the next count, so every mux select below comes straight from a flip-flop.
     wire last  = f_last_q;                                  // cnt == K_REBASE: T applied
     wire start = (!busy_q || last) && pend_q;
-    wire pend_d = !start && ((i_ratio != r_use_q) || (i_comp_offset != off_tgt_q));
+    // the pair in force differs from the target pair: a 101-bit equality as 51 bit-pair equalities
+    // (one LUT each), ANDed on three 17-long carry chains (the carry of E + 1 is the AND of E's
+    // bits: no LUT tree behind the pair LUTs)
+    localparam integer W_CMP = W_RATIO + W_OFFSET;      // 101
+    localparam integer N_EQ  = 51;                      // bit pairs (the last one padded)
+    wire [2*N_EQ-1:0] cmp_a = {{(2*N_EQ-W_CMP){1'b0}}, i_ratio, i_comp_offset};
+    wire [2*N_EQ-1:0] cmp_b = {{(2*N_EQ-W_CMP){1'b0}}, r_use_q, off_tgt_q};
+    wire [N_EQ-1:0]   eq2;
+    genvar gq;
+    generate
+        for (gq = 0; gq < N_EQ; gq = gq + 1) begin : g_eq2
+            assign eq2[gq] = cmp_a[2*gq+1:2*gq] == cmp_b[2*gq+1:2*gq];
+        end
+    endgenerate
+    wire [17:0] eq_c0 = {1'b0, eq2[16:0]}  + 18'd1;
+    wire [17:0] eq_c1 = {1'b0, eq2[33:17]} + 18'd1;
+    wire [17:0] eq_c2 = {1'b0, eq2[50:34]} + 18'd1;
+    wire pend_d = !start && !(eq_c0[17] && eq_c1[17] && eq_c2[17]);
     wire             busy_d = start || (busy_q && !last);
+    // C_MUL0 <= cnt_d < C_MUL0 + MUL_STEPS (4 <= cnt_d < 36, 6-bit cnt_d) as bit logic: a compare
+    // with a constant is mapped to a carry chain with an inverter per bit on the iCE40
+    wire             mul_rng = (cnt_d[5:2] != 4'd0) && (!cnt_d[5] || cnt_d[4:2] == 3'd0);
+    generate
+        if (C_MUL0 != 4 || MUL_STEPS != 32 || W_CNT != 6) begin : g_bad_mul_rng
+            pulse_multiplier_mul_rng_is_written_for_4_to_35 u_param_error ();
+        end
+    endgenerate
     wire [W_CNT-1:0] cnt_d  = start ? {{(W_CNT-1){1'b0}}, 1'b1} : (busy_q && !last) ? cnt_q + 1'b1 : {W_CNT{1'b0}};
     // dR = R_tgt - R_old (38 bits) from registers, in two halves (calls C_DR0, C_DR1), each
     // one plain chain with a registered carry
@@ -251,7 +276,7 @@ module pulse_multiplier (
             f_s_q[2]     <= busy_d && cnt_d == C_S0 + 2;
             f_s_q[3]     <= busy_d && cnt_d == C_S0 + 3;
             f_pre0_q     <= busy_d && cnt_d == C_MUL0 - 1;
-            f_mul_q      <= busy_d && cnt_d >= C_MUL0 && cnt_d < C_MUL0 + MUL_STEPS;
+            f_mul_q      <= busy_d && mul_rng;
             f_mul_pre_q  <= busy_d && cnt_d == C_MUL0 + MUL_STEPS - 2;  // next step is the sign bit
             f_x_q[0]     <= busy_d && cnt_d == C_X0;
             f_x_q[1]     <= busy_d && cnt_d == C_X0 + 1;

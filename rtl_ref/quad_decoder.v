@@ -96,7 +96,9 @@ module quad_decoder (
     localparam [W_SPACING:0] SP2_MAX  = {1'b0, SINCE_MAX} + {{(W_SPACING-1){1'b0}}, 2'd2};
     localparam [W_SPACING:0] NSP2_MAX = ~SP2_MAX;
     localparam [W_SPACING:0] NSP2_TWO = ~{{(W_SPACING-1){1'b0}}, 2'd2};
-    wire                   close_0   = {{(W_SPACING-1){1'b0}}, 1'b1} < i_min_spacing;
+    // 1 < min_spacing as a test of min_spacing's bits above bit 0 (a compare with the constant
+    // 1 is mapped to a carry chain with an inverter per bit on the iCE40)
+    wire                   close_0   = (i_min_spacing >> 1) != {W_SPACING{1'b0}};
     wire [W_SPACING+1:0]   close_s   = {2'b00, i_min_spacing} + {1'b0, nsp2_q};
     wire                   close_inc = close_s[W_SPACING+1];
 

@@ -175,7 +175,7 @@ MUTATIONS=(
   "rep_tr_pos|rephase.v|rephase|s/(tr_pos_q \&\& !(s_neg \&\& tr_is1))/tr_pos_q/"
   "rep_div_carry|formal/fv_bresenham.v|rephase_div|s/wire        cy  = rup >= {1'b0, i_per};/wire        cy  = rup > {1'b0, i_per};/"
   "rep_div_int|formal/fv_bresenham_int.smt2|rephase_div|s/(ite (< r d) (- (+ r P) d) (- r d))))/(ite (<= r d) (- (+ r P) d) (- r d))))/"
-  "em_step_early|error_map.v|error_map|s/m_step_q <= m_j_nx < N_STEP;/m_step_q <= m_j < N_STEP;/"
+  "em_step_early|error_map.v|error_map|s/m_step_q <= m_step_nx;/m_step_q <= m_j < N_STEP;/"
   "em_off_gate|error_map.v|error_map|s/g_corr <= m_act ? g_x\[F+W_C-1:F\] : {W_C{1'b0}};/g_corr <= g_x[F+W_C-1:F];/"
   "em_map_en|error_map.v|error_map|s/a_act <= i_map_en \&\& i_homed \&\& geom_ok;/a_act <= i_homed \&\& geom_ok;/"
   "em_delta_sign|error_map.v|error_map|s/delta_q   <= {g_corr\[W_C-1\], g_corr} - {corr_q\[W_C-1\], corr_q};/delta_q   <= {g_corr[W_C-1], g_corr} - {1'b0, corr_q};/"
