@@ -152,7 +152,7 @@ module dds_sincos #(
     // r' + 1 == P/4, registered for the next call's up count: equalities of registers with P/4 and
     // P/4 - 1 beside the candidates (r + 1 + 1 == P/4 is r + 1 == P/4 - 1), selected by the step
     wire           wrap_d = (s_same && wrap_q) || (s_inc && rp1_q == q_m1) || (s_dec && r_q == quarter)
-                          || s_wdn || (s_wup && quarter == one);
+                          || s_wdn;   // (after the up wrap r' + 1 = 1 < P/4: P >= 8)
     // P/4 - r' (don't-care when r' = 0: the amplitude is used)
     // P/4 - (r + 1) = P/4 + ~r: from the register nr = ~r kept beside r (rp1 = r + 1 mod 2^W_R
     // always), so no inverted operand sits in front of that chain (one LUT per bit on the iCE40)

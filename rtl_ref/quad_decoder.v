@@ -151,7 +151,10 @@ module quad_decoder (
         // events set their flags (after the clear)
         if (illegal_d) begin
             illegal_st_d = 1'b1;
-            if (err_cnt_d != ERRCNT_MAX) err_cnt_d = err_cnt_d + {{(W_ERRCNT-1){1'b0}}, 1'b1};
+            // (the increment of the register itself, the clear only selects: cleared and
+            // counted in one call gives 1)
+            if (i_clear) err_cnt_d = {{(W_ERRCNT-1){1'b0}}, 1'b1};
+            else if (err_cnt_q != ERRCNT_MAX) err_cnt_d = err_cnt_q + {{(W_ERRCNT-1){1'b0}}, 1'b1};
         end
         if (ovs_d) ovs_st_d = 1'b1;
         if (fa_glitch_d || fb_glitch_d) glitch_st_d = 1'b1;

@@ -103,7 +103,7 @@ module rephase (
     reg                    bs_c_q;             // carry of bs's low half (previous call)
     reg [W_POS-W_CZ-1:0]   bs_pm_q;            // bs's high part (above W_CZ) + dir
     reg                    fwd_q, fwd_d;
-    reg [W_PH-1:0]         d_q;
+    reg [W_PH-1:0]         d_q, d_d;
     reg [W_PH-1:0]         wa_q, wa_d;         // w at A
     reg [1:0]              dm_q, dm_d;         // the form of d at A (see d_new)
     reg                    dnew_q, dnew_d;     // A was in the previous call: d not yet loaded
@@ -257,8 +257,7 @@ module rephase (
     // the look-ahead inputs, so the load enable of B, C, Z, L and the selects behind it start at a
     // flip-flop
     wire homing = hom_q;
-    // tr + s as one chain with the sign-extended step (s_pos and s_neg never both 1)
-    wire signed [W_TR-1:0] tr_s = tr_q + {{(W_TR-1){s_neg}}, s_pos || s_neg};
+    wire signed [W_TR-1:0] tr_s = tr_q + (s_pos ? 1 : 0) - (s_neg ? 1 : 0);
     // A + dir*P for B (formed every call from registers; used at homing, >= 2P calls after A),
     // as x + dir*y = x + (y ^ bwd) + bwd (the inversion is a LUT in front of the chain, the
     // carry-in the chain's own), in two parts: the low W_CZ bits in one call, the high part
@@ -394,6 +393,7 @@ module rephase (
         stage_d    = stage_q;
         a_d        = a_q;
         fwd_d      = fwd_q;
+        d_d        = d_q;
         tr_d       = tr_q;
         fresh_d    = fresh_q;
         num_d      = num_q;
@@ -465,6 +465,7 @@ module rephase (
         if (stage_q == ST_UNHOMED)     tr_pos_d = 1'b0;
         else if (stage_q == ST_WINDOW) tr_pos_d = !tr_back && (s_pos || (tr_pos_q && !(s_neg && tr_is1)));
         else                           tr_pos_d = tr_pos_q;
+        if (dnew_q) d_d = d_new;      // (= d_cur there: the sum straight into the register)
         k_d       = d_br - px_br;     // from the register d: valid from the third call after A
         bs_d      = bs_nx;
         // at_last' = (tr' == P - 1), from the case that formed tr'
@@ -487,14 +488,6 @@ module rephase (
         // at flip-flops placed beside it and needs no split)
         u_d    = homing ? {W_POS{1'b0}} : u_q + u_st;
         mark_d = homing || (in3 && in_rng);
-    end
-
-    // d is loaded from its add in the call after A (dnew) and held otherwise; the reset is
-    // enabled with it (enable dnew || reset, the reset value 0), so the register is a flip-flop
-    // with enable and synchronous reset and the sum goes straight into it (no select after the
-    // chain, which the output o_d = d_cur would share)
-    always @(posedge i_clk) begin
-        if (i_rst || dnew_q) d_q <= i_rst ? {W_PH{1'b0}} : d_new;
     end
 
     // num' = d and t' = 2d - P of the first count after A, loaded in the call after that count
@@ -530,6 +523,7 @@ module rephase (
             bw_c_q     <= 1'b0;
             bw_b_q     <= 1'b0;
             bw_z_q     <= 1'b0;
+            d_q        <= {W_PH{1'b0}};
             wa_q       <= {W_PH{1'b0}};
             dm_q       <= 2'd0;
             dnew_q     <= 1'b0;
@@ -579,6 +573,7 @@ module rephase (
             bw_c_q     <= !fwd_d;
             bw_b_q     <= !fwd_d;
             bw_z_q     <= !fwd_d;
+            d_q        <= d_d;
             wa_q       <= wa_d;
             dm_q       <= dm_d;
             dnew_q     <= dnew_d;
