@@ -118,6 +118,8 @@ public:
         h_ = false;
         w_init_ = false;
         qk_ = false;
+        qh_ = false;
+        qp_ = 0;
         u_ = 0;
         len_ = 0;
         mark_ = false;
@@ -138,25 +140,15 @@ public:
         //    outputs)
         //    (qk_: the register part of the condition, lag = 0, w_init, !dnew, !first)
         if (pstep == 0 && qk_ && !rehome && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
-            if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
-                t_ = cfg::br_t(cfg::br_t(num_) + k_);
-                v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
-            }
-            if (stage_ == cfg::STAGE_UNHOMED) {
-                tr_ = 0;
-                fresh_ = true;
-                num_ = 0;
-            }
-            k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-            if (stage_ == cfg::STAGE_WINDOW) form_bs(a_, fwd_, pp);
-            at_last_ = tr_ == tr_t(pp) - 1;
+            // qh_: the previous call was quiet too, outside stage 2, with the same P: k, at_last,
+            // tr, fresh, num and the mark tests then hold (formed from held registers and P)
+            if (!(qh_ && pp == qp_)) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
             out_t q;
             q.ostep = 0;
             q.out_pos = out_pos_;
             q.mark = stage_ == cfg::STAGE_HOMED && mark_;  // (no count: the mark register itself)
-            mark_tests(len_);
             q.stage = cfg::stage_t(static_cast<unsigned>(stage_));
             q.a = a_;
             q.b = b_;
@@ -168,10 +160,31 @@ public:
             q.held = true;
             return q;
         }
+        qh_ = false;
         return step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
     }
 
 private:
+    // the registers a quiet call forms from held registers and P (a second quiet call with the
+    // same P outside stage 2 forms the same values: qh_, qp_)
+    void quiet_forms(cfg::p_t pp) {
+        if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
+            t_ = cfg::br_t(cfg::br_t(num_) + k_);
+            v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
+        }
+        if (stage_ == cfg::STAGE_UNHOMED) {
+            tr_ = 0;
+            fresh_ = true;
+            num_ = 0;
+        }
+        k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
+        if (stage_ == cfg::STAGE_WINDOW) form_bs(a_, fwd_, pp);
+        at_last_ = tr_ == tr_t(pp) - 1;
+        mark_tests(len_);
+        qh_ = stage_ != cfg::STAGE_WINDOW;  // (stage 2: bs needs three calls to settle)
+        qp_ = pp;
+    }
+
     // one call that is not quiet (the whole step)
     out_t step_run(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                    period_t mark_len) {
@@ -444,6 +457,10 @@ private:
     // lag_ == 0 && w_init_ && !dnew_ && !first_, formed at the end of every full call (step_run,
     // the only one that changes them) and in reset: the register part of the quiet-call test
     bool qk_;
+    // the previous call was quiet, outside stage 2, with P = qp_: its quiet_forms hold (cleared
+    // in every call that is not quiet and in reset)
+    bool qh_;
+    cfg::p_t qp_;
     pos_t u_;
     cfg::p_t len_;
     bool mark_;        // the mark
