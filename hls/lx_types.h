@@ -98,7 +98,13 @@ public:
     static constexpr int width = W;
     static constexpr bool is_signed = S;
 
+    // A value the caller knows to lie in the range of W bits (no wrap; see lx::cat_s).
+    static constexpr fixed_int exact(store_t v) { return fixed_int(v, exact_tag{}); }
+
 private:
+    struct exact_tag {};
+    constexpr fixed_int(store_t v, exact_tag) : v_(v) {}
+
     // Width and signedness of a source type: lx types by their W and S (their value always lies
     // in that range), native integers by their size (bool: 1 bit unsigned).
     template <typename T, typename = void>
@@ -184,6 +190,19 @@ template <int W> using uint = fixed_int<W, false>;
 #endif
 
 namespace lx {
+// hi * 2^WL + lo as sint<WH + WL> (hi signed WH bits, lo unsigned WL bits): the concatenation of
+// the two bit patterns, always in range (own back end: no wrap of the sum; the vendor types: the
+// same value through their operators). WH + WL <= 64.
+template <int WH, int WL>
+inline sint<WH + WL> cat_s(const sint<WH>& hi, const uint<WL>& lo) {
+    static_assert(WH + WL <= 64, "lx::cat_s: at most 64 bits");
+#if defined(LASERAX_USE_AP_TYPES) || defined(LASERAX_USE_AC_TYPES)
+    return sint<WH + WL>(sint<WH + WL>(hi) * (int64_t(1) << WL) + lo);
+#else
+    return sint<WH + WL>::exact(static_cast<int64_t>(hi) * (int64_t(1) << WL) + static_cast<int64_t>(lo));
+#endif
+}
+
 // Number of bits needed to hold values 0..v; usable with both back ends for derived widths.
 // (compile-time only; a loop rather than recursion to keep the hls/ lint simple).
 constexpr int clog2p1(unsigned long long v) {

@@ -179,8 +179,8 @@ public:
 
         out_t o;
         o.pstep = emit;
-        o.paced = pos_t(pos_t(p_hi_) * (int64_t(1) << cfg::LP) + p_lo_d_);
-        o.backlog = backlog_t(backlog_t(b_hi_) * (int64_t(1) << cfg::L) + b_lo_);
+        o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
+        o.backlog = cat_s<cfg::W_HI, cfg::L>(b_hi_, b_lo_);
         o.ovs = ovs_;
         o.ovs_st = ovs_st_;
         return o;
