@@ -45,6 +45,7 @@ module quad_decoder (
     localparam integer W_SPACING = `LX_QD_W_SPACING;  // minimum edge spacing register, clocks
     localparam integer W_ERRCNT  = `LX_QD_W_ERRCNT;   // illegal transition counter
     localparam integer W_RAW     = `LX_W_RAW;         // raw laser count
+    localparam integer W_RLO     = W_RAW / 2;         // its lower half (circuit only)
     localparam [W_SPACING-1:0] SINCE_MAX  = {W_SPACING{1'b1}};
     localparam [W_ERRCNT-1:0]  ERRCNT_MAX = {W_ERRCNT{1'b1}};
 
@@ -68,7 +69,13 @@ module quad_decoder (
 
     // ---- registers -------------------------------------------------------------------------------
     reg                    pa_q, pb_q, primed_q;
-    reg signed [W_RAW-1:0] raw_q;
+    // the raw count is held in two halves (DESIGN 4.2: N wraps at 2^W_RAW; the split is only the
+    // circuit): the upper half moves when the lower half wraps, told by two registered flags
+    // (lower half all ones / all zeros), so no carry chain is longer than a half
+    reg [W_RLO-1:0]        rlo_q;
+    reg [W_RAW-W_RLO-1:0]  rhi_q;
+    reg                    rlo_ones_q, rlo_zero_q;
+    wire signed [W_RAW-1:0] raw_q = {rhi_q, rlo_q};
     reg [W_ERRCNT-1:0]     err_cnt_q;
     reg [W_SPACING:0]      nsp2_q;         // ~(since + 2) (DESIGN 4.2 `since`, offset by 2, inverted)
     reg                    illegal_st_q, ovs_st_q, lerr_alarm_q, glitch_st_q;
@@ -76,7 +83,9 @@ module quad_decoder (
     reg                    illegal_q, ovs_q, lerr_q;
 
     reg                    pa_d, pb_d, primed_d;
-    reg signed [W_RAW-1:0] raw_d;
+    reg [W_RLO-1:0]        rlo_d;
+    reg [W_RAW-W_RLO-1:0]  rhi_d;
+    reg                    rlo_ones_d, rlo_zero_d;
     reg [W_ERRCNT-1:0]     err_cnt_d;
     reg [W_SPACING:0]      nsp2_d;
     reg                    illegal_st_d, ovs_st_d, lerr_alarm_d, glitch_st_d;
@@ -84,8 +93,14 @@ module quad_decoder (
     reg                    illegal_d, ovs_d, lerr_d;
 
     reg                    da, db;
-    wire signed [W_RAW-1:0] raw_inc = raw_q + {{(W_RAW-1){1'b0}}, 1'b1};
-    wire signed [W_RAW-1:0] raw_dec = raw_q - {{(W_RAW-1){1'b0}}, 1'b1};
+    wire [W_RLO-1:0]       rlo_inc = rlo_q + {{(W_RLO-1){1'b0}}, 1'b1};
+    wire [W_RLO-1:0]       rlo_dec = rlo_q - {{(W_RLO-1){1'b0}}, 1'b1};
+    wire [W_RAW-W_RLO-1:0] rhi_inc = rhi_q + {{(W_RAW-W_RLO-1){1'b0}}, 1'b1};
+    wire [W_RAW-W_RLO-1:0] rhi_dec = rhi_q - {{(W_RAW-W_RLO-1){1'b0}}, 1'b1};
+    // the next flags, from the register alone: lo + 1 is all ones iff lo == ~1 (all ones but
+    // bit 0), lo - 1 is all zeros iff lo == 1
+    wire                   rlo_m2  = rlo_q == {{(W_RLO-1){1'b1}}, 1'b0};
+    wire                   rlo_p1  = rlo_q == {{(W_RLO-1){1'b0}}, 1'b1};
     reg                    close_q, close_d;   // DESIGN 4.2 `close`: since + 1 < min_spacing
     // `since` is kept as sp2 = since + 2 (65537 = since saturated at 65535), so that the overspeed
     // comparison of the next edge is one comparator on registers for both values since' can take:
@@ -161,7 +176,22 @@ module quad_decoder (
         if (lerr_d) lerr_alarm_d = 1'b1;
         // raw +- 1 are formed from the register alone (in parallel with the filter and step
         // logic); the step only selects: no carry chain after the step decision
-        raw_d = (step_d == 2'sd1) ? raw_inc : ((step_d == -2'sd1) ? raw_dec : raw_q);
+        // (the halves: the upper one moves on a +1 from all ones or a -1 from all zeros)
+        rlo_d      = rlo_q;
+        rhi_d      = rhi_q;
+        rlo_ones_d = rlo_ones_q;
+        rlo_zero_d = rlo_zero_q;
+        if (step_d == 2'sd1) begin
+            rlo_d      = rlo_inc;
+            rlo_ones_d = rlo_m2;
+            rlo_zero_d = rlo_ones_q;
+            if (rlo_ones_q) rhi_d = rhi_inc;
+        end else if (step_d == -2'sd1) begin
+            rlo_d      = rlo_dec;
+            rlo_ones_d = rlo_zero_q;
+            rlo_zero_d = rlo_p1;
+            if (rlo_zero_q) rhi_d = rhi_dec;
+        end
     end
 
     always @(posedge i_clk) begin
@@ -169,7 +199,10 @@ module quad_decoder (
             pa_q         <= 1'b0;
             pb_q         <= 1'b0;
             primed_q     <= 1'b0;
-            raw_q        <= {W_RAW{1'b0}};
+            rlo_q        <= {W_RLO{1'b0}};
+            rhi_q        <= {(W_RAW-W_RLO){1'b0}};
+            rlo_ones_q   <= 1'b0;
+            rlo_zero_q   <= 1'b1;
             err_cnt_q    <= {W_ERRCNT{1'b0}};
             nsp2_q       <= NSP2_MAX;
             close_q      <= 1'b0;
@@ -185,7 +218,10 @@ module quad_decoder (
             pa_q         <= pa_d;
             pb_q         <= pb_d;
             primed_q     <= primed_d;
-            raw_q        <= raw_d;
+            rlo_q        <= rlo_d;
+            rhi_q        <= rhi_d;
+            rlo_ones_q   <= rlo_ones_d;
+            rlo_zero_q   <= rlo_zero_d;
             err_cnt_q    <= err_cnt_d;
             nsp2_q       <= nsp2_d;
             close_q      <= close_d;
@@ -286,6 +322,9 @@ module quad_decoder (
         if (f_init && !f_rst_p) begin
             // the position is the reference counter, always
             assert(raw_q == f_ref);
+            // the wrap flags of the lower half are those of the register
+            assert(rlo_ones_q == (&rlo_q));
+            assert(rlo_zero_q == !(|rlo_q));
             // each call: the step is the decoded move, the raw count moves by exactly it
             assert(raw_q == f_raw_p + {{(W_RAW-2){step_q[1]}}, step_q});
             if (f_en_p && f_move_p == 2'd1) assert(step_q == 2'sd1 && !illegal_q);

@@ -128,6 +128,7 @@ run_proof_engine() {
 # mutations: NAME|FILE|PROOF|SED-EXPRESSION (each must make PROOF fail)
 MUTATIONS=(
   "qd_direction|quad_decoder.v|quad_decoder|s/step_d = (fa_f_d != fb_f_d) ? 2'sd1 : -2'sd1;/step_d = (fa_f_d == fb_f_d) ? 2'sd1 : -2'sd1;/"
+  "qd_raw_half_carry|quad_decoder.v|quad_decoder|s/            rlo_zero_d = rlo_ones_q;/            rlo_zero_d = 1'b0;/"
   "qd_count_illegal|quad_decoder.v|quad_decoder|s/if (da \&\& db)/if (1'b0)/"
   "qd_err_wraps|quad_decoder.v|quad_decoder|s/else if (err_cnt_q != ERRCNT_MAX) err_cnt_d/else if (1'b1) err_cnt_d/"
   "qd_ovs_spacing|quad_decoder.v|quad_decoder|s/close_s   = {2'b00, i_min_spacing} + {1'b0, nsp2_q};/close_s   = {2'b00, i_min_spacing} + {1'b0, nsp2_q} + 1'b1;/"
