@@ -153,7 +153,7 @@ module pulse_multiplier (
     wire last  = f_last_q;                                  // cnt == K_REBASE: T applied
     wire start = (!busy_q || last) && pend_q;
     // the pair in force differs from the target pair: a 101-bit equality as 51 bit-pair equalities
-    // (one LUT each), ANDed on three 17-long carry chains (the carry of E + 1 is the AND of E's
+    // (one LUT each), ANDed on three 17-long carry chains (the carry of E + E[0] is the AND of E's
     // bits: no LUT tree behind the pair LUTs)
     localparam integer W_CMP = W_RATIO + W_OFFSET;      // 101
     localparam integer N_EQ  = 51;                      // bit pairs (the last one padded)
@@ -166,9 +166,9 @@ module pulse_multiplier (
             assign eq2[gq] = cmp_a[2*gq+1:2*gq] == cmp_b[2*gq+1:2*gq];
         end
     endgenerate
-    wire [17:0] eq_c0 = {1'b0, eq2[16:0]}  + 18'd1;
-    wire [17:0] eq_c1 = {1'b0, eq2[33:17]} + 18'd1;
-    wire [17:0] eq_c2 = {1'b0, eq2[50:34]} + 18'd1;
+    wire [17:0] eq_c0 = {1'b0, eq2[16:0]}  + {17'd0, eq2[0]};
+    wire [17:0] eq_c1 = {1'b0, eq2[33:17]} + {17'd0, eq2[17]};
+    wire [17:0] eq_c2 = {1'b0, eq2[50:34]} + {17'd0, eq2[34]};
     wire pend_d = !start && !(eq_c0[17] && eq_c1[17] && eq_c2[17]);
     wire             busy_d = start || (busy_q && !last);
     // C_MUL0 <= cnt_d < C_MUL0 + MUL_STEPS (4 <= cnt_d < 36, 6-bit cnt_d) as bit logic: a compare
