@@ -43,7 +43,8 @@ by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::ti
     out=$(valgrind --tool=callgrind --callgrind-out-file="$f" "$bench" "$1" --only "hls laserax_top" 2>&1)
     printf '%s\n' "$out" | sed -n 's/.*(\([0-9]*\) calls in .*/calls \1/p' | tail -n 1
     callgrind_annotate --inclusive=no --auto=no "$f" 2>/dev/null | grep -v "=>" |
-        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):\(lx::laserax_top::step\|lx::laserax_top::tick\|(anonymous namespace)::chain_step\)(.*/\2 \1/p' | tr -d ','
+        sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):\(lx::laserax_top::step\|lx::laserax_top::tick\|(anonymous namespace)::chain_step\)(.*/\2 \1/p' | tr -d ',' |
+        sed 's|^[^ ]*/\(hls/[^ ]*\) |\1 |'   # (absolute paths of the build: keep from hls/ on)
     rm -f "$f"
 }
 if command -v callgrind_annotate >/dev/null; then
