@@ -348,16 +348,18 @@ private:
         o.ostep = rep.ostep;
         if (!rep.held) {  // (held: the other rephase outputs are those out_ holds, dig_q1_ too)
             dig_q1_ = dig_levels(rep.out_pos, rep.mark);
-            o.stage = rep.stage;
-            o.homed = rep.homed;
             o.out_pos = rep.out_pos;
-            o.adj = rep.adj;
-            o.a_pos = rep.a;
-            o.b_pos = rep.b;
-            o.c_pos = rep.c;
-            o.z_pos = rep.z;
-            o.d = rep.d;
             o.rep_mark = rep.mark;
+            if (!rep.moved) {  // (moved: only ostep, out_pos and mark changed)
+                o.stage = rep.stage;
+                o.homed = rep.homed;
+                o.adj = rep.adj;
+                o.a_pos = rep.a;
+                o.b_pos = rep.b;
+                o.c_pos = rep.c;
+                o.z_pos = rep.z;
+                o.d = rep.d;
+            }
         }
         const output_pacer::out_t pac =
             pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);

@@ -82,6 +82,8 @@ public:
         cfg::ph_t d = 0;
         bool homed = false;
         bool held = false;  // quiet call (see step): every output but ostep (0 here) is the previous call's
+        // count call of step_count: every output but ostep, out_pos and mark is the previous call's
+        bool moved = false;
     };
 
     rephase() { reset(); }
@@ -161,6 +163,13 @@ public:
             return q;
         }
         qh_ = false;
+        // 0b. count call in stage 1 or 3 with nothing in flight (qk_), no leave and, in stage 1, no
+        //     switch rise: step_run would move only the taps, w, u / the mark and the registers
+        //     formed from them (no extra count, no stage change; issue 13: simulation speed; same
+        //     outputs)
+        if (pstep != 0 && qk_ && !rehome && !unhome && stage_ != cfg::STAGE_WINDOW &&
+            !(stage_ == cfg::STAGE_UNHOMED && sw && !sw_prev_ && sw_seen_))
+            return step_count(pstep, sw, sw_valid, pp);
         return step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
     }
 
@@ -221,33 +230,7 @@ private:
             if (lag_ > 0) ostep = 1;
             if (lag_ < 0) ostep = -1;
         }
-        {
-            using x_t = sint<cfg::W_P + 2>;
-            const x_t px = x_t(pp);
-            const cfg::ph_t w0 = w_init_ ? w_ : p8;  // ph = 0 after reset
-            // the flags after reset are those of w = P/8 for every legal P (>= 8): false
-            const bool t1 = t1_;
-            const bool z0 = z0_;
-            const bool h = h_;  // w >= P/2 (for the form of d at A)
-            const cfg::ph_t p2 = cfg::ph_t(pp >> 1);
-            const cfg::ph_t p2m1 = cfg::ph_t((px - 2) >> 1);  // P/2 - 1, from P - 2 as in rtl_ref/
-            if (ostep > 0) {
-                w_ = t1 ? cfg::ph_t(0) : cfg::ph_t(w0 + 1);
-                t1_ = t1 ? (px == 1) : (x_t(w0) == px - 2);
-                z0_ = t1 ? true : (w0 == cfg::ph_t(-1));
-                h_ = t1 ? false : (h || w0 == p2m1);
-            } else if (ostep < 0) {
-                w_ = z0 ? cfg::ph_t(px - 1) : cfg::ph_t(w0 - 1);
-                t1_ = z0 ? true : (x_t(w0) == px);
-                z0_ = z0 ? (cfg::ph_t(px - 1) == 0) : (w0 == 1);
-                h_ = z0 ? true : (h && w0 != p2);
-            } else {
-                w_ = w0;
-                t1_ = t1;
-                z0_ = z0;
-            }
-            w_init_ = true;
-        }
+        move_w(ostep, w_init_ ? w_ : p8, pp);  // (ph = 0 after reset)
 
         // 4. stage machine
         // d: formed from the phase at A in the call after A (dnew), then held
@@ -381,6 +364,77 @@ private:
         o.d = dnew_ ? d_of(wa_, dm_, pp) : d_;
         o.homed = stage_ == cfg::STAGE_HOMED;
         qk_ = lag_ == 0 && w_init_ && !dnew_ && !first_;
+        return o;
+    }
+
+    // 3. the phase w of the output position moved by ostep (-1..1) from w0 (w, or P/8 before the
+    //    first call), with its wrap flags (step_run, step_count)
+    void move_w(step_t ostep, cfg::ph_t w0, cfg::p_t pp) {
+        using x_t = sint<cfg::W_P + 2>;
+        const x_t px = x_t(pp);
+        // the flags after reset are those of w = P/8 for every legal P (>= 8): false
+        const bool t1 = t1_;
+        const bool z0 = z0_;
+        const bool h = h_;  // w >= P/2 (for the form of d at A)
+        const cfg::ph_t p2 = cfg::ph_t(pp >> 1);
+        const cfg::ph_t p2m1 = cfg::ph_t((px - 2) >> 1);  // P/2 - 1, from P - 2 as in rtl_ref/
+        if (ostep > 0) {
+            w_ = t1 ? cfg::ph_t(0) : cfg::ph_t(w0 + 1);
+            t1_ = t1 ? (px == 1) : (x_t(w0) == px - 2);
+            z0_ = t1 ? true : (w0 == cfg::ph_t(-1));
+            h_ = t1 ? false : (h || w0 == p2m1);
+        } else if (ostep < 0) {
+            w_ = z0 ? cfg::ph_t(px - 1) : cfg::ph_t(w0 - 1);
+            t1_ = z0 ? true : (x_t(w0) == px);
+            z0_ = z0 ? (cfg::ph_t(px - 1) == 0) : (w0 == 1);
+            h_ = z0 ? true : (h && w0 != p2);
+        } else {
+            w_ = w0;
+            t1_ = t1;
+            z0_ = z0;
+        }
+        w_init_ = true;
+    }
+
+    // a count call (pstep != 0) in stage 1 or 3 with lag = 0, w_init, no d load and no first count
+    // (qk_), no leave and no capture: step_run with dq = 0, ostep = sgn(pstep), no stage change and
+    // no window state but the stage-1 reset values (tr, fresh, num); t, v, d, lag, adj hold
+    out_t step_count(step_t pstep, bool sw, bool sw_valid, cfg::p_t pp) {
+        const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
+        paced_ = paced_ + pstep;
+        fwd_last_ = pstep > 0;
+        const step_t ostep = pstep > 0 ? step_t(1) : step_t(-1);
+        move_w(ostep, w_, pp);
+        if (stage_ == cfg::STAGE_UNHOMED) {
+            tr_ = 0;
+            fresh_ = true;
+            num_ = 0;
+        }
+        k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
+        at_last_ = tr_ == tr_t(pp) - 1;
+        sw_prev_ = sw;
+        sw_seen_ = sw_valid;
+        out_pos_ = out_pos_ + ostep;
+        const bool in_rng = s > 0 ? (mt_u_ >= -1 && mt_u_ < pos_t(mt_len_))
+                                  : (mt_u_ >= 1 && mt_u_ <= pos_t(pos_t(mt_len_) + 1));
+        mark_tests(len_);
+        u_ = pos_t(u_ + s);
+        const bool mark = stage_ == cfg::STAGE_HOMED && in_rng;
+        mark_ = mark;
+
+        out_t o;
+        o.ostep = ostep;
+        o.out_pos = out_pos_;
+        o.mark = mark;
+        o.stage = cfg::stage_t(static_cast<unsigned>(stage_));
+        o.a = a_;
+        o.b = b_;
+        o.c = c_;
+        o.z = z_;
+        o.adj = adj_;
+        o.d = d_;
+        o.homed = stage_ == cfg::STAGE_HOMED;
+        o.moved = true;
         return o;
     }
 
