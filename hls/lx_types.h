@@ -180,6 +180,17 @@ template <int W> using uint = fixed_int<W, false>;
 #define LASERAX_FLATTEN
 #endif
 
+// LASERAX_COLD: on a block's rarely taken full-call path (the clock-enabled idle paths being the
+// common ones on a running axis): kept out of line in the flattened chain step, so the hot path's
+// registers are not spent on it (GCC / Clang, own integer back end, C simulation only; issue 13:
+// simulation speed). No effect on what is computed; empty for synthesis and the vendor types.
+#if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
+    !defined(LASERAX_USE_AC_TYPES)
+#define LASERAX_COLD __attribute__((noinline, cold))
+#else
+#define LASERAX_COLD
+#endif
+
 // LX_LOOP(name) names the loop that follows it for Vitis HLS, whose reports and directives refer
 // to a loop by its label. Only the synthesis front end sees the label: GCC and Clang warn of a
 // label no goto uses (-Wunused-label, an error in this build), so the C++ build drops it.

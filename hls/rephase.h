@@ -195,7 +195,7 @@ private:
     }
 
     // one call that is not quiet (the whole step)
-    out_t step_run(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
+    LASERAX_COLD out_t step_run(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                    period_t mark_len) {
         const cfg::p_t pp = period;
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
