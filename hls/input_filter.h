@@ -48,10 +48,11 @@ public:
         fill_ = 0;
         ready_ = false;
         quiet_ = false;
+        key_ = KEY_NONE;
     }
 
     // the block state for the caller's own clock enable (see step): settled at the level of pin
-    bool settled(bool pin) const { return quiet_ && pin == s1_; }
+    bool settled(bool pin) const { return unsigned(pin) == key_; }
     bool level() const { return f_; }
     bool quiet() const { return quiet_; }  // settled at level() (valid, cnt = 0, s1 = s2 = f)
     // the call of step() in the settled state (settled(pin)): only the pass decision is loaded
@@ -91,6 +92,7 @@ public:
         s2_ = s1_;
         s1_ = pin;
         quiet_ = valid_ && cnt_ == 0 && s1_ == s2_ && s2_ == f_;
+        key_ = quiet_ ? uint<2>(s1_ ? 1 : 0) : uint<2>(KEY_NONE);
         out_t o;
         o.f = f_;
         o.valid = valid_;
@@ -101,6 +103,10 @@ public:
 private:
     bool s1_, s2_, f_, valid_;
     bool quiet_;  // valid_ && cnt_ == 0 && s1_ == s2_ == f_ (registered with them)
+    // the pin level of a settled call: s1_ while quiet_, else KEY_NONE (no pin equals it): one
+    // compare for settled() (issue 13: simulation speed)
+    static constexpr unsigned KEY_NONE = 2;
+    uint<2> key_;
     bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
     cnt_t cnt_;
     typename cfg::fill_t fill_;
