@@ -351,6 +351,13 @@ private:
         const bool mark = homing || (in3 && in_rng);
         mark_ = mark;
 
+        const out_t o = outputs(ostep, mark, dnew_ ? d_of(wa_, dm_, pp) : d_);
+        qk_ = lag_ == 0 && w_init_ && !dnew_ && !first_;
+        return o;
+    }
+
+    // the outputs of a call from the registers after it (step_run, step_count)
+    out_t outputs(step_t ostep, bool mark, cfg::ph_t d) const {
         out_t o;
         o.ostep = ostep;
         o.out_pos = out_pos_;
@@ -361,9 +368,8 @@ private:
         o.c = c_;
         o.z = z_;
         o.adj = adj_;
-        o.d = dnew_ ? d_of(wa_, dm_, pp) : d_;
+        o.d = d;
         o.homed = stage_ == cfg::STAGE_HOMED;
-        qk_ = lag_ == 0 && w_init_ && !dnew_ && !first_;
         return o;
     }
 
@@ -422,18 +428,7 @@ private:
         const bool mark = stage_ == cfg::STAGE_HOMED && in_rng;
         mark_ = mark;
 
-        out_t o;
-        o.ostep = ostep;
-        o.out_pos = out_pos_;
-        o.mark = mark;
-        o.stage = cfg::stage_t(static_cast<unsigned>(stage_));
-        o.a = a_;
-        o.b = b_;
-        o.c = c_;
-        o.z = z_;
-        o.adj = adj_;
-        o.d = d_;
-        o.homed = stage_ == cfg::STAGE_HOMED;
+        out_t o = outputs(ostep, mark, d_);
         o.moved = true;
         return o;
     }
