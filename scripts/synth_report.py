@@ -13,14 +13,18 @@ For every block of rtl_ref/ and for the top (laserax_top):
     frequency reported by nextpnr is that of the block inside the harness; the harness adds one
     flip-flop per input bit and one LUT + flip-flop per output bit to the device utilisation.
     A block that does not fit (or whose place-and-route fails) is listed as such; the script
-    does not fail for it.
+    does not fail for it;
+  * every timing endpoint of the routed harness (scripts/pnr_endpoints.py, from nextpnr's
+    --report --detailed-timing-report and --write files): DIR/<block>.endpoints.txt, and the
+    count of endpoints with less than 0.5 ns of slack in the table.
 
 Usage: synth_report.py --build BUILD_DIR [--out DIR] [--device hx8k|up5k] [--freq MHZ]
                        [--jobs N] [--modules a,b,...] [--no-pnr] [--seed N] [--limits FILE]
 With --limits (the CTest `synth_check`, label synth): after the table, every module named in FILE
 (rtl_ref/synth_limits.csv) is checked against its limits — synthesis must succeed, SB_LUT4 and
 block RAM at most the limit, and the P&R fmax at least the limit (where one is given) — and the
-script exits 1 on any violation. Static timing of a fixed seed is deterministic.
+script exits 1 on any violation, or when the endpoint list's worst path is not nextpnr's critical
+path. Static timing of a fixed seed is deterministic.
 The table table is printed and written to DIR/synth_report.md; logs and netlists stay in DIR.
 The table RAM image (P = 256, amp = 32767) is written by BUILD_DIR/lutgen into DIR.
 """
@@ -32,6 +36,9 @@ import re
 import subprocess
 import sys
 import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pnr_endpoints  # noqa: E402  (scripts/pnr_endpoints.py: every endpoint's slack)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 RTL = os.path.join(ROOT, "rtl_ref")
@@ -198,10 +205,13 @@ def do_module(m, a):
         r["fmax"] = "harness synth failed"
         return r
     plog = os.path.join(out, f"{m}.nextpnr.log")
+    prep = os.path.join(out, f"wrap_{m}.timing.json")
+    ppost = os.path.join(out, f"wrap_{m}.routed.json")
     cmd = (["nextpnr-ice40"] + dev["nextpnr"] +
            ["--json", wjson, "--pcf-allow-unconstrained", "--timing-allow-fail", "--freq", str(a.freq),
             "--seed", str(a.seed),
-            "--asc", os.path.join(out, f"wrap_{m}.asc")])
+            "--asc", os.path.join(out, f"wrap_{m}.asc"),
+            "--report", prep, "--detailed-timing-report", "--write", ppost])
     rc, secs = run(cmd, out, plog)
     with open(plog, errors="replace") as f:
         log = f.read()
@@ -219,6 +229,26 @@ def do_module(m, a):
           if c.startswith("i_clk")]
     r["fmax"] = f"{float(fm[-1]):.1f}" if fm else "n/a"
     r["pnr_s"] = round(secs)
+    # every endpoint's slack (scripts/pnr_endpoints.py) into DIR/<m>.endpoints.txt; the count of
+    # endpoints with less than 0.5 ns of slack goes into the table, and the analysis must agree
+    # with nextpnr's own critical path (checked with --limits)
+    period = 1000.0 / a.freq
+    try:
+        res = pnr_endpoints.analyse(ppost, prep, period)
+        if not res["rows"]:
+            raise ValueError("no clocked endpoint")
+        with open(os.path.join(out, f"{m}.endpoints.txt"), "w") as f:
+            f.write(pnr_endpoints.report(res, period, 60) + "\n")
+        over, near, worst = pnr_endpoints.summary(res, period)
+        r["near"] = str(near)
+        r["ep_ok"] = pnr_endpoints.agrees(res)
+        r["ep_why"] = (f"the endpoint list's worst path {worst:.3f} ns is not nextpnr's critical path "
+                       f"({res['ref']} ns)")
+        os.remove(ppost)  # (large: the routed netlist is only needed for the analysis)
+    except (OSError, ValueError, KeyError) as e:
+        r["near"] = "n/a"
+        r["ep_ok"] = False
+        r["ep_why"] = f"endpoint analysis failed: {e}"
     return r
 
 
@@ -261,7 +291,7 @@ def main():
 
     dev = a.device.upper()
     head = ["block", "generic LUT4", "generic FF", f"{dev} SB_LUT4", "SB_CARRY", "FF (SB_DFF*)",
-            "BRAM (SB_RAM40_4K)", "DSP (SB_MAC16)", f"fmax MHz ({dev}, P&R)", "harness LCs"]
+            "BRAM (SB_RAM40_4K)", "DSP (SB_MAC16)", f"fmax MHz ({dev}, P&R)", "slack < 0.5 ns", "harness LCs"]
     rows = []
     for m in mods:
         r = results[m]
@@ -270,7 +300,8 @@ def main():
                      str(r.get("g_lut", g or "")), str(r.get("g_ff", "")),
                      str(r.get("lut", r.get("i_err", ""))), str(r.get("carry", "")), str(r.get("ff", "")),
                      str(r.get("bram", "")), str(r.get("dsp", "")),
-                     str(r.get("fmax", "not run" if a.no_pnr else "")), str(r.get("lc", ""))])
+                     str(r.get("fmax", "not run" if a.no_pnr else "")), str(r.get("near", "")),
+                     str(r.get("lc", ""))])
     widths = [max(len(h), *(len(x[i]) for x in rows)) for i, h in enumerate(head)]
     lines = ["| " + " | ".join(h.ljust(widths[i]) for i, h in enumerate(head)) + " |",
              "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
@@ -283,6 +314,8 @@ def main():
         "Generic: synth -flatten, abc -lut 4, memories kept as $mem (the 1024x17 table RAM counts 0 LUT/FF).",
         "LUT/FF/BRAM/DSP: the block alone. fmax and harness LCs: the block inside a shift-register I/O",
         "harness (one FF per input bit, one LUT+FF per output bit), register to register.",
+        "slack < 0.5 ns: the timing endpoints (flip-flop and block RAM inputs) whose longest path leaves",
+        f"less than 0.5 ns at {a.freq:g} MHz (scripts/pnr_endpoints.py; the list: DIR/<block>.endpoints.txt).",
     ]
     if "laserax_top" in mods and not a.keep_taps:
         notes.append("laserax_top: DEBUG_TAPS = 0 (default: the debug taps raw_count .. rep_mark tied to 0 and")
@@ -342,6 +375,8 @@ def check_limits(path, results):
                     why.append(f"no fmax ({r.get('fmax', 'not run')})")
                 elif fm < min_fmax:
                     why.append(f"fmax {fm:.1f} MHz < {min_fmax:g}")
+            if "ep_ok" in r and not r["ep_ok"]:
+                why.append(r["ep_why"])
         if why:
             bad += 1
             print(f"synth_check: FAIL {m}: " + "; ".join(why))
