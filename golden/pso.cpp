@@ -115,9 +115,9 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
         // the start of the run takes the first threshold: fire_dist of this call, or entry 0 as
         // the RAM stands after this call's write
         if (t == 0) thr_ = arr_en_ ? counts(ram_[0]) : counts(r.fire_dist);
-        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 6)
+        const long double est_old = est_hist_[kFireLat - 1];  // est(t - 7)
 
-        // ---- fire on the estimate of call t - 6 ----
+        // ---- fire on the estimate of call t - 7 ----
         const bool was_done = done_;
         o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr_;
         if (o.fire) {

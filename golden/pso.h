@@ -6,9 +6,9 @@
 //     current one; the estimate is est(t) = sum of closed chords + chord(P(t) - S), where
 //     chord(v) = |v| rounded to the nearest 2^-32 count (sqrtl, then an exact integer check);
 //   * part-speed: est(t) = floor(Phi(t)), Phi = sum of the clamped commanded rate (exact);
-//   * the k-th fire is the first call t+6 with est(t) - (sum of the thresholds already fired)
+//   * the k-th fire is the first call t+7 with est(t) - (sum of the thresholds already fired)
 //     >= thr_k (absolute bookkeeping of fired thresholds, no remainder register); no fire in the
-//     first six calls of a run (docs/PSO_COUNTERS.md §2.5, §2.9);
+//     first seven calls of a run (docs/PSO_COUNTERS.md §2.5, §2.9);
 //   * the threshold of a fire is taken at the previous fire, or at the start of the run: thr_1
 //     is fire_dist of run call 0 (or entry 0 as the RAM stands after that call); with fire k-1
 //     in call G, thr_k is fire_dist of call G-3 (or the entry of fire k's index as the RAM
@@ -56,7 +56,7 @@ class pso {
 public:
     static constexpr int kAxes = 3;
     static constexpr int kMaxK = 16;
-    static constexpr int kFireLat = 6;   // calls from a step to its fire
+    static constexpr int kFireLat = 7;   // calls from a step to its fire
     static constexpr int kSpLat = 17;    // calls from a spacing sample to its flag
     static constexpr int kArrDepth = 64;
     static constexpr long double kMinDist = 2.0L;       // counts
@@ -109,8 +109,8 @@ private:
     long double closed_ = 0;        // sum of closed chords
     long double phi_ = 0;           // part-speed commanded distance
     int64_t ps_count_ = 0;
-    long double est_hist_[kFireLat] = {0, 0, 0, 0, 0, 0};   // estimate after call t-1 .. t-6
-    bool inwin_hist_[kFireLat] = {false, false, false, false, false, false};
+    long double est_hist_[kFireLat] = {};   // estimate after call t-1 .. t-7
+    bool inwin_hist_[kFireLat] = {};
     uint64_t fd_m1_ = 0;            // fire_dist of the previous call
     uint64_t fd_m2_ = 0;            // fire_dist of the call before it
     uint64_t fd_m3_ = 0;            // fire_dist of the call before that
