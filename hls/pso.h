@@ -2,18 +2,19 @@
 // firing comparator with remainder carry, pulse output of programmable width, a position window,
 // an array of firing distances and the part-speed pulse generator (24 MHz limit).
 //
-// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the six stages); in short:
+// docs/PSO_COUNTERS.md §2 is the normative per-call description (§2.4 the seven stages); in short:
 //
 //   stage A  (this call's inputs)  tracking window: per-axis signed travel D since the window
 //                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
 //                                  window at the previous position, |D_i| reaching K closes it at
-//                                  the current one; address s = sum D_i^2 of the chord ROM.
+//                                  the current one; the squares D_i^2 of the new travel.
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
-//   stage R  (A of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32) (the BRAM's address
-//                                  register is A's s), the estimate step Y = chord + one - (the
-//                                  open chord, unless a reversal closed it).
+//   stage Q  (A of the last call)  the chord ROM address s = sum D_i^2 (the BRAM's address
+//                                  register).
+//   stage R  (Q of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32), the estimate step
+//                                  Y = chord + one - (the open chord, unless a reversal closed it).
 //   stage B1 (R of the last call)  Y - thr for three candidate thresholds of the fire after the
 //                                  next (next .. next^3 of the index before the move of the
 //                                  decision being taken in B2).
@@ -35,8 +36,8 @@
 // u (value - thr) and dist 58 bits signed, chord 37 bits, window travel 6 bits signed, ROM 769 x 37 bits
 // (K_MAX = 16). Register values presented in call t are in force in call t+1 (REG_LAT, a register
 // stage; the configuration check is formed on the presented values and registered).
-// Latency: a step at call t can fire at call t+6 (FIRE_LAT; the fire/emit/pulse
-// outputs of call t+6); rate_over is an output of the command's call; spacing_err of run call
+// Latency: a step at call t can fire at call t+7 (FIRE_LAT; the fire/emit/pulse
+// outputs of call t+7); rate_over is an output of the command's call; spacing_err of run call
 // 17 j (j >= 1) is the check of the command sampled 17 calls earlier.
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
@@ -69,13 +70,14 @@ struct pso_cfg {
     static constexpr int W_WIN = W_K + 1;                            // 6, signed travel -K..K
     static constexpr int S_MAX = N_AXES * K_MAX * K_MAX;             // 768
     static constexpr int W_S = clog2p1(S_MAX);                       // 10, ROM address
+    static constexpr int W_SQ = clog2p1(K_MAX * K_MAX);              // 9, |Dn_i|^2 (a term of s)
     static constexpr int W_CHORD = clog2p1(2 * K_MAX - 1) + D_FRAC;  // 37: sqrt(3)*K < 2K - 1
     static constexpr int W_INCR = W_CHORD + 1;                       // 38: Y, estimate step (< 2 chords)
     static constexpr int W_ADDR = clog2p1(ARR_DEPTH - 1);            // 6
     static constexpr int W_LEN = clog2p1(ARR_DEPTH);                 // 7
     static constexpr int W_PROD = W_INC + W_GAP;                     // 48, inc * min_period
     static constexpr int W_SPHI = W_INC + 1;                         // 33, upper part of the shift-add
-    static constexpr int FIRE_LAT = 6;                               // calls from a step to its fire
+    static constexpr int FIRE_LAT = 7;                               // calls from a step to its fire
     static constexpr int REG_LAT = 1;                                // calls from presenting a register to its use
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
@@ -92,6 +94,7 @@ struct pso_cfg {
     using chord_t = uint<W_CHORD>;
     using win_t = sint<W_WIN>;
     using s_t = uint<W_S>;
+    using sq_t = uint<W_SQ>;
     using k_t = uint<W_K>;
     using pw_t = uint<W_PW>;
     using gap_t = uint<W_GAP>;
@@ -387,15 +390,23 @@ public:
         p_inwin_ = r_v_ && r_inwin_;
         p_v_ = r_v_;
 
-        // ---- stage R: chord ROM read at the address stage A wrote, the estimate step ----
-        const uint64_t chord = pso_chord(a_s_).to_uint64();
-        const uint64_t one = a_pulse_ ? cfg::ONE : 0;
+        // ---- stage R: chord ROM read at the address stage Q wrote, the estimate step ----
+        const uint64_t chord = pso_chord(q_s_).to_uint64();
+        const uint64_t one = q_pulse_ ? cfg::ONE : 0;
         // Y = est - est of the previous entry: this entry's chord (plus a generator pulse), less the
         // open chord it extends (a reversal closed that one, a K close left none); >= 0
-        r_y_ = chord + one - (a_rev_ ? uint64_t(0) : part_.to_uint64());
-        part_ = a_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
-        r_inwin_ = a_inwin_;
-        r_v_ = a_v_;
+        r_y_ = chord + one - (q_rev_ ? uint64_t(0) : part_.to_uint64());
+        part_ = q_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
+        r_inwin_ = q_inwin_;
+        r_v_ = q_v_;
+
+        // ---- stage Q: the ROM address s = sum |Dn_i|^2 from stage A's squares ----
+        q_s_ = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
+        q_rev_ = a_rev_;
+        q_kclose_ = a_kclose_;
+        q_pulse_ = a_pulse_;
+        q_inwin_ = a_inwin_;
+        q_v_ = a_v_;
 
         // ---- stage A: part-speed generator and tracking window for this call's steps ----
         bool ps_pulse = false;
@@ -441,14 +452,13 @@ public:
             if (d[i] != 0 && trav_[i] != 0 && (d[i] > 0) != (trav_[i] > 0)) rev = true;
         }
         bool kclose = false;
-        uint<cfg::W_S> s = 0;
         cfg::win_t dn[cfg::N_AXES];
         LX_LOOP(axis_travel) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             dn[i] = (rev ? cfg::win_t(0) : trav_[i]) + d[i];
             const cfg::k_t mag = dn[i] < 0 ? cfg::k_t(-dn[i]) : cfg::k_t(dn[i]);
             if (mag >= r.win_k) kclose = true;
-            s = s + uint<cfg::W_S>(uint<2 * cfg::W_K>(mag) * mag);
+            a_sq_[i] = cfg::sq_t(uint<2 * cfg::W_K>(mag) * mag);  // a 5-bit square: a table
         }
         LX_LOOP(axis_close) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
@@ -456,7 +466,6 @@ public:
         }
         a_rev_ = rev;
         a_kclose_ = kclose;
-        a_s_ = s;
         a_pulse_ = ps_pulse;
         a_v_ = true;
         bool inw = true;
@@ -498,13 +507,22 @@ private:
     }
 
     void reset_track() {
-        LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) trav_[i] = 0;
+        LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) {
+#pragma HLS UNROLL
+            trav_[i] = 0;
+            a_sq_[i] = 0;
+        }
         a_rev_ = false;
         a_kclose_ = false;
-        a_s_ = 0;
         a_pulse_ = false;
         a_inwin_ = false;
         a_v_ = false;
+        q_s_ = 0;
+        q_rev_ = false;
+        q_kclose_ = false;
+        q_pulse_ = false;
+        q_inwin_ = false;
+        q_v_ = false;
         r_y_ = 0;
         r_inwin_ = false;
         r_v_ = false;
@@ -577,7 +595,10 @@ private:
     // stage A
     cfg::win_t trav_[cfg::N_AXES];
     bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;
-    cfg::s_t a_s_;
+    cfg::sq_t a_sq_[cfg::N_AXES];  // |Dn_i|^2 of this call's travel (the terms of the ROM address)
+    // stage Q
+    cfg::s_t q_s_;                 // ROM address (the block RAM's address register)
+    bool q_rev_, q_kclose_, q_pulse_, q_inwin_, q_v_;
     cfg::inc_t ph_;
     pos_t ps_cnt_;
     // minimum-spacing product (sequenced)

@@ -11,7 +11,7 @@
 // accuracy:  firing position against the ideal continuous path (point at k * distance of arc
 //            length), in nm, for K = 1, 4, 8, 16 on lines, arcs, reversals, polylines (2D and
 //            3D), printed as a table; regression bounds for the default K = 16 (beyond the
-//            FIRE_LAT = 6 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
+//            FIRE_LAT = 7 clocks of travel of the pipeline: 3.5 counts on corner-free paths, 6
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
