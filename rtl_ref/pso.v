@@ -19,14 +19,17 @@
 // the reads below forward accordingly).
 //
 // Stages (registers before the edge; §2.4):
-//   A   this call's steps: tracking window (travel D per axis, reversal / |D| >= K closes), ROM
-//       address s = sum D^2 (the address register of the ROM's block RAM: hls a_s); part-speed
-//       phase accumulator (clamped to INC_MAX), pulse count; window operands; minimum-spacing
-//       shift-add (sample every 17 calls).
+//   A   this call's steps: tracking window (travel D per axis, reversal / |D| >= K closes; the
+//       close three LUT levels from registers), the squares D_i^2 of the new travel (hls a_sq);
+//       part-speed phase accumulator (clamped to INC_MAX), pulse count; window operands;
+//       minimum-spacing shift-add (sample every 17 calls).
+//   Q   the ROM address s = sum D_i^2 from A's squares (a carry-save layer and one chain; the
+//       address register of the ROM's block RAM: hls q_s); the window position (source 3: the
+//       pulse count after the pulse of A's call) and edges registered.
 //   R   chord ROM (769 x 37 bits, filled at elaboration by the same digit-by-digit square root
-//       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (a_rev ?
-//       0 : part), the growth of the estimate; part' = a_kclose ? 0 : chord; the window
-//       compares.
+//       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (q_rev ?
+//       0 : part), the growth of the estimate; part' = q_kclose ? 0 : chord; the window
+//       compares (in 19-bit halves, combined in B1).
 //   B1  Y - th for the four prefetched thresholds (entries next .. next^4 of the index before
 //       the last call's move, or fire_dist; the first operands of a run take the start
 //       threshold thr as the first), straight from registers: no select in front of the adds;
@@ -39,13 +42,13 @@
 //       registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry out of lo
 //       added into hi at the next update, and a flag "hi[27:0] all ones" formed beside the
 //       update without a carry chain: sign = hi[28] ^ (c & ones)); u' = u + (u >= 0 ? Y - thF
-//       : Y), both sums formed from registers and picked by the sign: one 29-bit chain and a
-//       select. A fire (or the run start) takes the next threshold (thr). Array index. The
+//       : Y), the sums formed from registers (after a fire for both candidates of the last
+//       call's move) and picked by the move and the sign: one 29-bit chain and selects. A fire (or the run start) takes the next threshold (thr). Array index. The
 //       decision goes into registers only (c_fire, the index move).
 //   B3  applies the decision of the last call (c_fire): fire / emit, pulse timer, overlap /
 //       frequency flags, counters, dist = u (+ thr if it did not fire) resolved from the
 //       registered halves, the index and done outputs.
-// A step in call t fires in call t + 6.
+// A step in call t fires in call t + 7.
 //
 // Array RAM (64 x 56): five copies (one read port each, the write port shared), read in call
 // t - 2 at next(idx) .. next^5(idx) of that call. Threshold prefetch: in call t - 1 four of the
@@ -126,6 +129,7 @@ module pso (
     localparam integer W_K      = `LX_PSO_W_K;
     localparam integer S_MAX    = `LX_PSO_S_MAX;   // 3 K_MAX^2
     localparam integer W_S      = `LX_PSO_W_S;
+    localparam integer W_SQ     = 2 * W_K - 1;   // |Dn|^2 <= K_MAX^2 = 2^(2 (W_K - 1))
     localparam integer W_CHORD  = `LX_PSO_W_CHORD;
     localparam integer W_INCR   = `LX_PSO_W_INCR;  // x, y
     localparam integer W_POS    = `LX_W_POS;
@@ -215,6 +219,7 @@ module pso (
     reg                     f_enable_q, f_part_speed_q, f_arr_en_q, f_arr_wrap_q, f_win_en_q, f_clear_q;
     reg [2:0]               f_axis_mask_q;
     reg [4:0]               f_win_k_q;
+    reg                     f_k1_q;       // f_win_k_q <= 1, registered with it (from z1)
     reg [6:0]               f_arr_len_q;
     reg [W_PW-1:0]          f_pulse_w_q;
     reg [1:0]               f_win_src_q;
@@ -250,14 +255,18 @@ module pso (
     reg [11:0]              ta_q;         // |D| per axis (4 bits each, axis 0 low)
     reg [2:0]               tp_q, tn_q;   // D > 0, D < 0 per axis
     reg [2:0]               tr_q;         // the tracked axes of this call
+    reg [2:0]               gs_q;         // per axis: tracked ? ge1 : ge0 (the close if a step
+                                          //   comes on that axis), and K <= 1 on a tracked axis
+    reg [2:0]               k1t_q;        //   (the close after a reversal), formed a call ahead
     reg [2:0]               ge0_q, ge1_q; // |D| >= K, |D| + 1 >= K per axis (K in force in this
                                           //   call: formed in the last call with the K presented)
     reg                     a_rev_q, a_kclose_q, a_pulse_q, a_v_q;
+    reg [3*W_SQ-1:0]        a_sq_q;       // |Dn|^2 per axis (axis 0 low): the ROM address's terms
     reg                     a_wen_q;      // window of this call: enable, position, edges (the
     reg signed [W_POS-1:0]  a_wp_q, a_wlo_q, a_whi_q;   //   compares are in stage R; source 3,
     reg                     a_w3_q;                      //   the pulse count: ps_cnt itself)
-    reg [W_CHORD-1:0]       rom_q;        // ROM data at the address s of the last call (block
-                                          //   RAM, not reset: masked by a_v)
+    reg [W_CHORD-1:0]       rom_q;        // ROM data at the address s of the last call's stage Q
+                                          //   (block RAM, not reset: masked by q_v)
     reg [W_INC-1:0]         ph_q;
     reg signed [W_POS-1:0]  ps_b_q, ps_i_q;   // pulse count before the last call's pulse
                                           //   (a_pulse), and it + 1: the count is one of the two
@@ -274,12 +283,16 @@ module pso (
     reg [W_PROD-1:0]        sp_thr_q;     // its threshold, low 48 bits
     reg [W_SPHI-1:0]        sp_hi_q;
     reg [W_GAP-1:0]         sp_lo_q;
+    // stage Q (the ROM address)
+    reg                     q_rev_q, q_kclose_q, q_pulse_q, q_v_q;
+    reg                     q_wen_q;      // window enable, position (source 3: the pulse count
+    reg signed [W_POS-1:0]  q_w_q, q_wlo_q, q_whi_q;   //   after the pulse of A's call) and edges
     // stage R
     reg [W_INCR-1:0]        r_y_q;        // Y: the growth of the estimate
     reg [W_CHORD-1:0]       part_q;       // chord of the open window
     reg                     r_v_q;
     reg                     r_wen_q;      // window enable, and the window compares in halves:
-    reg [5:0]               r_wc_q;       //   hls r_inwin = !r_wen || (lo <= w && w <= hi), below
+    reg [5:0]               r_wc_q;       //   hls a_inwin = !a_wen || (lo <= w && w <= hi), below
     // stage B1
     reg [W_INCR-1:0]        p_y_q;
     reg [W_REM-1:0]         p_d1_q, p_d2_q, p_d3_q, p_d4_q;   // Y - th1 .. Y - th4
@@ -314,7 +327,11 @@ module pso (
     reg [6:0]               idx_o_q;
     reg                     done_o_q;
     reg [W_PW-1:0]          timer_q;
-    reg [W_GAP-1:0]         since_q;
+    // calls since the last emit (hls since_, saturating at 2^16 - 1), held as ~(since + 2) in
+    // W_GAP + 1 bits, and the laser-period compare of the next call made one call early (fc):
+    // fc = since + 1 < min_period, with the min_period of the next call (the value presented now)
+    reg [W_GAP:0]           nsp2_q;
+    reg                     fc_q;
     reg [W_FCNT-1:0]        fire_cnt_q;
     reg [W_OVL-1:0]         ovl_cnt_q;
     reg                     overlap_st_q, rate_over_st_q, spacing_st_q, freq_st_q;
@@ -429,13 +446,15 @@ module pso (
         end
     endfunction
 
-    // upper half of u: a + b + c (LH bits, one chain: {a, c} + {b, c})
+    // upper half of u: a + b + c (LH bits, one chain: {a, 1} + {b, c}, whose carry out of bit 0
+    // is c; {a, c} + {b, c} put the net c on two inputs of one logic cell, which nextpnr's
+    // router could not route: one arc ripped up again and again at some seeds)
     function [LH-1:0] hi_add;
         input [LH-1:0] a, b;
         input          c;
         reg   [LH:0]   t;
         begin
-            t = {a, c} + {b, c};
+            t = {a, 1'b1} + {b, c};
             hi_add = t[LH:1];
         end
     endfunction
@@ -518,7 +537,7 @@ module pso (
     // with both index registers, picked by adv_q after the compare; the forward is the last
     // select (pwk: the write hits entry k of the next call in array mode; th1 of the run's first
     // operands is the start threshold)
-    wire              nf    = a_v_q && !r_v_q;   // the next call's B1 makes the run's first operands
+    wire              nf    = q_v_q && !r_v_q;   // the next call's B1 makes the run's first operands
     wire              pwe   = i_arr_we && arr_en_e;
     wire              eq1   = (i_arr_addr == nx_p_q[5:0]);
     wire              eq2   = (i_arr_addr == nx2_p_q[5:0]);
@@ -577,11 +596,16 @@ module pso (
     // all ones (u_ao): one LUT of registers. Both sums are formed from registers (the fire
     // candidate picked by adv_q, a register, before the add) and picked by the sign.
     wire             pos    = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q));   // u >= 0
-    wire [W_REM-1:0] opf    = adv_q ? b_opf1_q : b_opf0_q;
     wire [W_DIST-1:0] thf   = adv_t_q ? b_thf1_q : b_thf0_q;
     wire [LH-1:0]    yhi    = {{(2*LH-W_INCR){1'b0}}, b_y_q[W_INCR-1:LH]};
-    wire [LH:0]      sf_lo  = {1'b0, u_lo_q} + {1'b0, opf[LH-1:0]};
-    wire [LH-1:0]    sf_hi  = hi_add(u_hi_q, opf[W_REM-1:LH], u_c_q);
+    // (both candidates summed, the pick by adv after the chains: adv_q is the last call's
+    // decision, with a fanout of one select per bit)
+    wire [LH:0]      sf0_lo = {1'b0, u_lo_q} + {1'b0, b_opf0_q[LH-1:0]};
+    wire [LH:0]      sf1_lo = {1'b0, u_lo_q} + {1'b0, b_opf1_q[LH-1:0]};
+    wire [LH-1:0]    sf0_hi = hi_add(u_hi_q, b_opf0_q[W_REM-1:LH], u_c_q);
+    wire [LH-1:0]    sf1_hi = hi_add(u_hi_q, b_opf1_q[W_REM-1:LH], u_c_q);
+    wire [LH:0]      sf_lo  = adv_q ? sf1_lo : sf0_lo;
+    wire [LH-1:0]    sf_hi  = adv_q ? sf1_hi : sf0_hi;
     wire             sf_ao0 = ones_lo(u_hi_q[LH-2:0], b_opf0_q[W_REM-2:LH], u_c_q);   // (both
     wire             sf_ao1 = ones_lo(u_hi_q[LH-2:0], b_opf1_q[W_REM-2:LH], u_c_q);   //  candidates)
     wire             sf_ao  = adv_q ? sf_ao1 : sf_ao0;
@@ -619,12 +643,21 @@ module pso (
     wire             fire   = c_fire_q;
     wire             emit   = fire && c_inwin_q;
     wire             overlap  = emit && (timer_q != 16'd0);
-    wire             freq_err = emit && (f_min_period_q != 16'd0) &&
-                                (({1'b0, since_q} + 17'd1) < {1'b0, f_min_period_q});
+    // (since + 1 < min_period implies min_period != 0)
+    wire             freq_err = emit && fc_q;
     wire [W_PW-1:0]  timer_n  = (timer_q != 16'd0) ? timer_q - 16'd1 : 16'd0;   // no emit
     wire [W_PW-1:0]  timer_d  = emit ? f_pulse_w_q : timer_n;
     wire             pulse_d  = emit ? (f_pulse_w_q != 16'd0) : (timer_n != 16'd0);
-    wire [W_GAP-1:0] since_d  = emit ? 16'd0 : (since_q != 16'hffff) ? since_q + 16'd1 : since_q;
+    // since' = 0 after an emit: 1 < min_period'; since' = since + 1: since + 2 < min_period', the
+    // carry of min_period' + ~(since + 2) (one chain from a register and the presented value);
+    // since saturated: 2^16 < min_period' never
+    localparam [W_GAP:0] NSP2_MAX = ~({1'b0, {W_GAP{1'b1}}} + {{(W_GAP-1){1'b0}}, 2'd2});
+    localparam [W_GAP:0] NSP2_TWO = ~{{(W_GAP-1){1'b0}}, 2'd2};
+    wire [W_GAP+1:0] fc_s     = {2'b00, i_min_period} + {1'b0, nsp2_q};
+    wire             sat      = nsp2_q == NSP2_MAX;
+    wire [W_GAP:0]   nsp2_d   = emit ? NSP2_TWO : sat ? nsp2_q : nsp2_q - {{W_GAP{1'b0}}, 1'b1};
+    wire             fc_d     = emit ? (i_min_period[W_GAP-1:1] != {(W_GAP-1){1'b0}})
+                                     : (!sat && fc_s[W_GAP+1]);
     wire [W_FCNT-1:0] fire_cnt_d = emit ? fire_cnt_q + 32'd1 : fire_cnt_q;
     // clear acts first, an event of this call sets its flag again
     wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
@@ -698,23 +731,30 @@ module pso (
     //   |Dn_i| = (rev ? 0 : |D_i|) + |d_i|, and its square = rev ? |d_i| : (|d_i| ? (|D_i| + 1)^2
     //            : |D_i|^2) (squares of the 4-bit register: LUTs)
     //   kclose = some |Dn_i| >= K (compares of the register with K, picked by rev and the move)
-    wire       k1 = (f_win_k_q <= 5'd1);
+    // (compares with a constant as bit logic: Yosys maps them to a carry chain with an inverter
+    // per bit; K <= 1 is a register beside K)
+    wire       k1 = f_k1_q;
     // the compares with K of the next call (K presented now) for the values |D| can take next:
     // 0, 1 (after a close or a reversal), |D|, |D| + 1 (registered as ge0, ge1 with the new |D|)
     wire       z0 = (i_win_k == 5'd0);
-    wire       z1 = (i_win_k <= 5'd1);
-    wire       z2 = (i_win_k <= 5'd2);
+    wire       z1 = (i_win_k[4:1] == 4'd0);
+    wire       z2 = (i_win_k[4:2] == 3'd0) && !(i_win_k[1] && i_win_k[0]);
     wire [2:0] stp = {i_step2 == 2'sd1, i_step1 == 2'sd1, i_step0 == 2'sd1};
     wire [2:0] stm = {i_step2 == -2'sd1, i_step1 == -2'sd1, i_step0 == -2'sd1};
     // tracked axes (hls: run ? mask & !ps : the values in force), a register: loaded while the
     // tracking state is in reset with the values presented (in force in the next call, which
     // may start the run and latch them), then kept for the run
     wire [2:0] tr  = tr_q;
-    wire [2:0] rev_i = (stp & tn_q) | (stm & tp_q);
-    wire       rev = |rev_i;
+    // (kept nets, so that the close is three LUT levels: rev_i and the per-axis closes; rev and
+    // the two closes; the pick)
+    (* keep *) wire [2:0] rev_i;
+    (* keep *) wire       rev;
+    assign rev_i = (stp & tn_q) | (stm & tp_q);
+    assign rev   = |rev_i;
     wire [2:0] up  = stp & tr;
     wire [2:0] dw  = stm & tr;
     wire [2:0] mv  = up | dw;
+    wire [2:0] nz  = stp | stm;   // a step on the axis, tracked or not
     wire [8:0] sqs [0:2];
     wire [2:0] kc;
     wire [3:0] ta_n [0:2];
@@ -727,7 +767,7 @@ module pso (
             wire [8:0] sq1  = sq4p1(a);
             wire [4:0] magn = (rev ? 5'd0 : {1'b0, a}) + {4'd0, mv[ax]};
             assign sqs[ax]  = mv[ax] ? sq1 : sq0;     // without a reversal
-            assign kc[ax]   = mv[ax] ? ge1_q[ax] : ge0_q[ax];   // the close without a reversal
+            assign kc[ax]   = nz[ax] ? gs_q[ax] : ge0_q[ax];   // the close without a reversal
             assign p0[ax]   = ({1'b0, a} >= i_win_k);
             assign p1[ax]   = ({1'b0, a} + 5'd1 >= i_win_k);
             assign p2[ax]   = ({1'b0, a} + 5'd2 >= i_win_k);
@@ -736,11 +776,20 @@ module pso (
     endgenerate
     // after a reversal |Dn_i| = |d_i| <= 1: a close iff K <= 1 and an axis moves (K = 0 is an
     // invalid configuration, never in force in a run); the decision last, on rev
-    wire           kclose = rev ? (k1 && (|mv)) : (|kc);
+    // (three LUT levels from registers: rev_i, then rev and the two closes, then the pick)
+    (* keep *) wire kc_r;   // the close after a reversal
+    (* keep *) wire kc_n;   // the close without one
+    assign kc_r = |(k1t_q & nz);
+    assign kc_n = |kc;
+    wire           kclose = rev ? kc_r : kc_n;
     // after a reversal s is the number of moving axes; the pick on rev after the sum
-    wire [W_S-1:0] s_nr   = {1'b0, sqs[0]} + {1'b0, sqs[1]} + {1'b0, sqs[2]};
-    wire [W_S-1:0] s_d    = rev ? {8'd0, (mv[0] & mv[1]) | (mv[2] & (mv[0] | mv[1])), mv[0] ^ mv[1] ^ mv[2]}
-                                : s_nr;
+    wire [3*W_SQ-1:0] sq_d = rev ? {8'd0, mv[2], 8'd0, mv[1], 8'd0, mv[0]} : {sqs[2], sqs[1], sqs[0]};
+    // stage Q: the ROM address s = sum |Dn_i|^2 from the registered squares (a 3:2 carry-save
+    // layer, then one chain)
+    wire [W_SQ-1:0] sq_0 = a_sq_q[W_SQ-1:0], sq_1 = a_sq_q[2*W_SQ-1:W_SQ], sq_2 = a_sq_q[3*W_SQ-1:2*W_SQ];
+    wire [W_SQ-1:0] s_x = sq_0 ^ sq_1 ^ sq_2;
+    wire [W_SQ-1:0] s_c = (sq_0 & sq_1) | (sq_0 & sq_2) | (sq_1 & sq_2);
+    wire [W_S-1:0] s_d    = {1'b0, s_x} + {s_c, 1'b0};
     wire [11:0]    ta_d   = kclose ? 12'd0 : {ta_n[2], ta_n[1], ta_n[0]};
     wire [2:0]     tp_d   = (up | (tp_q & {3{!rev}})) & {3{!kclose}};
     wire [2:0]     tn_d   = (dw | (tn_q & {3{!rev}})) & {3{!kclose}};
@@ -751,32 +800,33 @@ module pso (
                                                    : ((mv & p2) | (~mv & p1));
     // window
     wire signed [W_POS-1:0] wp = (f_win_src_q == 2'd2) ? i_pos2 : (f_win_src_q == 2'd1) ? i_pos1 : i_pos0;
-    // (the compares are made in stage R from the registered operands: a_inwin of hls/ is
+    // (the compares are made in stage R from Q's registered operands: a_inwin of hls/ is
     // !a_wen || (a_wlo <= a_wp && a_wp <= a_whi))
     // (source 3: the count after the last call's pulse is ps_cnt now)
     wire signed [W_POS-1:0] a_w = a_w3_q ? ps_cnt : a_wp_q;
     // Each compare as a 19-bit upper part (signed: <, <=) and a 19-bit lower part (unsigned <=),
     // registered in R and combined in B1 (the window result is used in B3):
     //   lo <= w  iff  lo_u < w_u || (lo_u <= w_u && lo_l <= w_l), and w <= hi likewise
-    wire [5:0] r_wc_d = {($signed(a_wlo_q[37:19]) <  $signed(a_w[37:19])),
-                         ($signed(a_wlo_q[37:19]) <= $signed(a_w[37:19])),
-                         (a_wlo_q[18:0] <= a_w[18:0]),
-                         ($signed(a_w[37:19]) <  $signed(a_whi_q[37:19])),
-                         ($signed(a_w[37:19]) <= $signed(a_whi_q[37:19])),
-                         (a_w[18:0] <= a_whi_q[18:0])};
+    // (stage Q registers the position, stage R compares, B1 combines)
+    wire [5:0] r_wc_d = {($signed(q_wlo_q[37:19]) <  $signed(q_w_q[37:19])),
+                         ($signed(q_wlo_q[37:19]) <= $signed(q_w_q[37:19])),
+                         (q_wlo_q[18:0] <= q_w_q[18:0]),
+                         ($signed(q_w_q[37:19]) <  $signed(q_whi_q[37:19])),
+                         ($signed(q_w_q[37:19]) <= $signed(q_whi_q[37:19])),
+                         (q_w_q[18:0] <= q_whi_q[18:0])};
     wire b_inwin_d = r_v_q && (!r_wen_q || ((r_wc_q[5] || (r_wc_q[4] && r_wc_q[3])) &&
                                             (r_wc_q[2] || (r_wc_q[1] && r_wc_q[0]))));
 
     // ---- stage R: the growth of the estimate from the ROM data -----------------------------------
-    // rom_q is ROM[s] of the last call's stage A while a_v = 1 (the last call ran); while a_v = 0
-    // (a run's first call, or no run) Y and part are stored as 0, as hls (a_s = 0 there).
-    // Y = chord + one - (a_rev ? 0 : part) = cp + ~pm + 1 (a generator pulse, 1.0 = bit 32, only
+    // rom_q is ROM[s] of the last call's stage Q while q_v = 1 (the call before ran); while q_v = 0
+    // (a run's first call, or no run) Y and part are stored as 0, as hls (q_s = 0 there).
+    // Y = chord + one - (q_rev ? 0 : part) = cp + ~pm + 1 (a generator pulse, 1.0 = bit 32, only
     // comes with chord 0 and part 0, so chord + one = chord | one)
-    wire [W_INCR-1:0]  cp  = {1'b0, rom_q | {a_pulse_q, {D_FRAC{1'b0}}}};
-    wire [W_INCR-1:0]  pm  = {1'b0, a_rev_q ? {W_CHORD{1'b0}} : part_q};
+    wire [W_INCR-1:0]  cp  = {1'b0, rom_q | {q_pulse_q, {D_FRAC{1'b0}}}};
+    wire [W_INCR-1:0]  pm  = {1'b0, q_rev_q ? {W_CHORD{1'b0}} : part_q};
     wire [W_INCR-1:0]  y_d = csel19(cp, ~pm, 1'b1);
-    wire [W_CHORD-1:0] part_d = a_kclose_q ? {W_CHORD{1'b0}} : rom_q;
-    wire               r_clr  = rst_trk || !a_v_q;
+    wire [W_CHORD-1:0] part_d = q_kclose_q ? {W_CHORD{1'b0}} : rom_q;
+    wire               r_clr  = rst_trk || !q_v_q;
 
     // ---- register update -----------------------------------------------------------------------
     // register stage (reset values of pso_regs after i_rst), the check, the bad-entry map
@@ -786,6 +836,7 @@ module pso (
             f_part_speed_q <= 1'b0;
             f_axis_mask_q <= 3'd3;
             f_win_k_q <= 5'd16;
+            f_k1_q <= 1'b0;
             f_arr_en_q <= 1'b0;
             f_arr_len_q <= 7'd1;
             f_arr_wrap_q <= 1'b0;
@@ -808,6 +859,7 @@ module pso (
             f_part_speed_q <= i_part_speed;
             f_axis_mask_q <= i_axis_mask;
             f_win_k_q <= i_win_k;
+            f_k1_q <= z1;
             f_arr_en_q <= i_arr_en;
             f_arr_len_q <= i_arr_len;
             f_arr_wrap_q <= i_arr_wrap;
@@ -855,7 +907,7 @@ module pso (
         thn4_q <= ~th4_d;
     end
 
-    // chord ROM: the block RAM registers this call's address s (stage A), its data is used in
+    // chord ROM: the block RAM registers this call's address s (stage Q), its data is used in
     // the next call (stage R); no reset
     always @(posedge i_clk) begin
         rom_q <= rom[s_d];
@@ -931,6 +983,9 @@ module pso (
             tr_q <= i_rst ? 3'd3 : (i_axis_mask & {3{!i_part_speed}});   // (reset values: mask 3, no ps)
             ge0_q <= {3{!i_rst && z0}};   // |D| = 0 in the next call (K = 16 after i_rst)
             ge1_q <= {3{!i_rst && z1}};
+            gs_q <= i_rst ? 3'd0 : ((i_axis_mask & {3{!i_part_speed}} & {3{z1}}) |
+                                    (~(i_axis_mask & {3{!i_part_speed}}) & {3{z0}}));
+            k1t_q <= i_rst ? 3'd0 : (i_axis_mask & {3{!i_part_speed}} & {3{z1}});
             a_rev_q <= 1'b0;
             a_kclose_q <= 1'b0;
             a_pulse_q <= 1'b0;
@@ -940,6 +995,15 @@ module pso (
             a_wlo_q <= {W_POS{1'b0}};
             a_whi_q <= {W_POS{1'b0}};
             a_v_q <= 1'b0;
+            a_sq_q <= {3*W_SQ{1'b0}};
+            q_rev_q <= 1'b0;
+            q_kclose_q <= 1'b0;
+            q_pulse_q <= 1'b0;
+            q_v_q <= 1'b0;
+            q_wen_q <= 1'b0;
+            q_w_q <= {W_POS{1'b0}};
+            q_wlo_q <= {W_POS{1'b0}};
+            q_whi_q <= {W_POS{1'b0}};
             ph_q <= {W_INC{1'b0}};
             ps_b_q <= {W_POS{1'b0}};
             ps_i_q <= {{(W_POS-1){1'b0}}, 1'b1};
@@ -997,7 +1061,8 @@ module pso (
             stop1_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx2_0 == 7'd0);
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
-            since_q <= {W_GAP{1'b1}};
+            nsp2_q <= NSP2_MAX;
+            fc_q <= 1'b0;
             fire_q <= 1'b0;
             emit_q <= 1'b0;
             pulse_q <= 1'b0;
@@ -1020,6 +1085,8 @@ module pso (
             tn_q <= tn_d;
             ge0_q <= ge0_d;
             ge1_q <= ge1_d;
+            gs_q <= (tr_q & ge1_d) | (~tr_q & ge0_d);
+            k1t_q <= tr_q & {3{z1}};
             a_rev_q <= rev;
             a_kclose_q <= kclose;
             a_pulse_q <= ps_pulse;
@@ -1029,9 +1096,22 @@ module pso (
             a_wlo_q <= f_win_low_q;
             a_whi_q <= f_win_high_q;
             a_v_q <= 1'b1;
+            a_sq_q <= sq_d;
+            // Q
+            q_rev_q <= a_rev_q;
+            q_kclose_q <= a_kclose_q;
+            q_pulse_q <= a_pulse_q;
+            q_v_q <= a_v_q;
+            q_wen_q <= a_wen_q;
+            q_w_q <= a_w;
+            q_wlo_q <= a_wlo_q;
+            q_whi_q <= a_whi_q;
             ph_q <= ph_d;
             ps_b_q <= ps_cnt;
-            ps_i_q <= ps_cnt + 38'sd1;
+            // ps_i = ps_b + 1 always (both reset together, both follow ps_cnt), so ps_cnt + 1
+            // is ps_i + 1 after a pulse and ps_i itself otherwise: the increment starts at the
+            // register, the last call's pulse only enables it
+            if (a_pulse_q) ps_i_q <= ps_i_q + 38'sd1;
             sp_go_q <= sp_step && (sp_k_q == 5'd16) && sp_en_q;   // k = 0 and a sample held next
             if (sp_load) begin
                 sp_k_q <= 5'd1;
@@ -1054,9 +1134,9 @@ module pso (
                 end
             end
             // R (r_y, part: above)
-            r_wen_q <= a_wen_q;
+            r_wen_q <= q_wen_q;
             r_wc_q <= r_wc_d;
-            r_v_q <= a_v_q;
+            r_v_q <= q_v_q;
             // B1
             p_inwin_q <= b_inwin_d;
             p_v_q <= r_v_q;
@@ -1102,7 +1182,8 @@ module pso (
             idx_o_q <= idx_l;
             done_o_q <= done_q;
             timer_q <= timer_d;
-            since_q <= since_d;
+            nsp2_q <= nsp2_d;
+            fc_q <= fc_d;
             fire_q <= fire;
             emit_q <= emit;
             pulse_q <= pulse_d;
