@@ -185,7 +185,6 @@ public:
         rep_.reset();
         dds_.reset();
         emap_.reset();  // pipeline only, not the table RAM
-        dac_clip_st_ = false;
         // inter-block registers (0 / false): the block outputs in out_ (every axis_out member has
         // a default member initialiser), and those no output shows
         out_ = axis_out{};
@@ -309,6 +308,9 @@ private:
                 return;
             }
         }
+        // (cfg_err: false in every call that runs the blocks; a call of blocks() alone, tick's
+        // fast path, follows such a call, so it holds there)
+        out_.cfg_err = false;
         blocks(pins, regs);
     }
 
@@ -326,10 +328,9 @@ private:
         const dac_t dac_lo = chk_q_.dac_lo;
         o.sin = clamp_dac(dds.sin, dac_hi, dac_lo, clip);
         o.cos = clamp_dac(dds.cos, dac_hi, dac_lo, clip);
-        if (regs.clear) dac_clip_st_ = false;
-        if (clip) dac_clip_st_ = true;
-        o.dac_clip_st = dac_clip_st_;
-        o.cfg_err = false;
+        // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_)
+        if (regs.clear) o.dac_clip_st = false;
+        if (clip) o.dac_clip_st = true;
         // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
         // that produced them and shifted through two taps)
         o.ref_mark = dig_q3_.ref_mark;
@@ -387,7 +388,7 @@ private:
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
         swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
-        o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || dac_clip_st_;
+        o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || o.dac_clip_st;
     }
 
 private:
@@ -423,7 +424,6 @@ private:
     ratio_t ratio_h_ = laserax_top_cfg::RATIO_DEFAULT;  // ratio in force (held, see comp_sync)
     offset_t offset_h_ = 0;                           // comp_offset in force
     bool run_q_ = false;     // the previous call ran with a valid configuration
-    bool dac_clip_st_ = false;  // DAC range guard sticky flag
     alignas(16) axis_regs regs_q_ = axis_regs{};  // registers presented in the previous call (in force now)
     // configuration check of regs_q_ (registered with it) and the DAC code limit of its dac_width
     struct reg_check {
