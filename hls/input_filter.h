@@ -58,12 +58,16 @@ public:
     // the call of step() in the settled state (settled(pin)): only the pass decision is loaded
     void hold(cnt_t n) { ready_ = n <= 1; }
 
-    out_t step(bool pin, cnt_t n) {
+    // same: n is that of the previous call (a caller's register stage that knows it, e.g.
+    // laserax_top::tick; false by default): a settled filter is quiet (cnt = 0), so its pass
+    // decision holds n <= 1 of the previous call, and hold() would load the same value (issue 13:
+    // simulation speed; same outputs)
+    out_t step(bool pin, cnt_t n, bool same = false) {
         // settled (quiet_: valid, cnt = 0, s1 = s2 = f) and the pin still at that level: the call
         // below would hold every register but the pass decision (cnt + 1 = 1 >= N) and return
         // (f, 1, 0); a clock enable of the rest (issue 13: simulation speed; same outputs)
         if (settled(pin)) {
-            hold(n);
+            if (!same) hold(n);
             out_t q;
             q.f = f_;
             q.valid = true;

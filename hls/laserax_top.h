@@ -218,7 +218,7 @@ public:
         // reload: run() would skip its loads and checks, tbl_we in force is 0 (it fails the check)
         // and the block in force stays in force; only the blocks run
         if (fast_) {
-            blocks(pins, regs_q_);
+            blocks(pins, regs_q_, true);
             return out_;
         }
         clock(pins);
@@ -311,16 +311,20 @@ private:
         // (cfg_err: false in every call that runs the blocks; a call of blocks() alone, tick's
         // fast path, follows such a call, so it holds there)
         out_.cfg_err = false;
-        blocks(pins, regs);
+        blocks(pins, regs, false);
     }
 
-    // the blocks of one running call on the registers in force (run() made the checks)
-    void blocks(const axis_pins& pins, const axis_regs& regs) {
+    // the blocks of one running call on the registers in force (run() made the checks); same: the
+    // registers in force (and ratio_h_, offset_h_, chk_q_) are those of the previous call, which
+    // ran the blocks too (tick's fast path; a constant in each caller). A block then skips the
+    // loads of registers formed from them that would load the values they hold (C simulation:
+    // issue 13, simulation speed; false in synthesis)
+    void blocks(const axis_pins& pins, const axis_regs& regs, bool same) {
         // Every block reads only inter-block registers of the previous call, so the order of the
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
         axis_out& o = out_;
-        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude);
+        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude, same);
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         const dac_t dac_hi = chk_q_.dac_hi;
@@ -343,7 +347,7 @@ private:
         // latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
         const rephase::out_t rep = rep_.step(o.pstep, swf_q_.f, swf_q_.valid, regs.rehome, lerr_q_,
-                                             regs.period, regs.mark_len);
+                                             regs.period, regs.mark_len, same);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
         o.ostep = rep.ostep;
@@ -363,7 +367,7 @@ private:
             }
         }
         const output_pacer::out_t pac =
-            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
+            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear, same);
         o.ovs_backlog_st = pac.ovs_st;
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
@@ -371,11 +375,11 @@ private:
         o.map_cfg_err = emap.cfg_err;
         o.corr = emap.corr;
         o.map_delta = emap.delta;
-        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_);
+        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
         const quad_decoder::out_t dec =
-            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear, same);
         o.step = dec.step;
         if (!dec.held) {  // (held: the other decoder outputs are those out_ and lerr_q_ hold)
             lerr_q_ = dec.lerr;
@@ -387,7 +391,7 @@ private:
             o.raw_count = dec.raw_count;
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
-        swf_q_ = swf_.step(pins.sw, regs.sw_debounce);
+        swf_q_ = swf_.step(pins.sw, regs.sw_debounce, same);
         o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || o.dac_clip_st;
     }
 

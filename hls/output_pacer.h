@@ -93,7 +93,10 @@ public:
         o_held_ = false;
     }
 
-    out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear) {
+    // same: pace_m, thr and clear are those of the previous call (a caller's register stage that
+    // knows it, e.g. laserax_top::tick; false by default): after every call thr_q_ holds that
+    // call's thr, so thr == thr_q_ is known true (issue 13: simulation speed; same outputs)
+    out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear, bool same = false) {
         // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
         // (the trees are read only with timer = 0 and e_prev = 0: formed only then)
         step_t emit = 0;
@@ -123,7 +126,7 @@ public:
         // ---- ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr of this call ----
         // (held: o_y1, o_y0, o_cl were formed from these b_* and thr_q_ == thr, so the same values
         // would be loaded again: a clock enable; issue 13: simulation speed)
-        if (!(o_held_ && thr == thr_q_)) {
+        if (!(o_held_ && (same || thr == thr_q_))) {
             ovs_stage1(thr);
         }
 

@@ -143,14 +143,18 @@ public:
         comp_ = ci_;
     }
 
-    out_t step(step_t step, ratio_t ratio, offset_t offset) {
+    // same: ratio and offset are those of the previous call (a caller's register stage that knows
+    // it, e.g. laserax_top::tick; false by default). In a quiet call pend_ = 0 says the pair of
+    // the previous call equalled (r_use_, off_tgt_), which a quiet call holds, so with the same
+    // pair the registered compare loads 0 again (issue 13: simulation speed; same outputs)
+    out_t step(step_t step, ratio_t ratio, offset_t offset, bool same = false) {
         // quiet call: no count, the sequencer idle and none starting (pend_ = 0), after at least
         // three such calls (quiet_). Then lo, N, T are held, inc = c = 0 since the first of them,
         // hi, c2, T_hi_d since the second, comp_int since the third, comp since the fourth: every
         // register holds but the registered compare (pend_) and delta = 0 (a clock enable of the
         // rest; issue 13: simulation speed; same outputs)
         if (step == 0 && !busy_ && !pend_ && quiet_ == cfg::QUIET) {
-            pend_ = ratio != r_use_ || offset != off_tgt_;
+            if (!same) pend_ = ratio != r_use_ || offset != off_tgt_;
             out_t q;
             q.comp = comp_;
             q.delta = 0;

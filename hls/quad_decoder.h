@@ -70,8 +70,12 @@ public:
         idle_key_ = cfg::IDLE_NONE;
     }
 
+    // same: glitch_n, min_spacing and clear are those of the previous call (a caller's register
+    // stage that knows it, e.g. laserax_top::tick; false by default): in an idle call the three
+    // filters are quiet (cnt = 0), so their pass decisions hold glitch_n <= 1 of the previous
+    // call, and hold() would load the same value (issue 13: simulation speed; same outputs)
     out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
-               bool clear) {
+               bool clear, bool same = false) {
         // the three filters settled at the pin levels (so A' = pa, B' = pb: no count, no glitch),
         // the laser error filter at 0, primed and no clear: the call below holds every register but
         // the filters' pass decisions and since / close (a clock enable of the rest; issue 13:
@@ -79,9 +83,11 @@ public:
         // call, packed, while primed, the three filters quiet and E = 0; IDLE_NONE otherwise: one
         // compare instead of eight tests)
         if (idle_pack(a, b, lerr, clear) == idle_key_) {
-            fa_.hold(glitch_n);
-            fb_.hold(glitch_n);
-            fe_.hold(glitch_n);
+            if (!same) {
+                fa_.hold(glitch_n);
+                fb_.hold(glitch_n);
+                fe_.hold(glitch_n);
+            }
             count_since(false, min_spacing);
             out_t q;
             q.step = 0;

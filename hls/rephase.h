@@ -132,8 +132,12 @@ public:
         z_ = 0;
     }
 
+    // same: period, mark_len and rehome are those of the previous call (a caller's register stage
+    // that knows it, e.g. laserax_top::tick; false by default): qh_ then implies pp == qp_ (qp_ is
+    // the P of the last quiet call, and qh_ says the previous call was one; issue 13: simulation
+    // speed; same outputs)
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
-               period_t mark_len) {
+               period_t mark_len, bool same = false) {
         const cfg::p_t pp = period;
         // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
         //    load in flight, no switch rise, no leave. Every register below then holds except
@@ -144,7 +148,7 @@ public:
         if (pstep == 0 && qk_ && !rehome && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
             // qh_: the previous call was quiet too, outside stage 2, with the same P: k, at_last,
             // tr, fresh, num and the mark tests then hold (formed from held registers and P)
-            if (!(qh_ && pp == qp_)) quiet_forms(pp);
+            if (!(qh_ && (same || pp == qp_))) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
             out_t q;
