@@ -188,7 +188,6 @@ public:
         // inter-block registers (0 / false): the block outputs in out_ (every axis_out member has
         // a default member initialiser), and those no output shows
         out_ = axis_out{};
-        swf_q_ = input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t{false, false, false};
         lerr_q_ = false;
         dec_alarm_ = false;
         dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
@@ -346,7 +345,7 @@ private:
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
-        const rephase::out_t rep = rep_.step(o.pstep, swf_q_.f, swf_q_.valid, regs.rehome, lerr_q_,
+        const rephase::out_t rep = rep_.step(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
                                              regs.period, regs.mark_len, same);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
@@ -391,7 +390,7 @@ private:
             o.raw_count = dec.raw_count;
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
-        swf_q_ = swf_.step(pins.sw, regs.sw_debounce, same);
+        swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
         o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || o.dac_clip_st;
     }
 
@@ -407,7 +406,6 @@ private:
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)
     axis_out out_;
-    input_filter<laserax_top_cfg::W_DEBOUNCE>::out_t swf_q_;
     bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
     bool dec_alarm_;  // the decoder's part of alarm: lerr_alarm || illegal_st || ovs_st (out_)
     // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
