@@ -80,11 +80,11 @@ public:
     // that call's P/4 and amp (the held path requires them equal), so the compares below are
     // known true (issue 13: simulation speed; same outputs)
     out_t step(step_t ostep, period_t period, cfg::amp_t amp, bool same = false) {
-        const cfg::r_t quarter = period >> 2;
         // read stage held: s1 / c1 are the codes of (q, r, P/4 of the previous call, amp_q) and of
         // the table (held_), and none of them changes in this call: the reads below would load
-        // the same codes again, the counter holds (a clock enable; issue 13: simulation speed)
-        if (held_ && ostep == 0 && (same || (quarter == qtr_prev_ && amp == amp_q_))) {
+        // the same codes again, the counter holds (a clock enable; issue 13: simulation speed; P/4
+        // is formed only where it is read)
+        if (held_ && ostep == 0 && (same || (cfg::r_t(period >> 2) == qtr_prev_ && amp == amp_q_))) {
             sin_ = s1_;
             cos_ = c1_;
             out_t h;
@@ -92,6 +92,7 @@ public:
             h.cos = cos_;
             return h;
         }
+        const cfg::r_t quarter = period >> 2;
         const cfg::r_t r_mirror = qtr_prev_ - r_;  // 1..P/4 of the previous call (r < that P/4)
         // r < P/4 <= 1024; the address is the low W_TBL_ADDR bits, as in the RAM (a period that
         // shrinks under a running block can take r past P/4: never out of the array)

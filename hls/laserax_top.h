@@ -391,7 +391,7 @@ private:
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
         swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
-        o.alarm = dec_alarm_ || pac.ovs_st || emap.cfg_err || o.dac_clip_st;
+        o.alarm = (dec_alarm_ | pac.ovs_st | emap.cfg_err | o.dac_clip_st) != 0;  // (one OR, no branches)
     }
 
 private:
