@@ -169,7 +169,7 @@ public:
 private:
     // the pins and clear of a call packed into one word (the idle-call key, see idle_key_)
     static unsigned idle_pack(bool a, bool b, bool lerr, bool clear) {
-        return unsigned(a) | (unsigned(b) << 1) | (unsigned(lerr) << 2) | (unsigned(clear) << 3);
+        return unsigned(a) + unsigned(b) * 2u + unsigned(lerr) * 4u + unsigned(clear) * 8u;  // (bits: + is |)
     }
 
     // the edge spacing counter (reset by a counted step, saturating) and the registered compare
