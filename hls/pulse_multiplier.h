@@ -152,8 +152,10 @@ public:
         // three such calls (quiet_). Then lo, N, T are held, inc = c = 0 since the first of them,
         // hi, c2, T_hi_d since the second, comp_int since the third, comp since the fourth: every
         // register holds but the registered compare (pend_) and delta = 0 (a clock enable of the
-        // rest; issue 13: simulation speed; same outputs; busy_ | pend_: one test of the two flags)
-        if (step == 0 && !(busy_ | pend_) && quiet_ == cfg::QUIET) {
+        // rest; issue 13: simulation speed; same outputs). busy_ is not tested: quiet_ != 0 implies
+        // busy_ = 0 (a start sets busy_ in a call with pend_ = 1, which is not quiet, and every call
+        // of a running sequencer is not quiet either, so quiet_ is 0 until a quiet call after its end)
+        if (step == 0 && !pend_ && quiet_ == cfg::QUIET) {
             if (!same) pend_ = ratio != r_use_ || offset != off_tgt_;
             out_t q;
             q.comp = comp_;
