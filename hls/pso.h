@@ -7,7 +7,7 @@
 //   stage A  (this call's inputs)  tracking window: per-axis signed travel D since the window
 //                                  start (|D| <= K_MAX); a reversal of a tracked axis closes the
 //                                  window at the previous position, |D_i| reaching K closes it at
-//                                  the current one; the squares D_i^2 of the new travel.
+//                                  the current one; the squares D_i^2 of the travel after the step.
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
