@@ -26,8 +26,8 @@
 // the next one: the DDS is instantiated without its write bypass.
 //
 // i_rst (synchronous, active high) is the power-up state of the C++ object: the first edge after
-// it is the power-up call (blocks in reset, cfg_err = 0, no registers in force yet). The table
-// RAM is not affected by any reset.
+// it is the power-up call (blocks in reset, cfg_err = 0, no registers in force yet: a table
+// write presented while i_rst is high is not made). The table RAM is not affected by any reset.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "laserax_widths.vh"
@@ -172,7 +172,8 @@ module laserax_top #(
     reg        [17:0]   r_amplitude;
     reg                 r_rehome;
     reg                 r_clear;
-    reg                 r_tbl_we;
+    reg                 r_tbl_we;        // (a write presented while i_rst is high, in force in
+                                         // the power-up call, is not made: dds_we below)
     reg        [9:0]    r_tbl_addr;
     reg        [16:0]   r_tbl_data;
     reg                 r_map_en;
@@ -310,6 +311,9 @@ module laserax_top #(
     // is the write in force in this call (none in the power-up call)
     wire        safe_next = !cfg_ok || (r_tbl_we && !pup_q) || (!safe_q && i_period != r_period);
     wire        blk_rst   = i_rst || safe_q;          // every block held in reset
+    // the DDS table write in force: none in the power-up call (the C++ model has no call in which
+    // a value presented while i_rst is high could be in force)
+    wire        dds_we    = r_tbl_we && !pup_q;
     always @(posedge i_clk) begin
         if (i_rst) begin
             safe_q    <= 1'b1;                        // the power-up call: blocks in reset
@@ -408,7 +412,7 @@ module laserax_top #(
     // no write bypass: a table write holds the safe state in its call and the next (DESIGN 4.6)
     dds_sincos #(.INIT_FILE(INIT_FILE), .WRITE_BYPASS(0)) u_dds (
         .i_clk(i_clk), .i_rst(blk_rst), .i_ostep(rep_ostep), .i_period(r_period), .i_qtr_m1(r_qtr_m1),
-        .i_amplitude(r_amplitude), .i_tbl_we(r_tbl_we), .i_tbl_addr(r_tbl_addr),
+        .i_amplitude(r_amplitude), .i_tbl_we(dds_we), .i_tbl_addr(r_tbl_addr),
         .i_tbl_data(r_tbl_data), .o_sin(dds_sin), .o_cos(dds_cos),
         .i_clip_hi(dac_hi_d), .o_sin_over(dds_sin_over), .o_cos_over(dds_cos_over));
 

@@ -801,6 +801,16 @@ def generate(b, command):
     o.append("        end\n")
     o.append("    endtask\n")
     o.append("\n")
+    o.append("    task ones_inputs;\n")
+    o.append("        begin\n")
+    for f in ins + uins:   # (addresses 0: a word the tables read early)
+        if f.port.endswith("_addr"):
+            o.append("            %s = %d'd0;\n" % (f.port, f.bits))
+        else:
+            o.append("            %s = {%d{1'b1}};\n" % (f.port, f.bits))
+    o.append("        end\n")
+    o.append("    endtask\n")
+    o.append("\n")
     o.append("    task check_outputs;\n")
     o.append("        begin\n")
     taps = any(n == "DEBUG_TAPS" for n, _, _ in tb_params)

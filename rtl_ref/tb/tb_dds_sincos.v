@@ -98,6 +98,19 @@ module tb_dds_sincos;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_ostep = {2{1'b1}};
+            i_period = {13{1'b1}};
+            i_amplitude = {18{1'b1}};
+            i_tbl_we = {1{1'b1}};
+            i_tbl_addr = 10'd0;
+            i_tbl_data = {17{1'b1}};
+            i_qtr_m1 = {11{1'b1}};
+            i_clip_hi = {18{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("sin", row[37:20], o_sin, 18, 1);

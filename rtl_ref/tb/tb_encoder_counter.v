@@ -218,6 +218,36 @@ module tb_encoder_counter;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_qstep0 = {2{1'b1}};
+            i_qstep1 = {2{1'b1}};
+            i_trig = {1{1'b1}};
+            i_pos0 = {32{1'b1}};
+            i_pos1 = {32{1'b1}};
+            i_src0 = {2{1'b1}};
+            i_src1 = {2{1'b1}};
+            i_sim_inc0 = {32{1'b1}};
+            i_sim_inc1 = {32{1'b1}};
+            i_sim_down0 = {1{1'b1}};
+            i_sim_down1 = {1{1'b1}};
+            i_scale0 = {32{1'b1}};
+            i_scale1 = {32{1'b1}};
+            i_rst_req0 = {1{1'b1}};
+            i_rst_req1 = {1{1'b1}};
+            i_load0 = {1{1'b1}};
+            i_load1 = {1{1'b1}};
+            i_load_val0 = {32{1'b1}};
+            i_load_val1 = {32{1'b1}};
+            i_rst_on_trig = {1{1'b1}};
+            i_corr_period = {16{1'b1}};
+            i_wait_arm = {1{1'b1}};
+            i_wait_ch = {1{1'b1}};
+            i_wait_val = {32{1'b1}};
+            i_wait_down = {1{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("cnt0", row[183:152], o_cnt0, 32, 1);

@@ -133,6 +133,24 @@ module tb_error_map;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_p = {38{1'b1}};
+            i_homed = {1{1'b1}};
+            i_map_en = {1{1'b1}};
+            i_bank_sel = {1{1'b1}};
+            i_origin0 = {38{1'b1}};
+            i_k0 = {5{1'b1}};
+            i_n0 = {11{1'b1}};
+            i_origin1 = {38{1'b1}};
+            i_k1 = {5{1'b1}};
+            i_n1 = {11{1'b1}};
+            i_we = {1{1'b1}};
+            i_addr = 10'd0;
+            i_data = {24{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("corr", row[52:36], o_corr, 17, 1);

@@ -73,6 +73,13 @@ module tb_input_filter;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_pin = {1{1'b1}};
+            i_n = {8{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("f", row[8:8], o_f, 1, 0);

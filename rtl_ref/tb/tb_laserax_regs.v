@@ -207,6 +207,20 @@ module tb_laserax_regs;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            s_axil_awaddr = {12{1'b1}};
+            s_axil_awvalid = {1{1'b1}};
+            s_axil_wdata = {32{1'b1}};
+            s_axil_wstrb = {4{1'b1}};
+            s_axil_wvalid = {1{1'b1}};
+            s_axil_bready = {1{1'b1}};
+            s_axil_araddr = {12{1'b1}};
+            s_axil_arvalid = {1{1'b1}};
+            s_axil_rready = {1{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("awready", row[544:544], s_axil_awready, 1, 0);

@@ -329,6 +329,45 @@ module tb_laserax_top;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_a = {1{1'b1}};
+            i_b = {1{1'b1}};
+            i_sw = {1{1'b1}};
+            i_lerr = {1{1'b1}};
+            i_period = {13{1'b1}};
+            i_ratio = {37{1'b1}};
+            i_comp_offset = {64{1'b1}};
+            i_comp_sync = {1{1'b1}};
+            i_comp_commit = {1{1'b1}};
+            i_glitch_n = {8{1'b1}};
+            i_sw_debounce = {16{1'b1}};
+            i_min_spacing = {16{1'b1}};
+            i_pace_m = {16{1'b1}};
+            i_backlog_thr = {32{1'b1}};
+            i_mark_len = {13{1'b1}};
+            i_dac_width = {5{1'b1}};
+            i_amplitude = {18{1'b1}};
+            i_tbl_period = {13{1'b1}};
+            i_rehome = {1{1'b1}};
+            i_clear = {1{1'b1}};
+            i_tbl_we = {1{1'b1}};
+            i_tbl_addr = 10'd0;
+            i_tbl_data = {17{1'b1}};
+            i_map_en = {1{1'b1}};
+            i_bank_sel = {1{1'b1}};
+            i_map_origin0 = {38{1'b1}};
+            i_map_k0 = {5{1'b1}};
+            i_map_n0 = {11{1'b1}};
+            i_map_origin1 = {38{1'b1}};
+            i_map_k1 = {5{1'b1}};
+            i_map_n1 = {11{1'b1}};
+            i_map_we = {1{1'b1}};
+            i_map_addr = 10'd0;
+            i_map_data = {24{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("sin", row[601:584], o_sin, 18, 1);

@@ -105,6 +105,16 @@ module tb_output_pacer;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_delta = {39{1'b1}};
+            i_pace_m = {16{1'b1}};
+            i_thr = {32{1'b1}};
+            i_clear = {1{1'b1}};
+            i_add = {18{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("pstep", row[89:88], o_pstep, 2, 1);

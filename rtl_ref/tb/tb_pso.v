@@ -237,6 +237,36 @@ module tb_pso;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_step0 = {2{1'b1}};
+            i_step1 = {2{1'b1}};
+            i_step2 = {2{1'b1}};
+            i_pos0 = {38{1'b1}};
+            i_pos1 = {38{1'b1}};
+            i_pos2 = {38{1'b1}};
+            i_ps_inc = {32{1'b1}};
+            i_enable = {1{1'b1}};
+            i_part_speed = {1{1'b1}};
+            i_axis_mask = {3{1'b1}};
+            i_win_k = {5{1'b1}};
+            i_fire_dist = {56{1'b1}};
+            i_arr_en = {1{1'b1}};
+            i_arr_len = {7{1'b1}};
+            i_arr_wrap = {1{1'b1}};
+            i_arr_we = {1{1'b1}};
+            i_arr_addr = 6'd0;
+            i_arr_data = {56{1'b1}};
+            i_pulse_w = {16{1'b1}};
+            i_win_en = {1{1'b1}};
+            i_win_src = {2{1'b1}};
+            i_win_low = {38{1'b1}};
+            i_win_high = {38{1'b1}};
+            i_min_period = {16{1'b1}};
+            i_clear = {1{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("fire", row[212:212], o_fire, 1, 0);

@@ -100,6 +100,14 @@ module tb_pulse_multiplier;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_step = {2{1'b1}};
+            i_ratio = {37{1'b1}};
+            i_comp_offset = {64{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("comp", row[77:40], o_comp, 38, 1);

@@ -110,6 +110,17 @@ module tb_quad_decoder;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_a = {1{1'b1}};
+            i_b = {1{1'b1}};
+            i_lerr = {1{1'b1}};
+            i_glitch_n = {8{1'b1}};
+            i_min_spacing = {16{1'b1}};
+            i_clear = {1{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("step", row[69:68], o_step, 2, 1);

@@ -148,6 +148,24 @@ module tb_rephase;
         end
     endtask
 
+    task ones_inputs;
+        begin
+            i_pstep = {2{1'b1}};
+            i_sw = {1{1'b1}};
+            i_sw_valid = {1{1'b1}};
+            i_rehome = {1{1'b1}};
+            i_unhome = {1{1'b1}};
+            i_period = {13{1'b1}};
+            i_mark_len = {13{1'b1}};
+            i_period_m1 = {14{1'b1}};
+            i_period_m2 = {14{1'b1}};
+            i_mark_len_n = {13{1'b1}};
+            i_pstep_nx = {2{1'b1}};
+            i_unhome_nx = {1{1'b1}};
+            i_rehome_nx = {1{1'b1}};
+        end
+    endtask
+
     task check_outputs;
         begin
             check("ostep", row[265:264], o_ostep, 2, 1);
