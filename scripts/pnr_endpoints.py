@@ -17,11 +17,14 @@ which says which logic cells use their flip-flop, this tool lists those endpoint
 (0.02 ns): the endpoint classification (or nextpnr's report format) is not what this tool assumes.
 
 Usage: pnr_endpoints.py POST_JSON REPORT_JSON [--top N] [--period NS] [--check]
-(scripts/synth_report.py --endpoints writes both files for every block it places.)
+       pnr_endpoints.py --selftest   (synthetic netlists and reports: the endpoint rules, the
+                                      counts, and --check failing on a disagreeing report)
+(scripts/synth_report.py writes both files for every block it places.)
 """
 import argparse
 import collections
 import json
+import os
 import re
 import sys
 
@@ -55,9 +58,7 @@ def is_endpoint(c, port):
 
 def stem(cell):
     """the HDL register a flip-flop cell comes from: the name before Yosys's mapping suffixes"""
-    s = re.sub(r"_SB_(DFF|LUT4|CARRY)\w*$", "", cell)
-    s = re.sub(r"_SB_(DFF|LUT4|CARRY).*$", "", s)
-    return s
+    return re.sub(r"_SB_(DFF|LUT4|CARRY).*$", "", cell)
 
 
 def critical(rep):
@@ -68,7 +69,7 @@ def critical(rep):
     return ref
 
 
-def analyse(post_path, rep_path, period):
+def analyse(post_path, rep_path):
     """{"rows": [(delay, cell, port, net)] worst first, "ref": nextpnr's critical path (ns) or
     None}; raises ValueError when the report lacks the detailed net timings."""
     cells, rep = load(post_path, rep_path)
@@ -139,7 +140,68 @@ def agrees(res, tol=0.02):
     return bool(res["rows"]) and res["ref"] is not None and abs(res["ref"] - res["rows"][0][0]) <= tol
 
 
+def selftest():
+    """synthetic routed netlists and reports: which sinks are endpoints, the counts, the register
+    groups, and the agreement check passing and failing; 0 if every case gives what it should"""
+    import tempfile
+    lc = lambda dff: {"type": "ICESTORM_LC", "parameters": {"DFF_ENABLE": "1" if dff else "0"}}
+    cells = {"a_SB_DFF_Q_DFFLC": lc(True), "a_SB_DFF_Q_1_DFFLC": lc(True),
+             "b_SB_LUT4_O_LC": lc(False), "c_SB_CARRY_CO_LC": lc(True),
+             "ram_SB_RAM40_4K": {"type": "ICESTORM_RAM", "parameters": {}}}
+    sinks = [("a_SB_DFF_Q_DFFLC", "I0", 10.4),     # endpoint, over 10 ns
+             ("a_SB_DFF_Q_DFFLC", "I1", 10.1),     # the same endpoint cell, another port
+             ("a_SB_DFF_Q_1_DFFLC", "I2", 9.7),    # endpoint, within 0.5 ns
+             ("a_SB_DFF_Q_1_DFFLC", "CLK", 30.0),  # clock port: not an endpoint
+             ("b_SB_LUT4_O_LC", "I0", 12.0),       # no flip-flop: not an endpoint
+             ("c_SB_CARRY_CO_LC", "CIN", 11.0),    # carry input: not an endpoint
+             ("c_SB_CARRY_CO_LC", "I3", 8.0),      # endpoint, 2 ns of slack
+             ("ram_SB_RAM40_4K", "WADDR_0", 9.9)]  # block RAM input: endpoint
+    nets = [{"net": "n%d" % i, "event": "posedge clk",
+             "endpoints": [{"cell": c, "port": p, "event": "posedge clk", "delay": d}]}
+            for i, (c, p, d) in enumerate(sinks)]
+    post = {"modules": {"top": {"cells": cells}}}
+    fails = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        pp, rp = os.path.join(tmp, "post.json"), os.path.join(tmp, "rep.json")
+        with open(pp, "w") as f:
+            json.dump(post, f)
+        for crit, want_ok in ((10.4, True), (10.41, True), (12.0, False), (10.0, False)):
+            rep = {"critical_paths": [{"from": "posedge clk", "to": "posedge clk",
+                                       "path": [{"delay": crit / 2}, {"delay": crit / 2}]}],
+                   "detailed_net_timings": nets}
+            with open(rp, "w") as f:
+                json.dump(rep, f)
+            res = analyse(pp, rp)
+            got = [(c, p) for _, c, p, _ in res["rows"]]
+            want = [("a_SB_DFF_Q_DFFLC", "I0"), ("a_SB_DFF_Q_DFFLC", "I1"), ("ram_SB_RAM40_4K", "WADDR_0"),
+                    ("a_SB_DFF_Q_1_DFFLC", "I2"), ("c_SB_CARRY_CO_LC", "I3")]
+            if got != want:
+                print(f"pnr_endpoints selftest: endpoints {got}, expected {want}"); fails += 1
+            if summary(res, 10.0) != (2, 4, 10.4):
+                print(f"pnr_endpoints selftest: summary {summary(res, 10.0)}, expected (2, 4, 10.4)"); fails += 1
+            groups = [ln.split()[-1] for ln in report(res, 10.0, 10).split("\n")
+                      if ln.startswith("  ") and ln.split()[-1] in ("a", "ram_SB_RAM40_4K", "c")]
+            if groups != ["a", "ram_SB_RAM40_4K", "c"]:
+                print(f"pnr_endpoints selftest: register groups {groups}, expected a, ram_SB_RAM40_4K, c")
+                fails += 1
+            if agrees(res) != want_ok:
+                print(f"pnr_endpoints selftest: critical path {crit} ns: agrees = {agrees(res)}, expected {want_ok}")
+                fails += 1
+        rep = {"critical_paths": []}
+        with open(rp, "w") as f:
+            json.dump(rep, f)
+        try:
+            analyse(pp, rp)
+            print("pnr_endpoints selftest: a report without net timings was accepted"); fails += 1
+        except ValueError:
+            pass
+    print("pnr_endpoints selftest: " + ("PASS" if fails == 0 else f"FAIL ({fails})"))
+    return 0 if fails == 0 else 1
+
+
 def main():
+    if sys.argv[1:] == ["--selftest"]:
+        return selftest()
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("post")
     ap.add_argument("report")
@@ -149,7 +211,7 @@ def main():
                     help="fail unless the worst endpoint equals nextpnr's critical path (0.02 ns)")
     a = ap.parse_args()
     try:
-        res = analyse(a.post, a.report, a.period)
+        res = analyse(a.post, a.report)
     except (OSError, ValueError, KeyError) as e:
         print(f"pnr_endpoints: {e}", file=sys.stderr)
         return 1

@@ -234,7 +234,7 @@ def do_module(m, a):
     # with nextpnr's own critical path (checked with --limits)
     period = 1000.0 / a.freq
     try:
-        res = pnr_endpoints.analyse(ppost, prep, period)
+        res = pnr_endpoints.analyse(ppost, prep)
         if not res["rows"]:
             raise ValueError("no clocked endpoint")
         with open(os.path.join(out, f"{m}.endpoints.txt"), "w") as f:
