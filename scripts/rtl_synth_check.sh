@@ -9,11 +9,13 @@
 #   1. Icarus: iverilog -g2005 -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array
 #      -s MODULE: any output is a failure;
 #   2. Yosys: read_verilog (Verilog-2005); hierarchy -check -top MODULE; proc; check -assert;
-#      then a generic `synth -top MODULE` (for the modules holding the error-map RAM, error_map,
-#      laserax_top and laserax_axil, only its coarse part `synth -run :fine`: the 2 x 1024 x 24-bit
-#      RAM stays a memory cell instead of 49k flip-flops (the former 2 x 2048 took about 3 minutes);
-#      their logic around the RAM is the same RTL, and `make synth` maps the whole top to the
-#      iCE40 with BRAMs);
+#      then a generic `synth -top MODULE` (for the modules holding a large RAM or ROM, error_map,
+#      laserax_top and laserax_axil (the error map's 2 x 1024 x 24-bit RAM), dds_sincos (its
+#      1024 x 17 table) and pso (its 769 x 37 chord ROM and five 64 x 56 array copies), only its
+#      coarse part `synth -run :fine`: the memories stay memory cells instead of tens of
+#      thousands of flip-flops (the former 2 x 2048 map took about 3 minutes; dds_sincos 29 s and
+#      pso 46 s of a CI run, under 1 s and 9 s coarse); their logic around the memories is the
+#      same RTL, and `make synth` maps each of them to the iCE40 with BRAMs);
 #      check -assert; no latch cell may remain
 #      ($dlatch, $adlatch, $dlatchsr, $_DLATCH*); the log must hold no "Latch inferred" and no
 #      Yosys warning (undriven / multiple drivers / implicit nets / anything else).
@@ -23,7 +25,7 @@ set -uo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 MODULES=(input_filter quad_decoder pulse_multiplier output_pacer rephase dds_sincos error_map laserax_top
          laserax_regs laserax_axil encoder_counter pso)
-COARSE_MODULES=" error_map laserax_top laserax_axil "  # synth -run :fine (see above)
+COARSE_MODULES=" dds_sincos error_map laserax_top laserax_axil pso "  # synth -run :fine (see above)
 IVERILOG_FLAGS=(-g2005 -grelative-include -Wall -Wsensitivity-entire-vector -Wsensitivity-entire-array)
 LATCH_CELLS='t:$dlatch t:$adlatch t:$dlatchsr t:$_DLATCH_* t:$_DLATCHSR_*'
 
