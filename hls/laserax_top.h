@@ -345,8 +345,9 @@ private:
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
         const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
-        const rephase::out_t rep = rep_.step(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
-                                             regs.period, regs.mark_len, same);
+        rephase::out_t& run = rep_run_;  // (written only by a call that is neither held nor moved)
+        const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
+                                                   regs.period, regs.mark_len, same, run);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
         o.ostep = rep.ostep;
@@ -355,14 +356,14 @@ private:
             o.out_pos = rep.out_pos;
             o.rep_mark = rep.mark;
             if (!rep.moved) {  // (moved: only ostep, out_pos and mark changed)
-                o.stage = rep.stage;
-                o.homed = rep.homed;
-                o.adj = rep.adj;
-                o.a_pos = rep.a;
-                o.b_pos = rep.b;
-                o.c_pos = rep.c;
-                o.z_pos = rep.z;
-                o.d = rep.d;
+                o.stage = run.stage;
+                o.homed = run.homed;
+                o.adj = run.adj;
+                o.a_pos = run.a;
+                o.b_pos = run.b;
+                o.c_pos = run.c;
+                o.z_pos = run.z;
+                o.d = run.d;
             }
         }
         const output_pacer::out_t pac =
@@ -402,6 +403,7 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;
+    rephase::out_t rep_run_;  // the outputs of the last call of rephase::step_run (read in that call only)
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)
