@@ -344,7 +344,13 @@ private:
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
-        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
+        // (held: the outputs out_ holds, those of an idle call; corr and cfg_err are read by no
+        // block, so they are stored here, the delta after the pacer read that of the previous call)
+        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap, same);
+        if (!emap.held) {
+            o.map_cfg_err = emap.cfg_err;
+            o.corr = emap.corr;
+        }
         rephase::out_t& run = rep_run_;  // (written only by a call that is neither held nor moved)
         const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
                                                    regs.period, regs.mark_len, same, run);
@@ -372,9 +378,7 @@ private:
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
         o.paced_pos = pac.paced;
-        o.map_cfg_err = emap.cfg_err;
-        o.corr = emap.corr;
-        o.map_delta = emap.delta;
+        if (!emap.held) o.map_delta = emap.delta;
         const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
