@@ -142,7 +142,6 @@ public:
         bool in_range = false;        // active and p inside [origin, origin + (n-1) * 2^k]
         bool clamped = false;         // active and p outside: the end value is held
         bool cfg_err = false;         // map_en and the selected bank's geometry is invalid
-        bool held = false;  // an idle hold after an idle call (see step's same): outputs as there
     };
 
     error_map() {
@@ -181,19 +180,20 @@ public:
         ih_ = false;
     }
 
-    // same: r is the register block of the previous call (a caller's register stage that knows
-    // it, e.g. laserax_top::tick; false by default): ih_ then says that this call is an idle hold
-    // with the write port held too, map_en, we, idle_ and nw_ being those the previous call tested
-    // (issue 13: simulation speed; same outputs). Its outputs are those of that call (out_t{}),
-    // flagged held for a caller that keeps them
-    out_t step(pos_t p, bool homed, const error_map_regs& r, bool same = false) {
+    // The call of step() when the previous call was an idle hold with no write presented or in
+    // flight (ih_) and r is the register block of that call (a caller's register stage that knows
+    // it, e.g. laserax_top::tick): then map_en, we, idle_ and nw_ are those that call tested, so
+    // this call is the same idle hold with the write port held (issue 13: simulation speed; same
+    // outputs). Returns true if it made the call (its outputs those of the previous call,
+    // out_t{}), else does nothing (the caller then calls step()).
+    bool step_held() {
+        if (!ih_) return false;
+        ph_ = cfg::phm_t(ph_.to_uint() + 1);  // wraps at S_MAP
+        return true;
+    }
+
+    out_t step(pos_t p, bool homed, const error_map_regs& r) {
         const unsigned ph = ph_.to_uint();
-        if (same && ih_) {
-            ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
-            out_t h;
-            h.held = true;
-            return h;
-        }
         // ---- idle hold: a clock enable of the stages A .. H (not of the write port and ph) ----
         // With map_en = 0 and no active or erroneous sample anywhere in the stages (idle_), a
         // full call would take in values flagged inactive and return corr = delta = 0 with every
@@ -452,7 +452,7 @@ private:
     cfg::phm_t ph_;  // phase of this call in the sample period (0: sample call)
     cfg::corr_t corr_;
     bool idle_;  // no stage holds an active or erroneous sample, corr = 0 (see the idle hold)
-    bool ih_;    // the previous call was an idle hold with !r.we and nw_ = 0 (see step's same)
+    bool ih_;    // the previous call was an idle hold with !r.we and nw_ = 0 (see step_held)
 };
 
 }  // namespace lx

@@ -344,12 +344,18 @@ private:
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
-        // (held: the outputs out_ holds, those of an idle call; corr and cfg_err are read by no
-        // block, so they are stored here, the delta after the pacer read that of the previous call)
-        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap, same);
-        if (!emap.held) {
+        // (map_held: the map's held idle call, whose outputs are those out_ holds; else corr and
+        // cfg_err, read by no block, are stored here, the delta after the pacer read that of the
+        // previous call)
+        const bool map_held = same && emap_.step_held();
+        bool map_err = false;
+        error_map_cfg::cdelta_t map_delta;
+        if (!map_held) {
+            const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
             o.map_cfg_err = emap.cfg_err;
             o.corr = emap.corr;
+            map_err = emap.cfg_err;
+            map_delta = emap.delta;
         }
         rephase::out_t& run = rep_run_;  // (written only by a call that is neither held nor moved)
         const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
@@ -378,7 +384,7 @@ private:
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
         o.paced_pos = pac.paced;
-        if (!emap.held) o.map_delta = emap.delta;
+        if (!map_held) o.map_delta = map_delta;
         const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
@@ -396,7 +402,7 @@ private:
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
         swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
-        o.alarm = (dec_alarm_ | pac.ovs_st | emap.cfg_err | o.dac_clip_st) != 0;  // (one OR, no branches)
+        o.alarm = (dec_alarm_ | pac.ovs_st | map_err | o.dac_clip_st) != 0;  // (one OR, no branches)
     }
 
 private:
