@@ -357,7 +357,13 @@ private:
             map_err = emap.cfg_err;
             map_delta = emap.delta;
         }
-        rephase::out_t& run = rep_run_;  // (written only by a call that is neither held nor moved)
+        // (run: written only by a call that is neither held nor moved, read only in that call; C
+        // simulation: a member, so no call initialises it; synthesis: a local, no register)
+#ifndef __SYNTHESIS__
+        rephase::out_t& run = rep_run_;
+#else
+        rephase::out_t run;
+#endif
         const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
                                                    regs.period, regs.mark_len, same, run);
         dig_q3_ = dig_q2_;
@@ -413,7 +419,9 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;
+#ifndef __SYNTHESIS__
     rephase::out_t rep_run_;  // the outputs of the last call of rephase::step_run (read in that call only)
+#endif
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)
