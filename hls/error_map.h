@@ -192,7 +192,8 @@ public:
         return true;
     }
 
-    out_t step(pos_t p, bool homed, const error_map_regs& r) {
+    // (p by const reference: loaded where the sample call reads it, issue 13)
+    out_t step(const pos_t& p, bool homed, const error_map_regs& r) {
         const unsigned ph = ph_.to_uint();
         // ---- idle hold: a clock enable of the stages A .. H (not of the write port and ph) ----
         // With map_en = 0 and no active or erroneous sample anywhere in the stages (idle_), a
