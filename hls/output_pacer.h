@@ -95,8 +95,10 @@ public:
     // same: pace_m, thr and clear are those of the previous call (a caller's register stage that
     // knows it, e.g. laserax_top::tick; false by default): after every call thr_q_ holds that
     // call's thr, so thr == thr_q_ is known true (issue 13: simulation speed; same outputs)
-    // (the wide registers by const reference: loaded where a path reads them, issue 13)
-    out_t step(delta_t delta, cfg::add_t add, const cfg::pace_t& pace_m, const cfg::thr_t& thr, bool clear, bool same = false) {
+    // (the addends and the wide registers by const reference: loaded where a path reads them,
+    // issue 13)
+    out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
+               bool clear, bool same = false) {
         // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
         // (the trees are read only with timer = 0 and e_prev = 0: formed only then)
         step_t emit = 0;

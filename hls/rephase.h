@@ -160,9 +160,9 @@ public:
         bool held;
         bool moved;
     };
-    // (the wide registers and the switch samples by const reference: loaded where a path reads
-    // them, issue 13)
-    taps_t step_taps(step_t pstep, const bool& sw, const bool& sw_valid, bool rehome, bool unhome,
+    // (pstep, the switch samples and the wide registers by const reference: loaded where a path
+    // reads them, issue 13)
+    taps_t step_taps(const step_t& pstep, const bool& sw, const bool& sw_valid, bool rehome, bool unhome,
                      const period_t& period, const period_t& mark_len, bool same, out_t& run) {
         const cfg::p_t pp = period;
         // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
