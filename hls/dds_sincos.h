@@ -79,7 +79,8 @@ public:
     // it, e.g. laserax_top::tick; false by default): after every call qtr_prev_ and amp_q_ hold
     // that call's P/4 and amp (the held path requires them equal), so the compares below are
     // known true (issue 13: simulation speed; same outputs)
-    out_t step(step_t ostep, period_t period, cfg::amp_t amp, bool same = false) {
+    // (ostep and the wide registers by const reference: loaded where a path reads them, issue 13)
+    out_t step(const step_t& ostep, const period_t& period, const cfg::amp_t& amp, bool same = false) {
         // read stage held: s1 / c1 are the codes of (q, r, P/4 of the previous call, amp_q) and of
         // the table (held_), and none of them changes in this call: the reads below would load
         // the same codes again, the counter holds (a clock enable; issue 13: simulation speed; P/4

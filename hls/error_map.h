@@ -177,9 +177,23 @@ public:
         ph_ = 0;
         corr_ = 0;
         idle_ = true;
+        ih_ = false;
     }
 
-    out_t step(pos_t p, bool homed, const error_map_regs& r) {
+    // The call of step() when the previous call was an idle hold with no write presented or in
+    // flight (ih_) and r is the register block of that call (a caller's register stage that knows
+    // it, e.g. laserax_top::tick): then map_en, we, idle_ and nw_ are those that call tested, so
+    // this call is the same idle hold with the write port held (issue 13: simulation speed; same
+    // outputs). Returns true if it made the call (its outputs those of the previous call,
+    // out_t{}), else does nothing (the caller then calls step()).
+    bool step_held() {
+        if (!ih_) return false;
+        ph_ = cfg::phm_t(ph_.to_uint() + 1);  // wraps at S_MAP
+        return true;
+    }
+
+    // (p by const reference: loaded where the sample call reads it, issue 13)
+    out_t step(const pos_t& p, bool homed, const error_map_regs& r) {
         const unsigned ph = ph_.to_uint();
         // ---- idle hold: a clock enable of the stages A .. H (not of the write port and ph) ----
         // With map_en = 0 and no active or erroneous sample anywhere in the stages (idle_), a
@@ -194,8 +208,12 @@ public:
             // clock enable; same writes, same outputs)
             if (r.we || nw_ != 0) write_port(r);
             ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
+            // (the next call with the same r is an idle hold with the port held: map_en = 0 and
+            // idle_ hold, and no write is presented or in flight)
+            ih_ = !r.we && nw_ == 0;
             return out_t{};
         }
+        ih_ = false;
         // ---- H: output registers ------------------------------------------------------------
         out_t o;
         o.corr = g_.corr;
@@ -435,6 +453,7 @@ private:
     cfg::phm_t ph_;  // phase of this call in the sample period (0: sample call)
     cfg::corr_t corr_;
     bool idle_;  // no stage holds an active or erroneous sample, corr = 0 (see the idle hold)
+    bool ih_;    // the previous call was an idle hold with !r.we and nw_ = 0 (see step_held)
 };
 
 }  // namespace lx

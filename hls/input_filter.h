@@ -53,8 +53,8 @@ public:
 
     // the block state for the caller's own clock enable (see step): settled at the level of pin
     bool settled(bool pin) const { return unsigned(pin) == key_; }
-    bool level() const { return f_; }
-    bool valid() const { return valid_; }  // (level(), valid(): the f, valid of the last out_t)
+    const bool& level() const { return f_; }
+    const bool& valid() const { return valid_; }  // (level(), valid(): the registers f, valid of the last out_t)
     bool quiet() const { return quiet_; }  // settled at level() (valid, cnt = 0, s1 = s2 = f)
     // the call of step() in the settled state (settled(pin)): only the pass decision is loaded
     void hold(cnt_t n) { ready_ = n <= 1; }

@@ -344,9 +344,28 @@ private:
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
-        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
-        const rephase::out_t rep = rep_.step(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
-                                             regs.period, regs.mark_len, same);
+        // (map_held: the map's held idle call, whose outputs are those out_ holds; else corr and
+        // cfg_err, read by no block, are stored here, the delta after the pacer read that of the
+        // previous call)
+        const bool map_held = same && emap_.step_held();
+        bool map_err = false;
+        error_map_cfg::cdelta_t map_delta;
+        if (!map_held) {
+            const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
+            o.map_cfg_err = emap.cfg_err;
+            o.corr = emap.corr;
+            map_err = emap.cfg_err;
+            map_delta = emap.delta;
+        }
+        // (run: written only by a call that is neither held nor moved, read only in that call; C
+        // simulation: a member, so no call initialises it; synthesis: a local, no register)
+#ifndef __SYNTHESIS__
+        rephase::out_t& run = rep_run_;
+#else
+        rephase::out_t run;
+#endif
+        const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
+                                                   regs.period, regs.mark_len, same, run);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
         o.ostep = rep.ostep;
@@ -355,14 +374,14 @@ private:
             o.out_pos = rep.out_pos;
             o.rep_mark = rep.mark;
             if (!rep.moved) {  // (moved: only ostep, out_pos and mark changed)
-                o.stage = rep.stage;
-                o.homed = rep.homed;
-                o.adj = rep.adj;
-                o.a_pos = rep.a;
-                o.b_pos = rep.b;
-                o.c_pos = rep.c;
-                o.z_pos = rep.z;
-                o.d = rep.d;
+                o.stage = run.stage;
+                o.homed = run.homed;
+                o.adj = run.adj;
+                o.a_pos = run.a;
+                o.b_pos = run.b;
+                o.c_pos = run.c;
+                o.z_pos = run.z;
+                o.d = run.d;
             }
         }
         const output_pacer::out_t pac =
@@ -371,9 +390,7 @@ private:
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
         o.paced_pos = pac.paced;
-        o.map_cfg_err = emap.cfg_err;
-        o.corr = emap.corr;
-        o.map_delta = emap.delta;
+        if (!map_held) o.map_delta = map_delta;
         const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
@@ -391,7 +408,7 @@ private:
             dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
         }
         swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
-        o.alarm = (dec_alarm_ | pac.ovs_st | emap.cfg_err | o.dac_clip_st) != 0;  // (one OR, no branches)
+        o.alarm = (dec_alarm_ | pac.ovs_st | map_err | o.dac_clip_st) != 0;  // (one OR, no branches)
     }
 
 private:
@@ -402,6 +419,9 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;
+#ifndef __SYNTHESIS__
+    rephase::out_t rep_run_;  // the outputs of the last call of rephase::step_run (read in that call only)
+#endif
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)

@@ -78,8 +78,7 @@ public:
         a_hi_ = 0;
         a_lo_ = 0;
         a_cy_ = 0;
-        b_hi_ = 0;
-        b_lo_ = 0;
+        b_ = 0;
         p_lo_ = 0;
         p_lo_d_ = 0;
         p_hi_ = 0;
@@ -96,7 +95,10 @@ public:
     // same: pace_m, thr and clear are those of the previous call (a caller's register stage that
     // knows it, e.g. laserax_top::tick; false by default): after every call thr_q_ holds that
     // call's thr, so thr == thr_q_ is known true (issue 13: simulation speed; same outputs)
-    out_t step(delta_t delta, cfg::add_t add, cfg::pace_t pace_m, cfg::thr_t thr, bool clear, bool same = false) {
+    // (the addends and the wide registers by const reference: loaded where a path reads them,
+    // issue 13)
+    out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
+               bool clear, bool same = false) {
         // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
         // (the trees are read only with timer = 0 and e_prev = 0: formed only then)
         step_t emit = 0;
@@ -123,8 +125,8 @@ public:
 
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
-        // ---- ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr of this call ----
-        // (held: o_y1, o_y0, o_cl were formed from these b_* and thr_q_ == thr, so the same values
+        // ---- ovs, first stage: the backlog tap B(t-3) (register b_) against thr of this call ----
+        // (held: o_y1, o_y0, o_cl were formed from this b_ and thr_q_ == thr, so the same values
         // would be loaded again: a clock enable; issue 13: simulation speed)
         if (!(o_held_ && (same || thr == thr_q_))) {
             ovs_stage1(thr);
@@ -132,10 +134,10 @@ public:
 
         // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
         // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
-        const cfg::hi_t b_hi_next = cfg::hi_t(a_hi_ + a_cy_);
-        o_held_ = b_hi_next == b_hi_ && a_lo_ == b_lo_;  // (and thr_q_: the thr of the stage above)
-        b_hi_ = b_hi_next;
-        b_lo_ = a_lo_;
+        // (one register of the two halves: the compare of both halves is one compare)
+        const backlog_t b_next = cat_s<cfg::W_HI, cfg::L>(cfg::hi_t(a_hi_ + a_cy_), a_lo_);
+        o_held_ = b_next == b_;  // (and thr_q_: the thr of the stage above)
+        b_ = b_next;
         // (nc: no count left in the previous call and no carry pending, e_prev = cq = p_cy = 0;
         // then the sums below are the plain registers: lo - 0 = lo in 0 .. 2^L - 1 (a_cy = 0),
         // hi + 0, p_lo + 0 (p_cy = 0), p_hi + 0; and with delta = add = 0 too X holds (t = lo,
@@ -183,27 +185,30 @@ public:
         out_t o;
         o.pstep = emit;
         o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
-        o.backlog = cat_s<cfg::W_HI, cfg::L>(b_hi_, b_lo_);
+        o.backlog = b_;
         o.ovs = ovs_;
         o.ovs_st = ovs_st_;
         return o;
     }
 
 private:
-    // ovs, first stage: the backlog tap B(t-3) (registers b_*) against thr (o_y1, o_y0, o_cl)
+    // ovs, first stage: the backlog tap B(t-3) (register b_, its halves) against thr (o_y1, o_y0,
+    // o_cl)
     void ovs_stage1(cfg::thr_t thr) {
         thr_q_ = thr;
+        const cfg::hi_t b_hi = cfg::hi_t(b_ >> cfg::L);
+        const cfg::lo_t b_lo = cfg::lo_t(b_);
         const cfg::thi_t t_hi = cfg::thi_t(thr >> cfg::L);
         const cfg::lo_t t_lo = cfg::lo_t(thr);
         // B > thr: b_hi > t_hi, or equal halves and b_lo > t_lo
-        const bool gt = (cfg::cmp_t(b_hi_) > cfg::cmp_t(t_hi)) ||
-                        (cfg::cmp_t(b_hi_) == cfg::cmp_t(t_hi) && b_lo_ > t_lo);
+        const bool gt = (cfg::cmp_t(b_hi) > cfg::cmp_t(t_hi)) ||
+                        (cfg::cmp_t(b_hi) == cfg::cmp_t(t_hi) && b_lo > t_lo);
         // B < -thr: (b_hi + t_hi + cs) < 0 with cs the carry of b_lo + t_lo, cs = cl ? cu1 : cu0
         // from the 10-bit halves; both outcomes of cl are registered
-        const cfg::cmp_t u = cfg::cmp_t(b_hi_) + cfg::cmp_t(t_hi);
+        const cfg::cmp_t u = cfg::cmp_t(b_hi) + cfg::cmp_t(t_hi);
         const bool neg0 = u < 0;
         const bool neg1 = cfg::cmp_t(u + 1) < 0;
-        const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo_ >> cfg::LH), bl_l = uint<cfg::LH>(b_lo_);
+        const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo >> cfg::LH), bl_l = uint<cfg::LH>(b_lo);
         const uint<cfg::LH> tl_h = uint<cfg::LH>(t_lo >> cfg::LH), tl_l = uint<cfg::LH>(t_lo);
         const bool cl = (uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH != 0;
         const bool cu0 = (uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH != 0;
@@ -221,8 +226,7 @@ private:
     cfg::hi_t a_hi_;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)
     cfg::lo_t a_lo_;
     cfg::cy_t a_cy_;
-    cfg::hi_t b_hi_;     // backlog tap, stage B: B(t-2)
-    cfg::lo_t b_lo_;
+    backlog_t b_;        // backlog tap, stage B: B(t-2), the halves hi (signed) * 2^L + lo
     cfg::plo_t p_lo_;    // paced tap: split counter
     cfg::plo_t p_lo_d_;
     cfg::phi_t p_hi_;

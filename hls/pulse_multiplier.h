@@ -147,7 +147,8 @@ public:
     // it, e.g. laserax_top::tick; false by default). In a quiet call pend_ = 0 says the pair of
     // the previous call equalled (r_use_, off_tgt_), which a quiet call holds, so with the same
     // pair the registered compare loads 0 again (issue 13: simulation speed; same outputs)
-    out_t step(step_t step, ratio_t ratio, offset_t offset, bool same = false) {
+    // (the wide registers by const reference: loaded where a path reads them, issue 13)
+    out_t step(step_t step, const ratio_t& ratio, const offset_t& offset, bool same = false) {
         // quiet call: no count, the sequencer idle and none starting (pend_ = 0), after at least
         // three such calls (quiet_). Then lo, N, T are held, inc = c = 0 since the first of them,
         // hi, c2, T_hi_d since the second, comp_int since the third, comp since the fourth: every

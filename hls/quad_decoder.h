@@ -74,8 +74,9 @@ public:
     // stage that knows it, e.g. laserax_top::tick; false by default): in an idle call the three
     // filters are quiet (cnt = 0), so their pass decisions hold glitch_n <= 1 of the previous
     // call, and hold() would load the same value (issue 13: simulation speed; same outputs)
-    out_t step(bool a, bool b, bool lerr, cfg::glitch_t glitch_n, cfg::spacing_t min_spacing,
-               bool clear, bool same = false) {
+    // (the pins and the wide registers by const reference: loaded where a path reads them, issue 13)
+    out_t step(const bool& a, const bool& b, const bool& lerr, const cfg::glitch_t& glitch_n,
+               const cfg::spacing_t& min_spacing, bool clear, bool same = false) {
         // the three filters settled at the pin levels (so A' = pa, B' = pb: no count, no glitch),
         // the laser error filter at 0, primed and no clear: the call below holds every register but
         // the filters' pass decisions and since / close (a clock enable of the rest; issue 13:

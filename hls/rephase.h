@@ -138,6 +138,32 @@ public:
     // speed; same outputs)
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                period_t mark_len, bool same = false) {
+        out_t o;
+        const taps_t t = step_taps(pstep, sw, sw_valid, rehome, unhome, period, mark_len, same, o);
+        if (t.held || t.moved) {  // (else step_run wrote every output to o)
+            o = outputs(t.ostep, t.mark, d_);
+            o.held = t.held;
+            o.moved = t.moved;
+        }
+        return o;
+    }
+
+    // The outputs that every call forms, with the flags held and moved (see out_t). The others
+    // (stage, a, b, c, z, adj, d, homed) change only in a call of step_run, which writes every
+    // output to `run` (a call with held or moved does not write it). step() is this call with
+    // the outputs of a held or moved call formed from the registers; a caller that keeps the
+    // outputs of the previous call (laserax_top) reads only these (issue 13: simulation speed)
+    struct taps_t {
+        step_t ostep;
+        pos_t out_pos;
+        bool mark;
+        bool held;
+        bool moved;
+    };
+    // (pstep, the switch samples and the wide registers by const reference: loaded where a path
+    // reads them, issue 13)
+    taps_t step_taps(const step_t& pstep, const bool& sw, const bool& sw_valid, bool rehome, bool unhome,
+                     const period_t& period, const period_t& mark_len, bool same, out_t& run) {
         const cfg::p_t pp = period;
         // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
         //    load in flight, no switch rise, no leave. Every register below then holds except
@@ -151,19 +177,12 @@ public:
             if (!(qh_ && (same || pp == qp_))) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
-            out_t q;
+            taps_t q;
             q.ostep = 0;
             q.out_pos = out_pos_;
             q.mark = stage_ == cfg::STAGE_HOMED && mark_;  // (no count: the mark register itself)
-            q.stage = cfg::stage_t(static_cast<unsigned>(stage_));
-            q.a = a_;
-            q.b = b_;
-            q.c = c_;
-            q.z = z_;
-            q.adj = adj_;
-            q.d = d_;
-            q.homed = stage_ == cfg::STAGE_HOMED;
             q.held = true;
+            q.moved = false;
             return q;
         }
         qh_ = false;
@@ -174,7 +193,14 @@ public:
         if (pstep != 0 && qk_ && !rehome && !unhome && stage_ != cfg::STAGE_WINDOW &&
             !(stage_ == cfg::STAGE_UNHOMED && sw && !sw_prev_ && sw_seen_))
             return step_count(pstep, sw, sw_valid, pp);
-        return step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
+        run = step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
+        taps_t r;
+        r.ostep = run.ostep;
+        r.out_pos = run.out_pos;
+        r.mark = run.mark;
+        r.held = false;
+        r.moved = false;
+        return r;
     }
 
 private:
@@ -409,7 +435,7 @@ private:
     // a count call (pstep != 0) in stage 1 or 3 with lag = 0, w_init, no d load and no first count
     // (qk_), no leave and no capture: step_run with dq = 0, ostep = sgn(pstep), no stage change and
     // no window state but the stage-1 reset values (tr, fresh, num); t, v, d, lag, adj hold
-    out_t step_count(step_t pstep, bool sw, bool sw_valid, cfg::p_t pp) {
+    taps_t step_count(step_t pstep, bool sw, bool sw_valid, cfg::p_t pp) {
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
         paced_ = paced_ + pstep;
         fwd_last_ = pstep > 0;
@@ -432,7 +458,11 @@ private:
         const bool mark = stage_ == cfg::STAGE_HOMED && in_rng;
         mark_ = mark;
 
-        out_t o = outputs(ostep, mark, d_);
+        taps_t o;
+        o.ostep = ostep;
+        o.out_pos = out_pos_;
+        o.mark = mark;
+        o.held = false;
         o.moved = true;
         return o;
     }
