@@ -27,12 +27,13 @@ RTL="$ROOT/rtl_ref"
 ALL=(quad_decoder quad_decoder_pins output_pacer dds_sincos pulse_multiplier pulse_multiplier_seq pulse_multiplier_mul rephase rephase_adj rephase_div error_map)
 # smtbmc engine: proof -> "k|induction" (induction: yes = BMC k then k-induction of length k, no =
 # BMC of k calls only); the lengths at which the sat engine's induction closes. The default list
-# (CTest formal_smtbmc) leaves out the slow ones under z3 (dds_sincos about 100 s,
-# pulse_multiplier_seq about 70 s, rephase, rephase_adj): the sat engine proves them in make test;
-# `make formal` runs all of them with both engines. output_pacer_sum (the pacer's conservation,
-# about 7 min with z3, the sat engine does not finish) is in this default list since the eighth
-# issue-11 session, so every property issue 16 asks for is proven in make test.
-SMT_ALL=(quad_decoder quad_decoder_pins output_pacer output_pacer_sum pulse_multiplier pulse_multiplier_mul rephase_div error_map)
+# (CTest formal_smtbmc) leaves out the slow ones under z3 (pulse_multiplier_seq about 190 s,
+# rephase_adj about 105 s in QF_BV): the sat engine proves them in make test; `make formal` runs
+# all of them with both engines. output_pacer_sum (the pacer's conservation, about 2 min with z3,
+# the sat engine does not finish) is in this default list since the eighth issue-11 session, so
+# every property issue 16 asks for is proven in make test; dds_sincos and rephase (about 25 and
+# 20 s in QF_BV) since the eighteenth session.
+SMT_ALL=(quad_decoder quad_decoder_pins output_pacer output_pacer_sum dds_sincos pulse_multiplier pulse_multiplier_mul rephase rephase_div error_map)
 SMT_SOLVER="${SMT_SOLVER:-z3}"
 # The SMT-LIB logic yosys-smtbmc declares. With --unroll every proof here is pure bit vectors (the
 # RAMs are abstracted in the harnesses, no memory reaches the solver as an array). yosys-smtbmc
