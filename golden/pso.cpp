@@ -70,6 +70,7 @@ void pso::reset_run() {
     ps_count_ = 0;
     idx_ = 0;
     done_ = false;
+    fired_last_ = false;
     have_emit_ = false;
     last_emit_ = 0;
     last_w_ = 0;
@@ -119,7 +120,12 @@ pso::out pso::step(const pso_in& in, const pso_regs& presented) {
 
         // ---- fire on the estimate of call t - 7 ----
         const bool was_done = done_;
-        o.fire = t >= kFireLat && !done_ && est_old - fired_ >= thr_;
+        // (no fire in the call after a fire: with every threshold >= kMinDist > 2 sqrt3 the
+        // estimate cannot reach two thresholds in two calls, so this never acts on a legal
+        // configuration; it defines the block when a run's latched array holds an entry below
+        // kMinDist, docs/PSO_COUNTERS.md §2.7)
+        o.fire = t >= kFireLat && !done_ && !fired_last_ && est_old - fired_ >= thr_;
+        fired_last_ = o.fire;
         if (o.fire) {
             fired_ += thr_;
             if (arr_en_) {

@@ -59,7 +59,7 @@ public:
     static constexpr int kFireLat = 7;   // calls from a step to its fire
     static constexpr int kSpLat = 17;    // calls from a spacing sample to its flag
     static constexpr int kArrDepth = 64;
-    static constexpr long double kMinDist = 2.0L;       // counts
+    static constexpr long double kMinDist = 4.0L;       // counts (> 2 sqrt3: no fire in two calls in a row)
     static constexpr long double kClockHz = 100e6L;
     static constexpr long double kPulseHzMax = 24e6L;
     struct out {
@@ -119,6 +119,7 @@ private:
     long double thr_ = 0;           // threshold of the next fire (taken at the last fire / run start)
     int idx_ = 0;
     bool done_ = false;
+    bool fired_last_ = false;       // the previous call fired (no fire in the call after a fire)
     long double frozen_ = 0;
     bool have_emit_ = false;
     int64_t last_emit_ = 0;
