@@ -15,16 +15,18 @@
 //                                  register).
 //   stage R  (Q of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32), the estimate step
 //                                  Y = chord + one - (the open chord, unless a reversal closed it).
-//   stage B1 (R of the last call)  Y - thr for three candidate thresholds of the fire after the
-//                                  next (next .. next^3 of the index before the move of the
+//   stage B1 (R of the last call)  Y - thr for two candidate thresholds of the fire after the
+//                                  next (next, next^2 of the index before the move of the
 //                                  decision being taken in B2).
-//   stage P  (B1 of the last call) the loop operands: Y, and the two differences for the index
-//                                  before and after the move B2 decided in the last call,
-//                                  picked by that move.
+//   stage P  (B1 of the last call) the loop operands: Y, and the difference for the index after
+//                                  the move B2 decided in the last call, picked by that move.
 //   stage B2 (P of the last call)  the loop on u = value - thr: decide the entry in u (fire when
-//                                  u >= 0) and add the next entry's operand, picked by that sign
-//                                  (u + Y - thr' after a fire, u + Y otherwise: the threshold is
-//                                  taken at a fire, docs/PSO_COUNTERS.md §2.5).
+//                                  u >= 0 and the last call did not fire) and add the next
+//                                  entry's operand, picked by that decision (u + Y - thr' after a
+//                                  fire, u + Y otherwise: the threshold is taken at a fire,
+//                                  docs/PSO_COUNTERS.md §2.5). Thresholds >= 4 counts (MIN_DIST)
+//                                  keep fires two calls apart, so a fire never follows a move of
+//                                  the last call and one candidate per stage is enough.
 //   stage B3 (B2 of the last call) apply the decision: fire / emit outputs, pulse timer, flags,
 //                                  counters, dist = u (+ thr without a fire), index outputs.
 //
@@ -82,7 +84,7 @@ struct pso_cfg {
     static constexpr int SP_LAT = W_GAP + 1;                         // 17: sample, 16 steps
     static constexpr int W_SPK = clog2p1(W_GAP);                     // 5, spacing step counter
     static constexpr unsigned long long ONE = 1ULL << D_FRAC;        // one count
-    static constexpr unsigned long long MIN_DIST = 2ULL << D_FRAC;   // smallest legal threshold
+    static constexpr unsigned long long MIN_DIST = 4ULL << D_FRAC;   // smallest legal threshold (> 2 sqrt3)
     // floor(24 MHz / 100 MHz * 2^32): the largest increment whose carry rate is <= 24 MHz
     static constexpr unsigned long long INC_MAX =
         (static_cast<unsigned long long>(PULSE_HZ_MAX) << W_INC) / static_cast<unsigned long long>(CLOCK_HZ);
@@ -290,20 +292,17 @@ public:
             run_q_ = true;
         }
         // ---- stage B1 thresholds (read before B2 moves the index) ----
-        // the candidate thresholds of the fire after the next: entries next(idx) .. next^3(idx)
-        // of the index before this call's B2 move (P picks two of them in the next call, by that
+        // the candidate thresholds of the fire after the next: entries next(idx), next^2(idx)
+        // of the index before this call's B2 move (P picks one of them in the next call, by that
         // move); fire_dist in force otherwise. The RAM is read after this call's write. The
         // first operands of a run take the start threshold thr_.
         cfg::len_t nx = idx_ + 1;
         if (nx >= arr_len_q_) nx = 0;
         cfg::len_t nx2 = nx + 1;
         if (nx2 >= arr_len_q_) nx2 = 0;
-        cfg::len_t nx3 = nx2 + 1;
-        if (nx3 >= arr_len_q_) nx3 = 0;
         const bool first = r_v_ && !p_v_;
         const cfg::dist_t th1 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
         const cfg::dist_t th2 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
-        const cfg::dist_t th3 = arr_en_q_ ? arr_[nx3.to_uint()] : r.fire_dist;
         const cfg::dist_t thr_in = thr_;  // the threshold of the next fire (spacing sample)
         const bool adv_last = adv_;       // the last call's move (P's pick; B2 overwrites adv_)
 
@@ -332,12 +331,15 @@ public:
         done_o_ = done_;
 
         // ---- stage B2 (from the B1 registers): the loop on u, decision, array index ----
-        const bool pos = u_ >= 0;
+        // (no fire in the call after a fire: `fire` is the last call's decision. With thresholds
+        // >= MIN_DIST it never acts, u < 0 after a fire; so a fire never follows a move of the
+        // last call, and b_opF0_ is the operand for the index as it stands)
+        const bool pos = u_ >= 0 && !fire;
         const bool dec = u_v_ && !done_ && pos;  // value - thr >= 0
         const bool last_stop = arr_en_q_ && idx_ + 1 >= arr_len_q_ && !arr_wrap_q_;
         const bool take = b_v_ && pos && !done_ && !last_stop;  // a fire (or the run start) takes thr
-        const cfg::rem_t opF = adv_ ? b_opF1_ : b_opF0_;
-        const cfg::dist_t thF = adv_ ? b_thF1_ : b_thF0_;
+        const cfg::rem_t opF = b_opF0_;
+        const cfg::dist_t thF = b_thF0_;
         c_fire_ = dec;
         c_inwin_ = u_inwin_;
         c_live_ = u_v_ && !done_;
@@ -367,23 +369,19 @@ public:
         // (B1's candidates are for the index before it) ----
         b_y_ = p_y_;
         b_opF0_ = adv_last ? p_d2_ : p_d1_;
-        b_opF1_ = adv_last ? p_d3_ : p_d2_;
         b_thF0_ = adv_last ? p_th2_ : p_th1_;
-        b_thF1_ = adv_last ? p_th3_ : p_th2_;
         b_inwin_ = p_inwin_;
         b_v_ = p_v_;
 
-        // ---- stage B1 (from the R registers): Y - th for the three candidates (0 until R holds
+        // ---- stage B1 (from the R registers): Y - th for the two candidates (0 until R holds
         // data) ----
         if (r_v_) {
             const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
             p_y_ = r_y_;
             p_d1_ = y_v - static_cast<int64_t>(th1.to_uint64());
             p_d2_ = y_v - static_cast<int64_t>(th2.to_uint64());
-            p_d3_ = y_v - static_cast<int64_t>(th3.to_uint64());
             p_th1_ = th1;
             p_th2_ = th2;
-            p_th3_ = th3;
         } else {
             clear_p_operands();
         }
@@ -500,10 +498,8 @@ private:
         p_y_ = 0;
         p_d1_ = 0;
         p_d2_ = 0;
-        p_d3_ = 0;
         p_th1_ = 0;
         p_th2_ = 0;
-        p_th3_ = 0;
     }
 
     void reset_track() {
@@ -532,9 +528,7 @@ private:
         p_v_ = false;
         b_y_ = 0;
         b_opF0_ = 0;
-        b_opF1_ = 0;
         b_thF0_ = 0;
-        b_thF1_ = 0;
         b_inwin_ = false;
         b_v_ = false;
         u_ = 0;
@@ -613,22 +607,22 @@ private:
     cfg::incr_t r_y_;    // Y: the estimate step of the entry
     cfg::chord_t part_;  // chord of the open window
     bool r_inwin_, r_v_;
-    // stage B1 (the differences for three candidate thresholds)
+    // stage B1 (the differences for two candidate thresholds)
     cfg::incr_t p_y_;
-    cfg::rem_t p_d1_, p_d2_, p_d3_;      // Y - th1 .. Y - th3
-    cfg::dist_t p_th1_, p_th2_, p_th3_;  // entries next .. next^3 of the index before the move
-                                         //   decided in the same call (or fire_dist)
+    cfg::rem_t p_d1_, p_d2_;      // Y - th1, Y - th2
+    cfg::dist_t p_th1_, p_th2_;   // entries next, next^2 of the index before the move decided in
+                                  //   the same call (or fire_dist)
     bool p_inwin_, p_v_;
     // stage P (the loop operands)
     cfg::incr_t b_y_;
-    cfg::rem_t b_opF0_, b_opF1_;   // Y - thF0, Y - thF1
-    cfg::dist_t b_thF0_, b_thF1_;  // thresholds after a fire: index not moved / moved by the last decision
+    cfg::rem_t b_opF0_;   // Y - thF0
+    cfg::dist_t b_thF0_;  // the threshold after a fire (for the index after the last decision)
     bool b_inwin_, b_v_;
     // stage B2 (the loop, the decision and the state it moves)
     cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
     bool u_v_, u_inwin_;
     cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
-    bool adv_;           // the last call's decision moved the index (P's and B2's picks)
+    bool adv_;           // the last call's decision moved the index (P's pick)
     cfg::len_t idx_;
     bool done_;
     bool c_fire_, c_inwin_, c_live_;

@@ -363,25 +363,25 @@ golden::pso_in steps(int a, int b, int c) {
 }
 
 void test_directed(tbu::result& res) {
-    // remainder carry: 1 count per call on x, distance 2.5 counts: fire k after count ceil(2.5 k);
+    // remainder carry: 1 count per call on x, distance 4.5 counts: fire k after count ceil(4.5 k);
     // the registers presented in call 0 are in force from call 1 (REG_LAT), so the step of call 0
-    // is not tracked and count c is the step of call c: it fires in call ceil(2.5k) + FIRE_LAT - 1 + REG_LAT
+    // is not tracked and count c is the step of call c: it fires in call ceil(4.5k) + FIRE_LAT - 1 + REG_LAT
     {
         pair_run p{{}, {}, &res, "carry"};
         golden::pso_regs r;
         r.enable = true;
         r.axis_mask = 1;
         r.win_k = 16;
-        r.fire_dist = 5 * kQ / 2;
+        r.fire_dist = 9 * kQ / 2;
         r.pulse_w = 1;
         std::vector<long long> fires;
-        for (int t = 0; t < 196 + lx::pso_cfg::FIRE_LAT; ++t)  // fire 78 (count 195) the last
+        for (int t = 0; t < 352 + lx::pso_cfg::FIRE_LAT; ++t)  // fire 78 (count 351) the last
             if (p.step(steps(1, 0, 0), r).fire) fires.push_back(t);
         bool ok = fires.size() == 78;
         for (size_t k = 1; ok && k <= fires.size(); ++k)
-            ok = fires[k - 1] == static_cast<long long>(std::ceil(2.5 * static_cast<double>(k))) + lx::pso_cfg::FIRE_LAT - 1 +
+            ok = fires[k - 1] == static_cast<long long>(std::ceil(4.5 * static_cast<double>(k))) + lx::pso_cfg::FIRE_LAT - 1 +
                                      lx::pso_cfg::REG_LAT;
-        res.check(ok, "remainder carry: fires not at ceil(2.5 k) (" + std::to_string(fires.size()) + " fires)");
+        res.check(ok, "remainder carry: fires not at ceil(4.5 k) (" + std::to_string(fires.size()) + " fires)");
     }
     // K = 1: per-call magnitudes; a synchronous diagonal (x and y step together) advances sqrt2
     // per call, a 3D one sqrt3: distance 10 counts is reached after ceil(10/sqrt2) = 8,
@@ -401,14 +401,14 @@ void test_directed(tbu::result& res) {
         res.check(first == want, "K=1 " + std::to_string(dims) + "D diagonal: first fire at call " + std::to_string(first) +
                                      ", want " + std::to_string(want));
     }
-    // array: absolute firing positions 3.5, 10, 12.25, 40 counts along x at 1 count/call, then
+    // array: absolute firing positions 4.5, 10, 14.25, 40 counts along x at 1 count/call, then
     // done (no wrap)
     {
         pair_run p{{}, {}, &res, "array"};
         golden::pso_regs r;
         r.axis_mask = 1;
         r.pulse_w = 1;
-        const std::vector<long double> pos = {3.5L, 10.0L, 12.25L, 40.0L};
+        const std::vector<long double> pos = {4.5L, 10.0L, 14.25L, 40.0L};
         const std::vector<uint64_t> arr = golden::pso_array_from_positions(pos);
         for (size_t j = 0; j < arr.size(); ++j) {
             golden::pso_regs w = r;
@@ -428,11 +428,52 @@ void test_directed(tbu::result& res) {
             if (last.fire) fires.push_back(t);
         }
         // the run starts in call 1 (REG_LAT), so the tracked position after call t is t; fire k is
-        // FIRE_LAT calls after the step that reaches D_k (calls 4, 10, 13, 40)
+        // FIRE_LAT calls after the step that reaches D_k (calls 5, 10, 15, 40)
         constexpr long long L = lx::pso_cfg::FIRE_LAT;
-        const std::vector<long long> want = {4 + L, 10 + L, 13 + L, 40 + L};
+        const std::vector<long long> want = {5 + L, 10 + L, 15 + L, 40 + L};
         res.check(fires == want && last.arr_done, "array: fires at listed distances wrong (" +
                                                       std::to_string(fires.size()) + " fires)");
+    }
+    // no fire in the call after a fire (docs/PSO_COUNTERS.md §2.7): legal thresholds (>= 4 counts)
+    // never need it; a run's latched array can still hold smaller entries when arr_en is turned
+    // off while it runs (the check then covers fire_dist) and the entries are rewritten. Entries of
+    // 8 counts at 1 count per call, then (from call 20) rewritten to 1 count with arr_en off: the
+    // run keeps its array (wrap) and fires every second call, never in two calls in a row
+    {
+        pair_run p{{}, {}, &res, "fire after fire"};
+        golden::pso_regs r;
+        r.axis_mask = 1;
+        r.pulse_w = 1;
+        for (int j = 0; j < 4; ++j) {
+            golden::pso_regs w = r;
+            w.arr_we = true;
+            w.arr_addr = j;
+            w.arr_data = 8 * kQ;
+            p.step(golden::pso_in{}, w);
+        }
+        r.enable = true;
+        r.arr_en = true;
+        r.arr_len = 4;
+        r.arr_wrap = true;
+        bool err = false, twice = false, last = false;
+        int late = 0, early = 0;
+        for (int t = 0; t < 120; ++t) {
+            golden::pso_regs w = r;
+            if (t >= 20) w.arr_en = false;
+            if (t >= 20 && t < 24) {
+                w.arr_we = true;
+                w.arr_addr = t - 20;
+                w.arr_data = kQ;
+            }
+            const golden::pso::out o = p.step(steps(1, 0, 0), w);
+            err = err || o.cfg_err;
+            twice = twice || (o.fire && last);
+            last = o.fire;
+            if (o.fire) (t >= 80 ? late : early) += 1;
+        }
+        res.check(!err && !twice && late == 20 && early > 0,
+                  "fire after fire: cfg_err " + std::to_string(err) + ", two in a row " + std::to_string(twice) +
+                      ", fires in calls 80..119 " + std::to_string(late) + " (want 20)");
     }
     // threshold taken at the previous fire: x moves one count per call (position t after call t),
     // distance 10 counts: fire 1 in call 10 + L (L = FIRE_LAT). Distance 4 counts from call p on:
@@ -458,14 +499,14 @@ void test_directed(tbu::result& res) {
                                      ": fires at " + (fires.size() > 1 ? std::to_string(fires[1]) : "-") + ", " +
                                      (fires.size() > 2 ? std::to_string(fires[2]) : "-"));
     }
-    // window: x moves 0..99 at 1 count/call, distance 2 counts, window x in [20, 39]: emits
+    // window: x moves 0..99 at 1 count/call, distance 4 counts, window x in [20, 39]: emits
     // only for fires whose step positions lie in the window
     {
         pair_run p{{}, {}, &res, "window"};
         golden::pso_regs r;
         r.enable = true;
         r.axis_mask = 1;
-        r.fire_dist = 2 * kQ;
+        r.fire_dist = 4 * kQ;
         r.pulse_w = 1;
         r.win_en = true;
         r.win_src = 0;
@@ -486,24 +527,24 @@ void test_directed(tbu::result& res) {
             const int64_t wx = t >= lx::pso_cfg::FIRE_LAT ? xs[static_cast<size_t>(t - lx::pso_cfg::FIRE_LAT)] : 0;
             if (o.emit && (wx < 20 || wx > 39)) inside_only = false;
         }
-        // fire k in call 2k + FIRE_LAT (call 99 the last)
-        res.check(fires == (99 - lx::pso_cfg::FIRE_LAT) / 2 && emits == 10 && inside_only,
+        // fire k in call 4k + FIRE_LAT (call 99 the last); in the window: the steps to x = 21 .. 37
+        res.check(fires == (99 - lx::pso_cfg::FIRE_LAT) / 4 && emits == 5 && inside_only,
                   "window: fires " + std::to_string(fires) + " emits " + std::to_string(emits));
     }
-    // pulse width and overlap: distance 2 counts at 1 count/call (a fire every 2 calls from call
-    // 2 + FIRE_LAT: the run starts in call 1, REG_LAT), pulse width 5: every emit after the
-    // first overlaps; fire_cnt still counts each one
+    // pulse width and overlap: distance 4 counts at 1 count/call (a fire every 4 calls from call
+    // 4 + FIRE_LAT: the run starts in call 1, REG_LAT), pulse width 5: every emit after the
+    // first overlaps; fire_cnt still counts each one; laser minimum period 5: each is too early
     {
         pair_run p{{}, {}, &res, "overlap"};
         golden::pso_regs r;
         r.enable = true;
         r.axis_mask = 1;
-        r.fire_dist = 2 * kQ;
+        r.fire_dist = 4 * kQ;
         r.pulse_w = 5;
-        r.min_period = 3;
+        r.min_period = 5;
         golden::pso::out o;
         int emits = 0, high = 0;
-        const int n_calls = 20 + lx::pso_cfg::FIRE_LAT + lx::pso_cfg::REG_LAT;  // 10 fires
+        const int n_calls = 40 + lx::pso_cfg::FIRE_LAT + lx::pso_cfg::REG_LAT;  // 10 fires
         for (int t = 0; t < n_calls; ++t) {
             o = p.step(steps(1, 0, 0), r);
             emits += o.emit ? 1 : 0;
@@ -512,11 +553,12 @@ void test_directed(tbu::result& res) {
         res.check(emits == 10 && o.fire_cnt == 10 && o.overlap_cnt == 9 && o.overlap_st && o.freq_st,
                   "overlap: emits " + std::to_string(emits) + " fire_cnt " + std::to_string(o.fire_cnt) + " overlaps " +
                       std::to_string(o.overlap_cnt));
-        res.check(high == n_calls - 2 - lx::pso_cfg::FIRE_LAT, "overlap: pulse level high for " + std::to_string(high) + " calls");
-        // width 1 and distance 2: no overlap, pulses 1 call each
+        res.check(high == n_calls - 4 - lx::pso_cfg::FIRE_LAT, "overlap: pulse level high for " + std::to_string(high) + " calls");
+        // width 3 and distance 4: no overlap (one low call between pulses); minimum period 4: none
+        // too early
         pair_run q{{}, {}, &res, "no overlap"};
-        r.pulse_w = 1;
-        r.min_period = 2;
+        r.pulse_w = 3;
+        r.min_period = 4;
         for (int t = 0; t < n_calls; ++t) o = q.step(steps(1, 0, 0), r);
         res.check(o.fire_cnt == 10 && o.overlap_cnt == 0 && !o.overlap_st && !o.freq_st, "no overlap: flags set");
     }
@@ -556,8 +598,8 @@ void test_directed(tbu::result& res) {
         for (int t = 0; t < 100000; ++t) o = b.step(in, r);
         res.check(!o.spacing_st && !o.freq_st && o.fire_cnt > 0, "min spacing: 130 counts flagged or no fire");
         // after the array is done: part-speed at INC_MAX (0.24 count per clock), min_period 20
-        // (4.8 counts), entries 3 and 6 counts without wrap. A sample holds the threshold of the
-        // next fire: 3 before fire 1, then 6 (taken at fire 1); fire 2 makes the array done and
+        // (4.8 counts), entries 4 and 6 counts without wrap. A sample holds the threshold of the
+        // next fire: 4 before fire 1, then 6 (taken at fire 1); fire 2 makes the array done and
         // takes none, so every later sample holds 6. Flagged: exactly the samples before fire 1.
         pair_run d{{}, {}, &res, "spacing after done"};
         golden::pso_regs w;
@@ -567,7 +609,7 @@ void test_directed(tbu::result& res) {
             golden::pso_regs x = w;
             x.arr_we = true;
             x.arr_addr = j;
-            x.arr_data = (j == 0 ? 3ULL : 6ULL) * kQ;
+            x.arr_data = (j == 0 ? 4ULL : 6ULL) * kQ;
             d.step(golden::pso_in{}, x);
         }
         w.enable = true;
@@ -599,7 +641,7 @@ void test_directed(tbu::result& res) {
         };
         const bad bads[] = {
             {"fire distance 0", [](golden::pso_regs& r) { r.fire_dist = 0; }},
-            {"fire distance below 2 counts", [](golden::pso_regs& r) { r.fire_dist = 2 * kQ - 1; }},
+            {"fire distance below 4 counts", [](golden::pso_regs& r) { r.fire_dist = 4 * kQ - 1; }},
             {"pulse width 0", [](golden::pso_regs& r) { r.pulse_w = 0; }},
             {"K = 0", [](golden::pso_regs& r) { r.win_k = 0; }},
             {"K = 17", [](golden::pso_regs& r) { r.win_k = 17; }},
@@ -614,9 +656,9 @@ void test_directed(tbu::result& res) {
             pair_run p{{}, {}, &res, "base config"};
             golden::pso_regs r;
             r.enable = true;
-            r.fire_dist = 2 * kQ;
+            r.fire_dist = 4 * kQ;
             r.arr_we = true;
-            r.arr_data = 3 * kQ;
+            r.arr_data = 5 * kQ;
             bool err = false, any = false;
             for (int t = 0; t < 50; ++t) {
                 const golden::pso::out o = p.step(steps(1, 1, 1), r);
@@ -629,10 +671,10 @@ void test_directed(tbu::result& res) {
             pair_run p{{}, {}, &res, std::string("bad config: ") + b.what};
             golden::pso_regs r;
             r.enable = true;
-            r.fire_dist = 2 * kQ;
+            r.fire_dist = 4 * kQ;
             r.arr_we = true;  // entry 0 legal, entry 1 never written
             r.arr_addr = 0;
-            r.arr_data = 3 * kQ;
+            r.arr_data = 5 * kQ;
             b.set(r);
             bool err = true, any = false;
             for (int t = 0; t < 50; ++t) {
@@ -649,11 +691,11 @@ void test_directed(tbu::result& res) {
         r.arr_en = true;
         r.arr_len = 1;
         r.arr_we = true;
-        r.arr_data = 2 * kQ;
+        r.arr_data = 4 * kQ;
         res.check(!p.step(golden::pso_in{}, r).cfg_err, "reset values in force rejected");
-        r.arr_data = 1 * kQ;
-        res.check(!p.step(golden::pso_in{}, r).cfg_err, "array entry of 2 counts rejected");
-        res.check(p.step(golden::pso_in{}, r).cfg_err, "array entry of 1 count accepted");
+        r.arr_data = 4 * kQ - 1;
+        res.check(!p.step(golden::pso_in{}, r).cfg_err, "array entry of 4 counts rejected");
+        res.check(p.step(golden::pso_in{}, r).cfg_err, "array entry below 4 counts accepted");
     }
 }
 

@@ -39,8 +39,8 @@
 //                           part-speed at rates above the 24 MHz clamp, arrays of 1..64 entries
 //                           (wrap or done) written while disabled and while running (the entry of
 //                           the next fire too), windows on every source, spacing and frequency
-//                           flags, enable drops, invalid configurations of every kind, fires in
-//                           consecutive calls (see pso_stress below).
+//                           flags, enable drops, invalid configurations of every kind, fires as
+//                           close as the minimum distance allows (see pso_stress below).
 // Every file has the column layout of the golden file of its block (lxt::vec_layout(), shared with
 // `laserax vectors`), so one testbench rtl_ref/tb/tb_<block>.v runs both sets. The columns the
 // golden sets hold at 0 are exercised here: pulse_multiplier `preset, preset_n` (a row with
@@ -935,41 +935,45 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
 // ---- pso --------------------------------------------------------------------------------------
 // Segments of 30..2500 calls; at each segment start every register is re-drawn: tracking (any
 // axis mask, K 1..16) or part-speed (rates up to 2^32 - 1: clamped, rate_over; INC_MAX and
-// INC_MAX + 1), firing distance 2 counts exactly .. 200 counts with a random fraction, array
+// INC_MAX + 1), firing distance 4 counts exactly .. 200 counts with a random fraction, array
 // mode (length 1..64, wrap or not, entries rewritten while disabled), pulse width 1..80, the
 // window on any source with edges next to the current position, laser minimum period 0..300
 // (freq_err; spacing_err in part-speed). One segment in 7 is short and invalid (K 0 or 17..31,
-// distance or an entry below 2 counts, length 0 or 65..127, no axis, pulse width 0, low > high,
+// distance or an entry below 4 counts, length 0 or 65..127, no axis, pulse width 0, low > high,
 // source 3 without part-speed). Per call: steps of a random walk per axis (speed up to one count
-// per call on every axis: fires in consecutive calls at small distances; reversals), enable
+// per call on every axis: fires two or three calls apart at small distances; reversals), enable
 // drops of 1..3 calls, clears, live distance changes, array writes while running (to the entry
-// of the next fire and the four after it, too: the prefetch and RAM forwarding of the RTL,
-// whose four read copies cover next(idx) .. next^4(idx) of the index two calls before; one
+// of the next fire and the ones after it, too: the prefetch and RAM forwarding of the RTL,
+// whose three read copies cover next(idx) .. next^3(idx) of the index two calls before; one
 // segment in 3 writes there in half of its calls). The first 120
 // calls are directed: an array run in part-speed with a spacing check, dropped for one call at
 // idx != 0 while entry 0 is rewritten, then restarted (the first call of a run samples entry 0
 // for the spacing check); again with entry 0 rewritten in the first call of the run. Calls
 // 120..319: one count per call on x, an array of 3 entries without wrap (done, idx stays at the
-// last entry), then emits exactly 2 calls apart with min_period 2 (not early) and 3 (freq_err).
-// Calls 320..359: a 3D diagonal with K = 1 (sqrt3 per call) on an array of three 2-count entries
-// without wrap: fires in consecutive calls up to done, and the call after done would fire again.
+// last entry), then emits exactly 4 calls apart with min_period 4 (not early) and 5 (freq_err).
+// Calls 320..359: a 3D diagonal with K = 1 (sqrt3 per call) on an array of three 4-count entries
+// without wrap: fires two or three calls apart (the closest possible) up to done, and the call
+// after done would fire again.
 // Calls 360..439: part-speed at INC_MAX with min_period 9 and the threshold exactly one 2^-32
 // count below INC_MAX x 9 (flagged), then exactly equal (not flagged): the product's last bit.
-// Calls 440..539: part-speed at INC_MAX, min_period 20 (4.8 counts), an array of 3 and 6 counts
+// Calls 440..539: part-speed at INC_MAX, min_period 20 (4.8 counts), an array of 4 and 6 counts
 // without wrap: the spacing samples after done keep the last threshold (6: not flagged; the
 // fire that makes the array done takes none, entry 0 would be flagged). Calls 540..599: a 3D
-// diagonal with K = 1 on an array of five distinct entries just above 2 counts with wrap: runs
-// of up to six fires in consecutive calls, every index move picking a different entry (the
-// prefetch's deepest read, next^4 of the index two calls before). Calls 600..699: the same with
-// an entry rewritten in every call (2 .. 2.05 counts, at every offset 0..4 from the index shown):
-// writes presented with each of the four reads and forwarded into the thresholds. Calls
+// diagonal with K = 1 on an array of five distinct entries just above 4 counts with wrap: fires
+// two or three calls apart, every index move picking a different entry (the prefetch's deepest
+// read, next^3 of the index two calls before, after a move two calls apart). Calls 600..699: the
+// same with an entry rewritten in every call (4 .. 4.05 counts, at every offset 0..4 from the
+// index shown): writes presented with each of the three reads and forwarded into the thresholds. Calls
 // 700..759: a tracking run on x with each kind of invalid configuration presented for one call
-// in every sixth call (K 0, K 17, distance below 2 counts, length 0 and 65, no axis, pulse
+// in every sixth call (K 0, K 17, distance below 4 counts, length 0 and 65, no axis, pulse
 // width 0, low > high, source 3 without part-speed, an array with an entry not written). Calls
 // 760..899: one count per call on x with K = 1 on an array of four 4- or 5-count entries with
 // wrap (fires 4 or 5 calls apart) and an entry rewritten in every call at offsets 0..3 from the
 // index shown: writes presented in the call of an index move, forwarded into the thresholds of
-// the fire after the next.
+// the fire after the next. Calls 900..999: one count per call on x, an array of four 8-count
+// entries with wrap; from call 930 arr_en is off (the check then covers fire_dist) while the run
+// keeps its array, and the entries are rewritten to 1 .. 1.75 counts: a fire every second call,
+// never two in a row (docs/PSO_COUNTERS.md §2.7).
 vec_table pso_stress(rng_t& r, long long calls) {
     using C = lx::pso_cfg;
     vec_table t{"pso_stress", lxt::vec_layout("pso"), {}};
@@ -985,7 +989,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
     int64_t last_idx = 0;
     bool hammer = false;
     long long drop_call = -1;  // directed prologue: the first call from 60 on with idx != 0  // this segment writes the entries at idx .. idx + 2 in most calls
-    long long repair_at = -1;  // a bad entry written while running is rewritten (>= 2 counts) in
+    long long repair_at = -1;  // a bad entry written while running is rewritten (>= 4 counts) in
     int repair_addr = 0;       //   this call or the first later call without a write
     auto draw_dist = [&]() -> uint64_t {
         switch (r.range(0, 4)) {
@@ -1116,7 +1120,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
             if (n < 3) {
                 x.arr_we = true;
                 x.arr_addr = static_cast<int>(n);
-                x.arr_data = (static_cast<uint64_t>(n) + 3) << 32;  // 3, 4, 5 counts
+                x.arr_data = (4ULL << 32) + (static_cast<uint64_t>(n) << 30);  // 4, 4.25, 4.5 counts
             }
             if (drop_call < 0 && n >= 60 && last_idx != 0) drop_call = n;
             x.enable = n >= 3 && n != drop_call && n != 90;
@@ -1146,14 +1150,14 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 if (n < 123) {
                     x.arr_we = true;
                     x.arr_addr = static_cast<int>(n - 120);
-                    x.arr_data = (n == 121 ? 3ULL << 32 : 2ULL << 32) + (n == 122 ? 0x80000000ULL : 0);
+                    x.arr_data = (n == 121 ? 5ULL << 32 : 4ULL << 32) + (n == 122 ? 0x80000000ULL : 0);
                 }
-            } else {  // emits exactly 2 calls apart: min_period 2 is not early, 3 is
+            } else {  // emits exactly 4 calls apart: min_period 4 is not early, 5 is
                 x.fire_dist = C::MIN_DIST;
-                x.min_period = n < 260 ? 2 : 3;
+                x.min_period = n < 260 ? 4 : 5;
             }
         }
-        if (n >= 320 && n < 360) {  // directed: consecutive fires up to done
+        if (n >= 320 && n < 360) {  // directed: fires two or three calls apart (the closest) up to done
             x = golden::pso_regs{};
             in = golden::pso_in{};
             x.axis_mask = 7;
@@ -1195,7 +1199,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
             if (n < 442) {
                 x.arr_we = true;
                 x.arr_addr = static_cast<int>(n - 440);
-                x.arr_data = (n == 440 ? 3ULL : 6ULL) << 32;
+                x.arr_data = (n == 440 ? 4ULL : 6ULL) << 32;
             }
         }
         // calls 540..699: a 3D diagonal with K = 1 on a wrapping array of five entries
@@ -1213,7 +1217,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 in.pos[a] = n;
             }
         };
-        if (n >= 540 && n < 600) {  // directed: consecutive fires on distinct entries
+        if (n >= 540 && n < 600) {  // directed: the closest fires (two or three calls apart) on distinct entries
             diagonal_on_array5();
             x.enable = n >= 546;
             if (n < 545) {
@@ -1222,12 +1226,12 @@ vec_table pso_stress(rng_t& r, long long calls) {
                 x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n - 540) << 20);
             }
         }
-        if (n >= 600 && n < 700) {  // directed: consecutive fires while every call rewrites an entry
+        if (n >= 600 && n < 700) {  // directed: the closest fires while every call rewrites an entry
             diagonal_on_array5();
             x.enable = n >= 606;
             x.arr_we = n < 605 || n >= 608;
             x.arr_addr = static_cast<int>(n < 605 ? n - 600 : (last_idx + n % 5) % 5);
-            x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n % 4) << 26);   // 2 .. 2.05 counts
+            x.arr_data = C::MIN_DIST + (static_cast<uint64_t>(n % 4) << 26);   // 4 .. 4.05 counts
         }
         if (n >= 760 && n < 900) {  // directed: fires 4 or 5 calls apart while every call rewrites an entry
             x = golden::pso_regs{};
@@ -1245,6 +1249,28 @@ vec_table pso_stress(rng_t& r, long long calls) {
             const uint64_t h = (static_cast<uint64_t>(n) * 2654435761ULL) >> 9;   // (no draw)
             x.arr_addr = static_cast<int>(n < 764 ? n - 760 : (last_idx + static_cast<int64_t>(h % 4)) % 4);
             x.arr_data = (n < 764 || ((h >> 2) & 1) == 0 ? 4 : 5) * C::ONE;
+        }
+        if (n >= 900 && n < 1000) {  // directed: a latched array below the minimum (no fire after a fire)
+            x = golden::pso_regs{};
+            in = golden::pso_in{};
+            x.axis_mask = 1;
+            x.pulse_w = 1;
+            x.arr_len = 4;
+            x.arr_wrap = true;
+            in.step[0] = 1;
+            in.pos[0] = n;
+            x.enable = n >= 905;
+            x.arr_en = n < 930;   // off while the run keeps its array: the check covers fire_dist
+            if (n < 904) {
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n - 900);
+                x.arr_data = 8 * C::ONE;
+            }
+            if (n >= 930 && n < 934) {   // 1 .. 1.75 counts: a fire every second call
+                x.arr_we = true;
+                x.arr_addr = static_cast<int>(n - 930);
+                x.arr_data = C::ONE + (static_cast<uint64_t>(n - 930) << 30);
+            }
         }
         if (n >= 700 && n < 760) {  // directed: each kind of invalid configuration for one call
             x = golden::pso_regs{};

@@ -19,12 +19,12 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
     //      1 (0 .. 40 %)  2D path of random straight segments with reversals (K 16), window on
     //                     x in [-200, 200] in its second half, live distance and width changes
     //                     (overlaps), a clear every 20000 calls;
-    //      2 (40 .. 60 %) 3D path, K 8, array mode: 8 entries (3..40 counts) written while
+    //      2 (40 .. 60 %) 3D path, K 8, array mode: 8 entries (4..40 counts) written while
     //                     disabled, the run wraps; the window on z;
     //      3 (60 .. 80 %) part-speed: a rate profile up to 30 MHz (clamped, rate_over), laser
     //                     minimum period 100 (spacing_err, freq_err), window on the pulse count;
     //      4 (80 .. 100 %) 2D again (K 4), with enable toggles and one-call invalid
-    //                     configurations (K 0, distance below 2 counts, window low > high)
+    //                     configurations (K 0, distance below 4 counts, window low > high)
     vec_table pso{"pso", vec_layout("pso"), {}};
     {
         lx::pso h;
@@ -70,7 +70,7 @@ bool build_motion_vectors(uint64_t seed, long long calls, std::vector<vec_table>
                 if (k < 8) {
                     gr.arr_we = true;
                     gr.arr_addr = static_cast<int>(k);
-                    gr.arr_data = (3ULL + static_cast<uint64_t>(rng() % 38)) * (1ULL << 32) + (rng() & 0xffffffffULL);
+                    gr.arr_data = (4ULL + static_cast<uint64_t>(rng() % 37)) * (1ULL << 32) + (rng() & 0xffffffffULL);
                 }
                 gr.pulse_w = 4;
                 gr.win_en = true;
