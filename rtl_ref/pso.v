@@ -8,7 +8,7 @@
 // select of two registers by the last call's pulse (a register). Synchronous
 // active-high reset = a freshly constructed lx::pso (every array entry "not written", state in
 // reset). A call with an invalid configuration resets everything except the array RAM and its
-// "entry below 2 counts" map and raises cfg_err for that call; a call with enable = 0 resets the
+// "entry below 4 counts" map and raises cfg_err for that call; a call with enable = 0 resets the
 // tracking state (counters and sticky flags are kept).
 //
 // Register stage (§2.2): the register inputs presented at an edge are in force at the next one
@@ -30,36 +30,38 @@
 //       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (q_rev ?
 //       0 : part), the growth of the estimate; part' = q_kclose ? 0 : chord; the window
 //       compares (in 19-bit halves, combined in B1).
-//   B1  Y - th for the four prefetched thresholds (entries next .. next^4 of the index before
+//   B1  Y - th for the two prefetched thresholds (entries next, next^2 of the index before
 //       the last call's move, or fire_dist; the first operands of a run take the start
 //       threshold thr as the first), straight from registers: no select in front of the adds;
 //       all 0 while R holds no data. Each a 38-bit add (Y < 2^38) in 19-bit carry-select, its
 //       carry picking the upper bits between ~th and -th (the prefetch registers hold ~th).
-//   P   the loop operands: Y, and Y - thF for the two candidate thresholds of the fire after the
-//       next (hls: next(idx), next^2(idx) of the index after the last call's move), picked
-//       from B1's four by the moves of the last two calls (registers): selects only.
-//   B2  the loop on u = value - thr of the entry held: the decision is u >= 0, the sign of the
-//       registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry out of lo
-//       added into hi at the next update, and a flag "hi[27:0] all ones" formed beside the
-//       update without a carry chain: sign = hi[28] ^ (c & ones)); u' = u + (u >= 0 ? Y - thF
-//       : Y), the sums formed from registers (after a fire for both candidates of the last
-//       call's move) and picked by the move and the sign: one 29-bit chain and selects. A fire (or the run start) takes the next threshold (thr). Array index. The
-//       decision goes into registers only (c_fire, the index move).
+//   P   the loop operands: Y, and Y - thF for the threshold of the fire after the next (hls:
+//       next(idx) of the index after the last call's move), picked from B1's two by "the index
+//       moved in one of the last two calls" (a register; at most one of them can, since no two
+//       calls in a row fire, §2.7): selects only.
+//   B2  the loop on u = value - thr of the entry held: the decision is u >= 0 and no fire in the
+//       last call, from registers (u is kept carry-deferred: halves hi, lo of 29 bits, the carry
+//       out of lo added into hi at the next update, and a flag "hi[27:0] all ones" formed beside
+//       the update without a carry chain: sign = hi[28] ^ (c & ones)); u' = u + (decision ?
+//       Y - thF : Y), both sums formed from registers and picked by the decision: one 29-bit
+//       chain and a select. A fire (or the run start) takes the next threshold (thr). Array
+//       index. The decision goes into registers only (c_fire, the index move).
 //   B3  applies the decision of the last call (c_fire): fire / emit, pulse timer, overlap /
 //       frequency flags, counters, dist = u (+ thr if it did not fire) resolved from the
 //       registered halves, the index and done outputs.
 // A step in call t fires in call t + 7.
 //
-// Array RAM (64 x 56): five copies (one read port each, the write port shared), read in call
-// t - 2 at next(idx) .. next^5(idx) of that call. Threshold prefetch: in call t - 1 four of the
-// five (picked by the registered index move of call t - 2) are completed with the writes in
+// Array RAM (64 x 56): three copies (one read port each, the write port shared), read in call
+// t - 2 at next(idx) .. next^3(idx) of that call. Threshold prefetch: in call t - 1 two of the
+// three (picked by the registered index move of call t - 2) are completed with the writes in
 // force in calls t - 1 and t (forwarded: the first was written after the read, the second is
 // presented in call t - 1), or replaced by fire_dist in force in call t, and registered
-// inverted (thn1..thn4: ~ the entries next(idx) .. next^4(idx) of call t - 1). B1 in call t
-// subtracts all four from Y; P in call t + 1 picks two with the index moves of calls t - 1
-// and t. The threshold register thr is loaded, while the
-// tracking state is in reset, with the start threshold of a run beginning in the next call
-// (fire_dist presented, or entry 0 from a copy register, entry0, with the presented write).
+// inverted (thn1, thn2: ~ the entries next(idx), next^2(idx) of call t - 1). B1 in call t
+// subtracts both from Y; P in call t + 1 picks one with the index moves of calls t - 1 and t
+// (at most one of the two moves). The start threshold of a run beginning in the next call
+// (fire_dist presented, or entry 0 from a copy register, entry0, with the presented write) is
+// registered in every call (st); the threshold register thr loads it in every call without a
+// run (so it holds it from run call 1 on; run call 0 reads st).
 //
 // Widths (pso_cfg): distances Q24.32 (56 unsigned), u (value - thr) and dist 58 signed, chord 37,
 // x / y 38, travel 6 signed, K 5, positions 38 signed, part-speed rate Q0.32, pulse width and
@@ -84,7 +86,7 @@ module pso (
     input  wire                            i_part_speed,   // latched at the start of a run
     input  wire [`LX_PSO_N_AXES-1:0]       i_axis_mask,    // latched; != 0 unless part_speed
     input  wire [`LX_PSO_W_K-1:0]          i_win_k,        // tracking window K, 1..16
-    input  wire [`LX_PSO_W_DIST-1:0]       i_fire_dist,    // Q24.32 counts, >= 2 counts unless arr_en
+    input  wire [`LX_PSO_W_DIST-1:0]       i_fire_dist,    // Q24.32 counts, >= 4 counts unless arr_en
     input  wire                            i_arr_en,       // latched
     input  wire [`LX_PSO_W_LEN-1:0]        i_arr_len,      // latched; 1..64 when arr_en
     input  wire                            i_arr_wrap,     // latched
@@ -197,20 +199,16 @@ module pso (
         for (ri = 0; ri <= S_MAX; ri = ri + 1) rom[ri] = round_sqrt(ri[W_S-1:0]);
     end
 
-    // ---- array RAM: four copies with one read port each ----------------------------------------
+    // ---- array RAM: three copies with one read port each ---------------------------------------
     reg [W_DIST-1:0] arr1 [0:63];
     reg [W_DIST-1:0] arr2 [0:63];
     reg [W_DIST-1:0] arr3 [0:63];
-    reg [W_DIST-1:0] arr4 [0:63];
-    reg [W_DIST-1:0] arr5 [0:63];
     integer ai;
     initial begin
         for (ai = 0; ai < 64; ai = ai + 1) begin
             arr1[ai] = {W_DIST{1'b0}};
             arr2[ai] = {W_DIST{1'b0}};
             arr3[ai] = {W_DIST{1'b0}};
-            arr4[ai] = {W_DIST{1'b0}};
-            arr5[ai] = {W_DIST{1'b0}};
         end
     end
 
@@ -230,23 +228,22 @@ module pso (
     reg                     ok_a_q, ok_w_q, ok_t_q;   // configuration check of the values in
                                           //   force: K, axes, width / window / threshold
     reg                     ok_ae_q;      // ok_a and enable
-    reg [63:0]              bad_q;        // entry below 2 counts (or never written), after the
+    reg [63:0]              bad_q;        // entry below 4 counts (or never written), after the
                                           //   writes presented so far
     reg [W_DIST-1:0]        entry0_q;     // copy of entry 0 (the RAM after the last edge)
-    reg [W_DIST-1:0]        rd1_q, rd2_q, rd3_q, rd4_q, rd5_q;   // array read data (BRAM output registers)
-    reg                     fw1_q, fw2_q, fw3_q, fw4_q, fw5_q;   // the write presented with the read hit its address
-    reg [W_DIST-1:0]        thn1_q, thn2_q, thn3_q, thn4_q;      // thresholds, inverted: ~ entries
-                                                          //   next(idx) .. next^4(idx) of the last call, or ~fire_dist
-    reg                     adv_q;        // the last call moved the index (B2's operand pick)
+    reg [W_DIST-1:0]        rd1_q, rd2_q, rd3_q;   // array read data (BRAM output registers)
+    reg                     fw1_q, fw2_q, fw3_q;   // the write presented with the read hit its address
+    reg [W_DIST-1:0]        thn1_q, thn2_q;        // thresholds, inverted: ~ entries next(idx),
+                                                   //   next^2(idx) of the last call, or ~fire_dist
+    reg                     adv_q;        // the last call moved the index
     // copies of adv_q, one per group of its loads (about 60 each instead of about 450 on one
     // net): each is adv and a register that is 1 in every call that can move the index (the
     // valid bits and the check, all 1 while the tracking state runs), so that Yosys keeps them
     // apart (equal flip-flops would be merged into one)
-    reg                     adv_t_q;      //   B2's threshold pick, done_c
-    reg                     adv_g1_q, adv_g2_q, adv_g3_q, adv_g4_q;   // the prefetch's g1 .. g4, pw1 .. pw4
-    reg                     adv_i_q;      //   the index registers' pick (idx_l .. nx5_l)
-    reg [3:0]               adv_p_q;      //   P's picks (opF0, opF1, thF0, thF1): the last call's move
-    reg [3:0]               adv_pp_q;     //   P's picks: the move of the call before (adv_q delayed)
+    reg                     adv_g1_q, adv_g2_q;   // the prefetch's g1, g2, pw1, pw2
+    reg                     adv_i_q;      //   the index registers' pick (idx_l .. nx4_l)
+    reg [1:0]               mv_q;         // P's picks (opF, thF): the index moved in one of the last
+                                          //   two calls (at most one of them can, §2.7)
     // run state and latched mode registers
     reg                     run_q, ps_q, arr_en_q, arr_wrap_q;
     reg [2:0]               mask_q;
@@ -280,6 +277,8 @@ module pso (
                                           //   lower > (combined where it is shown)
     reg [W_INC-1:0]         sp_inc_q;
     reg [W_GAP-1:0]         sp_m_q;       // min_period, shifted right once per step
+    reg [W_SPHI-1:0]        sp_a_q;       // the addend of the next step: sp_m[0] ? inc : 0 (formed
+                                          //   with sp_m's update, so the step is one chain)
     reg [W_PROD-1:0]        sp_thr_q;     // its threshold, low 48 bits
     reg [W_SPHI-1:0]        sp_hi_q;
     reg [W_GAP-1:0]         sp_lo_q;
@@ -295,33 +294,38 @@ module pso (
     reg [5:0]               r_wc_q;       //   hls a_inwin = !a_wen || (lo <= w && w <= hi), below
     // stage B1
     reg [W_INCR-1:0]        p_y_q;
-    reg [W_REM-1:0]         p_d1_q, p_d2_q, p_d3_q, p_d4_q;   // Y - th1 .. Y - th4
-    reg [W_DIST-1:0]        p_thn1_q, p_thn2_q, p_thn3_q, p_thn4_q;   // ~th1 .. ~th4
+    reg [W_DP-1:0]          p_d1_q, p_d2_q;       // Y - th1, Y - th2 in parts (sub_y)
+    reg [W_DIST-1:0]        p_thn1_q, p_thn2_q;   // ~th1, ~th2
     reg                     p_inwin_q, p_v_q;
     // stage P
     reg [W_INCR-1:0]        b_y_q;
-    reg [W_REM-1:0]         b_opf0_q, b_opf1_q;   // Y - thF0, Y - thF1
-    reg [W_DIST-1:0]        b_thf0_q, b_thf1_q;   // the thresholds after a fire: the index not
-                                                  //   moved / moved by the last call's decision
+    reg [W_REM-1:0]         b_opf0_q;     // Y - thF
+    reg [W_DIST-1:0]        b_thf0_q;     // the threshold after a fire (for the index after the
+                                          //   last call's decision)
     reg                     b_inwin_q, b_v_q;
     // stage B2 (u carry-deferred: value = (hi + c) * 2^29 + lo, ao = &hi[27:0])
     reg [LH-1:0]            u_hi_q, u_lo_q;
     reg                     u_c_q, u_ao_q;
     reg                     u_v_q, u_inwin_q;
     reg                     e_q;          // u_v && !done
-    reg [W_DIST-1:0]        thr_q;        // threshold of the next fire
+    reg                     tk_q;         // b_v && !c_fire && !done && !stop0 (take = u >= 0 && tk)
+    reg [W_DIST-1:0]        thr_q;        // threshold of the next fire (from run call 1 on)
+    reg [W_DIST-1:0]        st_q;         // the start threshold of a run beginning in this call
     reg [6:0]               idx_p_q;      // the index before the last call's move (adv_q), and
-    reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it
-    reg [6:0]               nx5_p_q, nx6_p_q;   // next^5, next^6 of it (so that a move of the
-                                          //   deepest read is a select of registers)
+    reg [6:0]               nx_p_q, nx2_p_q, nx3_p_q, nx4_p_q;   //   next .. next^4 of it (so
+                                          //   that a move of the deepest read is a select of
+                                          //   registers)
     reg                     done_q;
-    reg                     stop0_q, stop1_q;   // a fire ends the array (arr_en, no wrap, the last
-                                                //   entry) with the index before / after the last
-                                                //   call's move (picked by adv_q as idx_l)
+    reg                     stop0_q;      // a fire ends the array (arr_en, no wrap, the last
+                                          //   entry) with the index of this call (a fire never
+                                          //   follows a move, so idx_l = idx_p there)
     reg                     c_fire_q, c_inwin_q, c_live_q;   // decision, its window, made while
                                                              //   not done
-    reg [LH-1:0]            c_hic_q, c_lo_q;   // u of the decision, resolved: {hi + c, lo}
-    reg [W_DIST-1:0]        c_tm_q;       // its threshold if it did not fire, else 0
+    reg [LH-1:0]            c_hic_q;      // u of the decision, resolved: hi + c
+    reg [LH-1:0]            c_lo_q;       // lo of u
+    reg [LH:0]              c_lt_q;       // lo of u + lo of its threshold, with the carry out
+    reg                     c_f_q;        // the decision's u >= 0 (its threshold not added)
+    reg [W_DIST-LH-1:0]     c_tm_q;       // the threshold's upper bits if it did not fire, else 0
     // stage B3
     reg [W_REM-1:0]         dist_q;
     reg [6:0]               idx_o_q;
@@ -340,7 +344,7 @@ module pso (
     reg                     spacing_err_q, freq_err_q, ps_pulse_q, cfg_err_q;
 
     // ---- array write port and the map of bad entries (after this call's write) ---------------
-    wire        wr_bad = (i_arr_data[W_DIST-1:D_FRAC+1] == 23'd0);   // data < 2 counts
+    wire        wr_bad = (i_arr_data[W_DIST-1:D_FRAC+2] == {(W_DIST-D_FRAC-2){1'b0}});   // data < 4 counts
     wire [63:0] wr_bit = 64'd1 << i_arr_addr;
     wire [63:0] bad_d  = !i_arr_we ? bad_q : wr_bad ? (bad_q | wr_bit) : (bad_q & ~wr_bit);
 
@@ -369,7 +373,7 @@ module pso (
                           (i_arr_len[6] || gt3(i_arr_len[5:3], i_arr_addr[5:3]) ||
                            ((i_arr_len[5:3] == i_arr_addr[5:3]) && gt3(i_arr_len[2:0], i_arr_addr[2:0])));
     wire        thr_ok  = i_arr_en ? (len_ok && !bad_old && !bad_new)
-                                   : (i_fire_dist[W_DIST-1:D_FRAC+1] != 23'd0);
+                                   : (i_fire_dist[W_DIST-1:D_FRAC+2] != {(W_DIST-D_FRAC-2){1'b0}});
     // win_low <= win_high: the sign of high - low (39 bits) as a carry-select subtract (19-bit low
     // part; the upper 20 bits with borrow 0 and 1)
     wire [20:0] wlo_l = {1'b0, i_win_high[18:0], 1'b1} + {1'b0, ~i_win_low[18:0], 1'b1};  // [20]: no borrow
@@ -391,27 +395,20 @@ module pso (
     wire       arr_en_e = run_q ? arr_en_q : f_arr_en_q;
     wire [6:0] len_e    = run_q ? len_q : f_arr_len_q;
 
-    // carry-select W_REM-bit add with carry-in: low 29 bits, upper 29 bits for carry 0 and 1
-    // ({a, c} + {b, c}: the carry-in through bit 0 of one adder)
-    function [W_REM-1:0] csel;
-        input [W_REM-1:0] a, b;
-        input             cin;
-        reg [LH+1:0]        lo;
-        reg [W_REM-LH-1:0]  hi0;
-        reg [W_REM-LH:0]    hi1;
-        begin
-            lo  = {1'b0, a[LH-1:0], cin} + {1'b0, b[LH-1:0], cin};
-            hi0 = a[W_REM-1:LH] + b[W_REM-1:LH];
-            hi1 = {a[W_REM-1:LH], 1'b1} + {b[W_REM-1:LH], 1'b1};
-            csel = {lo[LH+1] ? hi1[W_REM-LH:1] : hi0, lo[LH:1]};
-        end
-    endfunction
-
     // y - th = y + thn + 1 for y < 2^38 (W_REM bits; thn = ~th, a register): the low 19 bits
     // one chain with carry-in 1, bits 37..19 for carry 0 and 1, and for each the upper 20 bits
-    // picked by that part's carry out (nh = -th[55:38], 20 bits, or ~th[55:38] with two ones),
-    // so the low carry makes the last select
-    function [W_REM-1:0] sub_y;
+    // picked by that part's carry out (nh = -th[55:38], 20 bits, or ~th[55:38] with two ones).
+    // Returned in parts, {low carry, low 19 bits, upper 39 bits for carry 1, for carry 0}: the
+    // low carry's select is made after the register (sub_fin, in stage P)
+    localparam integer W_DP = 2 * W_REM - 18;   // 98: the parts of one difference
+    function [W_REM-1:0] sub_fin;
+        input [W_DP-1:0] p;
+        begin
+            sub_fin = p[W_DP-1] ? {p[2*(W_REM-19)-1:W_REM-19], p[W_DP-2:2*(W_REM-19)]}
+                                : {p[W_REM-20:0], p[W_DP-2:2*(W_REM-19)]};
+        end
+    endfunction
+    function [W_DP-1:0] sub_y;
         input [W_INCR-1:0] y;
         input [W_DIST-1:0] thn;
         input [19:0]       nh;
@@ -426,7 +423,7 @@ module pso (
             ih = {2'b11, thn[W_DIST-1:W_INCR]};
             u0 = m0[19] ? nh : ih;
             u1 = m1[20] ? nh : ih;
-            sub_y = lo[20] ? {u1, m1[19:1], lo[19:1]} : {u0, m0[18:0], lo[19:1]};
+            sub_y = {lo[20], lo[19:1], u1, m1[19:1], u0, m0[18:0]};
         end
     endfunction
 
@@ -473,27 +470,39 @@ module pso (
         end
     endfunction
 
-    function [8:0] sq4;     // a * a for a 4-bit a (a table: no multiplier)
-        input [3:0] a;
+    // (a + off)^2 for a 4-bit a, off = 0, 1: a table of constants, bit-sliced (bit k of the square
+    // for every a in bits 16k .. 16k + 15), indexed per bit: one LUT per bit and no multiplier.
+    // (A case statement would become a ROM, and Yosys would then move the travel register ta
+    // behind it: registers of the squares with the window close as their reset, in series after
+    // the close.)
+    function [16*9-1:0] sq_slices;   // constant function (elaboration only)
+        input integer off;
+        integer v, k;
+        reg [8:0] q;
         begin
-            case (a)
-                4'd0: sq4 = 9'd0;    4'd1: sq4 = 9'd1;    4'd2: sq4 = 9'd4;    4'd3: sq4 = 9'd9;
-                4'd4: sq4 = 9'd16;   4'd5: sq4 = 9'd25;   4'd6: sq4 = 9'd36;   4'd7: sq4 = 9'd49;
-                4'd8: sq4 = 9'd64;   4'd9: sq4 = 9'd81;   4'd10: sq4 = 9'd100; 4'd11: sq4 = 9'd121;
-                4'd12: sq4 = 9'd144; 4'd13: sq4 = 9'd169; 4'd14: sq4 = 9'd196; default: sq4 = 9'd225;
-            endcase
+            sq_slices = {16*9{1'b0}};
+            for (v = 0; v < 16; v = v + 1) begin
+                q = (v + off) * (v + off);
+                for (k = 0; k < 9; k = k + 1) sq_slices[16*k + v] = q[k];
+            end
+        end
+    endfunction
+    localparam [16*9-1:0] SQ0_T = sq_slices(0);
+    localparam [16*9-1:0] SQ1_T = sq_slices(1);
+
+    function [8:0] sq4;     // a * a
+        input [3:0] a;
+        integer k;
+        begin
+            for (k = 0; k < 9; k = k + 1) sq4[k] = SQ0_T[16*k + a];
         end
     endfunction
 
-    function [8:0] sq4p1;   // (a + 1)^2 for a 4-bit a
+    function [8:0] sq4p1;   // (a + 1)^2
         input [3:0] a;
+        integer k;
         begin
-            case (a)
-                4'd0: sq4p1 = 9'd1;    4'd1: sq4p1 = 9'd4;    4'd2: sq4p1 = 9'd9;    4'd3: sq4p1 = 9'd16;
-                4'd4: sq4p1 = 9'd25;   4'd5: sq4p1 = 9'd36;   4'd6: sq4p1 = 9'd49;   4'd7: sq4p1 = 9'd64;
-                4'd8: sq4p1 = 9'd81;   4'd9: sq4p1 = 9'd100;  4'd10: sq4p1 = 9'd121; 4'd11: sq4p1 = 9'd144;
-                4'd12: sq4p1 = 9'd169; 4'd13: sq4p1 = 9'd196; 4'd14: sq4p1 = 9'd225; default: sq4p1 = 9'd256;
-            endcase
+            for (k = 0; k < 9; k = k + 1) sq4p1[k] = SQ1_T[16*k + a];
         end
     endfunction
 
@@ -515,24 +524,18 @@ module pso (
     wire [6:0]       nx_l   = adv_i_q ? nx2_p_q : nx_p_q;
     wire [6:0]       nx2_l  = adv_i_q ? nx3_p_q : nx2_p_q;
     wire [6:0]       nx3_l  = adv_i_q ? nx4_p_q : nx3_p_q;
-    wire [6:0]       nx4_l  = adv_i_q ? nx5_p_q : nx4_p_q;
-    wire [6:0]       nx5_l  = adv_i_q ? nx6_p_q : nx5_p_q;
-    wire [6:0]       nx6_l  = adv_i_q ? next_idx(nx6_p_q, len_q) : nx6_p_q;
+    wire [6:0]       nx4_l  = adv_i_q ? next_idx(nx4_p_q, len_q) : nx4_p_q;
 
     // ---- threshold prefetch (for the next call's B1) --------------------------------------------
-    // read data of the last call (addresses next(idx) .. next^5(idx) of that call), the write
+    // read data of the last call (addresses next(idx) .. next^3(idx) of that call), the write
     // presented with the read forwarded (it was made after the read: read-before-write),
-    // shifted by one entry when the last call moved the index: entries next(idx) .. next^4(idx)
+    // shifted by one entry when the last call moved the index: entries next(idx), next^2(idx)
     // of this call, after the write in force in this call
     wire [W_DIST-1:0] e1 = fw1_q ? f_data_q : rd1_q;
     wire [W_DIST-1:0] e2 = fw2_q ? f_data_q : rd2_q;
     wire [W_DIST-1:0] e3 = fw3_q ? f_data_q : rd3_q;
-    wire [W_DIST-1:0] e4 = fw4_q ? f_data_q : rd4_q;
-    wire [W_DIST-1:0] e5 = fw5_q ? f_data_q : rd5_q;
     wire [W_DIST-1:0] g1 = adv_g1_q ? e2 : e1;
     wire [W_DIST-1:0] g2 = adv_g2_q ? e3 : e2;
-    wire [W_DIST-1:0] g3 = adv_g3_q ? e4 : e3;
-    wire [W_DIST-1:0] g4 = adv_g4_q ? e5 : e4;
     // the write presented in this call (in force in the next) forwarded: its address compared
     // with both index registers, picked by adv_q after the compare; the forward is the last
     // select (pwk: the write hits entry k of the next call in array mode; th1 of the run's first
@@ -542,102 +545,89 @@ module pso (
     wire              eq1   = (i_arr_addr == nx_p_q[5:0]);
     wire              eq2   = (i_arr_addr == nx2_p_q[5:0]);
     wire              eq3   = (i_arr_addr == nx3_p_q[5:0]);
-    wire              eq4   = (i_arr_addr == nx4_p_q[5:0]);
-    wire              eq5   = (i_arr_addr == nx5_p_q[5:0]);
     wire              pw1   = pwe && !nf && (adv_g1_q ? eq2 : eq1);
     wire              pw2   = pwe && (adv_g2_q ? eq3 : eq2);
-    wire              pw3   = pwe && (adv_g3_q ? eq4 : eq3);
-    wire              pw4   = pwe && (adv_g4_q ? eq5 : eq4);
     // array mode of the next call (a run's calls 1, 2, ..: the latched mode), else fire_dist
     // presented now; the first operands of a run take the start threshold thr (th1, picked
     // with adv_q = 0)
     wire [W_DIST-1:0] q1    = nf ? thr_q : arr_en_e ? g1 : i_fire_dist;
     wire [W_DIST-1:0] q2    = arr_en_e ? g2 : i_fire_dist;
-    wire [W_DIST-1:0] q3    = arr_en_e ? g3 : i_fire_dist;
-    wire [W_DIST-1:0] q4    = arr_en_e ? g4 : i_fire_dist;
     wire [W_DIST-1:0] th1_d = pw1 ? i_arr_data : q1;
     wire [W_DIST-1:0] th2_d = pw2 ? i_arr_data : q2;
-    wire [W_DIST-1:0] th3_d = pw3 ? i_arr_data : q3;
-    wire [W_DIST-1:0] th4_d = pw4 ? i_arr_data : q4;
-    // the start threshold of a run beginning in the next call (loaded while the tracking state is
-    // in reset): fire_dist presented now, or entry 0 after the write presented now
+    // the start threshold of a run beginning in the next call: fire_dist presented now, or entry 0
+    // after the write presented now (registered as st_q, the presented values' path ends there;
+    // thr_q loads st_q in every call without a run, so it holds the start threshold from run
+    // call 1 on, and run call 0, whose spacing sample takes the threshold, reads st_q)
     wire [W_DIST-1:0] thr_st = i_arr_en ? ((i_arr_we && i_arr_addr == 6'd0) ? i_arr_data : entry0_q)
                                         : i_fire_dist;
+    wire [W_DIST-1:0] thr_now = run_q ? thr_q : st_q;   // the threshold of the next fire
 
     // ---- stage B1 ------------------------------------------------------------------------------
-    // Y - th for the four prefetched thresholds (entries next(idx) .. next^4(idx) of the last
-    // call's index: the candidates of hls for this call's index, next .. next^3, are three of
-    // them, picked by the last call's move in P). Y - th = Y + ~th + 1. Y < 2^38, so bits 57..38
+    // Y - th for the two prefetched thresholds (entries next(idx), next^2(idx) of the last
+    // call's index: the candidates of hls for this call's index, next, next^2, are picked from
+    // them by the last call's move in P). Y - th = Y + ~th + 1. Y < 2^38, so bits 57..38
     // are {2'b11, ~th[55:38]} plus the carry out of bit 37: that part for carry 1 (-th[55:38])
     // is formed from the prefetch registers beside the add, and the add itself is 38 bits in
     // carry-select (19-bit chains)
     wire [19:0]       nh1    = {2'b11, thn1_q[W_DIST-1:W_INCR]} + 20'd1;
     wire [19:0]       nh2    = {2'b11, thn2_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [19:0]       nh3    = {2'b11, thn3_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [19:0]       nh4    = {2'b11, thn4_q[W_DIST-1:W_INCR]} + 20'd1;
-    wire [W_REM-1:0]  d1_d   = sub_y(r_y_q, thn1_q, nh1);
-    wire [W_REM-1:0]  d2_d   = sub_y(r_y_q, thn2_q, nh2);
-    wire [W_REM-1:0]  d3_d   = sub_y(r_y_q, thn3_q, nh3);
-    wire [W_REM-1:0]  d4_d   = sub_y(r_y_q, thn4_q, nh4);
+    wire [W_DP-1:0]   d1_d   = sub_y(r_y_q, thn1_q, nh1);
+    wire [W_DP-1:0]   d2_d   = sub_y(r_y_q, thn2_q, nh2);
     wire              b_clr  = rst_trk || !r_v_q;   // no operands before R holds data
 
     // ---- stage P -------------------------------------------------------------------------------
-    // hls: B1's candidates next .. next^3 of the index before the move of call t - 1 are
-    // p_d(1 + m1) .. p_d(3 + m1), m1 = that move (adv_pp); P picks two of them by the move of
-    // the last call (adv_p): the operands for the index before and after this call's move
-    wire [W_REM-1:0]  opf0_d = adv_pp_q[0] ? (adv_p_q[0] ? p_d3_q : p_d2_q) : (adv_p_q[0] ? p_d2_q : p_d1_q);
-    wire [W_REM-1:0]  opf1_d = adv_pp_q[1] ? (adv_p_q[1] ? p_d4_q : p_d3_q) : (adv_p_q[1] ? p_d3_q : p_d2_q);
-    wire [W_DIST-1:0] thf0_d = ~(adv_pp_q[2] ? (adv_p_q[2] ? p_thn3_q : p_thn2_q) : (adv_p_q[2] ? p_thn2_q : p_thn1_q));
-    wire [W_DIST-1:0] thf1_d = ~(adv_pp_q[3] ? (adv_p_q[3] ? p_thn4_q : p_thn3_q) : (adv_p_q[3] ? p_thn3_q : p_thn2_q));
+    // hls: B1's candidates next, next^2 of the index before the move of call t - 1 are
+    // p_d(1 + m1), p_d(2 + m1), m1 = that move; P picks one of them by the move of the last call
+    // (m0): p_d(1 + m1 + m0), m1 + m0 <= 1 (no fire in two calls in a row), so the pick is the
+    // register mv = m1 | m0: the operand for the index after the last call's move (a fire in B2
+    // never follows a move)
+    wire [W_REM-1:0]  opf0_d = mv_q[0] ? sub_fin(p_d2_q) : sub_fin(p_d1_q);   // (the low carry's
+                                                   //   select of B1's difference, then the pick)
+    wire [W_DIST-1:0] thf0_d = ~(mv_q[1] ? p_thn2_q : p_thn1_q);
     wire              pb_clr = rst_trk || !p_v_q;
 
     // ---- stage B2: the loop ----------------------------------------------------------------------
     // u = (hi + c) * 2^29 + lo; its sign is hi[28] flipped by the deferred carry iff hi[27:0] is
-    // all ones (u_ao): one LUT of registers. Both sums are formed from registers (the fire
-    // candidate picked by adv_q, a register, before the add) and picked by the sign.
-    wire             pos    = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q));   // u >= 0
-    wire [W_DIST-1:0] thf   = adv_t_q ? b_thf1_q : b_thf0_q;
+    // all ones (u_ao): one LUT of registers with c_fire. Both sums are formed from registers and
+    // picked by the decision.
+    // (and no fire in the call after a fire, §2.7: with thresholds >= 4 counts u < 0 there, so
+    // this never acts on a legal configuration; it also means a fire never follows a move of the
+    // last call, so one operand, b_opf0, is enough)
+    wire             pos    = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q)) && !c_fire_q;   // u >= 0, no fire
+    wire [W_DIST-1:0] thf   = b_thf0_q;
     wire [LH-1:0]    yhi    = {{(2*LH-W_INCR){1'b0}}, b_y_q[W_INCR-1:LH]};
-    // (both candidates summed, the pick by adv after the chains: adv_q is the last call's
-    // decision, with a fanout of one select per bit)
-    wire [LH:0]      sf0_lo = {1'b0, u_lo_q} + {1'b0, b_opf0_q[LH-1:0]};
-    wire [LH:0]      sf1_lo = {1'b0, u_lo_q} + {1'b0, b_opf1_q[LH-1:0]};
-    wire [LH-1:0]    sf0_hi = hi_add(u_hi_q, b_opf0_q[W_REM-1:LH], u_c_q);
-    wire [LH-1:0]    sf1_hi = hi_add(u_hi_q, b_opf1_q[W_REM-1:LH], u_c_q);
-    wire [LH:0]      sf_lo  = adv_q ? sf1_lo : sf0_lo;
-    wire [LH-1:0]    sf_hi  = adv_q ? sf1_hi : sf0_hi;
-    wire             sf_ao0 = ones_lo(u_hi_q[LH-2:0], b_opf0_q[W_REM-2:LH], u_c_q);   // (both
-    wire             sf_ao1 = ones_lo(u_hi_q[LH-2:0], b_opf1_q[W_REM-2:LH], u_c_q);   //  candidates)
-    wire             sf_ao  = adv_q ? sf_ao1 : sf_ao0;
+    wire [LH:0]      sf_lo  = {1'b0, u_lo_q} + {1'b0, b_opf0_q[LH-1:0]};
+    wire [LH-1:0]    sf_hi  = hi_add(u_hi_q, b_opf0_q[W_REM-1:LH], u_c_q);
+    wire             sf_ao  = ones_lo(u_hi_q[LH-2:0], b_opf0_q[W_REM-2:LH], u_c_q);
     wire [LH:0]      sn_lo  = {1'b0, u_lo_q} + {1'b0, b_y_q[LH-1:0]};
     wire [LH-1:0]    sn_hi  = hi_add(u_hi_q, yhi, u_c_q);
     wire             sn_ao  = ones_lo(u_hi_q[LH-2:0], yhi[LH-2:0], u_c_q);
     wire             dec    = e_q && pos;                      // u_v && !done && u >= 0
     // u resolved for dist (B3): hi + c, beside the loop
     wire [LH-1:0]    u_hic  = u_hi_q + {{(LH-1){1'b0}}, u_c_q};
+    wire [LH:0]      ut_lo  = {1'b0, u_lo_q} + {1'b0, thr_q[LH-1:0]};   // dist without a fire: low half
     // The index moves to next(idx) (idx_l .. nx4_l above); idx is the last entry iff
-    // next(idx) = 0: "a fire here ends the array" is formed a call ahead for both index moves
-    // (stop0, stop1, registers) and picked as the index is
-    wire             done_c = adv_t_q ? stop1_q : stop0_q;
+    // next(idx) = 0: "a fire here ends the array" is formed a call ahead (stop0, a register) for
+    // the index without the last call's move (a fire never follows a move)
+    wire             done_c = stop0_q;
     wire             adv_c  = arr_en_q && !done_c;
     wire             adv    = dec && adv_c;
     wire             done_d = done_q || (dec && done_c);
-    wire             take   = b_v_q && pos && !done_q && !done_c;   // a fire (or the run start)
+    // a fire (or the run start) takes the next threshold: b_v && pos && !done && !done_c, i.e. the
+    // sign of u and tk = b_v && !c_fire && !done && !stop0, a register formed in the last call,
+    // so that the enable of the 56 threshold flip-flops is one LUT of registers (with the reset)
+    wire             usign  = !(u_hi_q[LH-1] ^ (u_c_q & u_ao_q));   // u >= 0
+    wire             take   = usign && tk_q;
     // a call that resets the tracking state: next(0) .. next^4(0) for the length presented (in
     // force in the next call, which may start a run and latch it)
     wire [6:0]       nx_0   = (i_arr_len > 7'd1) ? 7'd1 : 7'd0;
     wire [6:0]       nx2_0  = (i_arr_len > 7'd2) ? 7'd2 : 7'd0;
     wire [6:0]       nx3_0  = (i_arr_len > 7'd3) ? 7'd3 : (i_arr_len == 7'd2) ? 7'd1 : 7'd0;
     wire [6:0]       nx4_0  = (i_arr_len > 7'd4) ? 7'd4 : (i_arr_len == 7'd3) ? 7'd1 : 7'd0;
-    wire [6:0]       nx5_0  = (i_arr_len > 7'd5) ? 7'd5 : (i_arr_len == 7'd3) ? 7'd2 :
-                              (i_arr_len == 7'd2 || i_arr_len == 7'd4) ? 7'd1 : 7'd0;
-    wire [6:0]       nx6_0  = (i_arr_len > 7'd6) ? 7'd6 : (i_arr_len == 7'd4) ? 7'd2 :
-                              (i_arr_len == 7'd5) ? 7'd1 : 7'd0;
-    // stop0 / stop1 of the next call: the latched modes (or the ones in force in the next call
+    // stop0 of the next call: the latched modes (or the ones in force in the next call
     // when it starts a run) and next(idx) = 0 for the index registers written now
     wire             stop_m = run_q ? (arr_en_q && !arr_wrap_q) : (f_arr_en_q && !f_arr_wrap_q);
     wire             stop0_d = stop_m && (nx_l == 7'd0);
-    wire             stop1_d = stop_m && (nx2_l == 7'd0);
 
     // ---- stage B3: the decision of the last call (registers only) ------------------------------
     wire             fire   = c_fire_q;
@@ -663,14 +653,17 @@ module pso (
     wire [W_OVL-1:0] ovl_base = f_clear_q ? 16'd0 : ovl_cnt_q;
     wire [W_OVL-1:0] ovl_d    = (overlap && ovl_base != 16'hffff) ? ovl_base + 16'd1 : ovl_base;
     // distance after the fire: u of that decision, plus its threshold if it did not fire
-    wire [W_REM-1:0] dist_n   = csel({c_hic_q, c_lo_q}, {2'b00, c_tm_q}, 1'b0);
+    // (the low half summed in B2: the upper half one chain with the carry from a register)
+    wire [LH-1:0]    dist_lo  = c_f_q ? c_lo_q : c_lt_q[LH-1:0];
+    wire             dist_c   = !c_f_q && c_lt_q[LH];
+    wire [W_REM-1:0] dist_n   = {hi_add(c_hic_q, {{(W_REM-W_DIST){1'b0}}, c_tm_q}, dist_c), dist_lo};
 
     // ---- stage A: part-speed generator ---------------------------------------------------------
     // the clamp compare and the two phase sums side by side (no add after the compare)
     // (the compare with the constant INC_MAX without a carry chain: per nibble "greater" as a
     // table of the nibble and "equal", combined in a tree of gates; the command's sum in
     // carry-select 16-bit halves)
-    wire [7:0]       nb_gt, nb_eq;
+    (* keep *) wire [7:0] nb_gt, nb_eq;   // (kept nets: the tree in four LUT levels)
     genvar nb;
     generate
         for (nb = 0; nb < 8; nb = nb + 1) begin : g_nib
@@ -681,13 +674,20 @@ module pso (
     endgenerate
     // pairs of nibbles, then pairs of pairs: greater = the upper greater, or the upper equal
     // and the lower greater
-    wire [3:0]       p1_gt     = {nb_gt[7] | (nb_eq[7] & nb_gt[6]), nb_gt[5] | (nb_eq[5] & nb_gt[4]),
-                                  nb_gt[3] | (nb_eq[3] & nb_gt[2]), nb_gt[1] | (nb_eq[1] & nb_gt[0])};
-    wire [3:0]       p1_eq     = {nb_eq[7] & nb_eq[6], nb_eq[5] & nb_eq[4], nb_eq[3] & nb_eq[2], nb_eq[1] & nb_eq[0]};
-    wire [1:0]       p2_gt     = {p1_gt[3] | (p1_eq[3] & p1_gt[2]), p1_gt[1] | (p1_eq[1] & p1_gt[0])};
-    wire             p2_eq_hi  = p1_eq[3] & p1_eq[2];
+    (* keep *) wire [3:0] p1_gt, p1_eq;
+    (* keep *) wire [1:0] p2_gt;
+    (* keep *) wire       p2_eq_hi;
+    assign p1_gt    = {nb_gt[7] | (nb_eq[7] & nb_gt[6]), nb_gt[5] | (nb_eq[5] & nb_gt[4]),
+                       nb_gt[3] | (nb_eq[3] & nb_gt[2]), nb_gt[1] | (nb_eq[1] & nb_gt[0])};
+    assign p1_eq    = {nb_eq[7] & nb_eq[6], nb_eq[5] & nb_eq[4], nb_eq[3] & nb_eq[2], nb_eq[1] & nb_eq[0]};
+    assign p2_gt    = {p1_gt[3] | (p1_eq[3] & p1_gt[2]), p1_gt[1] | (p1_eq[1] & p1_gt[0])};
+    assign p2_eq_hi = p1_eq[3] & p1_eq[2];
     wire             over      = p2_gt[1] | (p2_eq_hi & p2_gt[0]);   // i_ps_inc > INC_MAX
-    wire             rate_over = ps_e && over;
+    // the flag from a compare of its own, a carry chain (i_ps_inc + ~INC_MAX carries out iff
+    // i_ps_inc > INC_MAX), so that the flag's path and the phase's select are not one tree with
+    // a fanout of about 70
+    wire [W_INC:0]   ov_c      = {1'b0, i_ps_inc} + {1'b0, ~INC_MAX};
+    wire             rate_over = ps_e && ov_c[W_INC];
     wire [W_INC-1:0] inc       = over ? INC_MAX : i_ps_inc;
     wire [16:0]      pi_lo     = {1'b0, ph_q[15:0]} + {1'b0, i_ps_inc[15:0]};
     wire [16:0]      pi_hi0    = {1'b0, ph_q[31:16]} + {1'b0, i_ps_inc[31:16]};
@@ -722,7 +722,7 @@ module pso (
     wire             sp_gt       = sp_gth_q || (sp_eqh_q && sp_gtl_q);   // product > threshold
     wire             spacing_err = sp_go_q && sp_gt;
     wire [W_SPHI-1:0] sp_h0    = f_min_period_q[0] ? {1'b0, inc} : {W_SPHI{1'b0}};   // step 0
-    wire [W_SPHI-1:0] sp_sh    = sp_hi_q + (sp_m_q[0] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}});
+    wire [W_SPHI-1:0] sp_sh    = sp_hi_q + sp_a_q;   // sp_a = sp_m[0] ? inc : 0
 
     // ---- stage A: tracking window -------------------------------------------------------------
     // Per axis the travel D is kept as |D| (ta, 0..15: a window closes when |D| reaches K <= 16)
@@ -887,24 +887,16 @@ module pso (
             arr1[i_arr_addr] <= i_arr_data;
             arr2[i_arr_addr] <= i_arr_data;
             arr3[i_arr_addr] <= i_arr_data;
-            arr4[i_arr_addr] <= i_arr_data;
-            arr5[i_arr_addr] <= i_arr_data;
         end
         rd1_q <= arr1[nx_l[5:0]];
         rd2_q <= arr2[nx2_l[5:0]];
         rd3_q <= arr3[nx3_l[5:0]];
-        rd4_q <= arr4[nx4_l[5:0]];
-        rd5_q <= arr5[nx5_l[5:0]];
         fw1_q <= i_arr_we && (i_arr_addr == nx_l[5:0]);
         fw2_q <= i_arr_we && (i_arr_addr == nx2_l[5:0]);
         fw3_q <= i_arr_we && (i_arr_addr == nx3_l[5:0]);
-        fw4_q <= i_arr_we && (i_arr_addr == nx4_l[5:0]);
-        fw5_q <= i_arr_we && (i_arr_addr == nx5_l[5:0]);
         f_data_q <= i_arr_data;
         thn1_q <= ~th1_d;
         thn2_q <= ~th2_d;
-        thn3_q <= ~th3_d;
-        thn4_q <= ~th4_d;
     end
 
     // chord ROM: the block RAM registers this call's address s (stage Q), its data is used in
@@ -929,21 +921,15 @@ module pso (
     always @(posedge i_clk) begin
         if (b_clr) begin
             p_y_q <= {W_INCR{1'b0}};
-            p_d1_q <= {W_REM{1'b0}};
-            p_d2_q <= {W_REM{1'b0}};
-            p_d3_q <= {W_REM{1'b0}};
-            p_d4_q <= {W_REM{1'b0}};
+            p_d1_q <= {W_DP{1'b0}};
+            p_d2_q <= {W_DP{1'b0}};
         end else begin
             p_y_q <= r_y_q;
             p_d1_q <= d1_d;
             p_d2_q <= d2_d;
-            p_d3_q <= d3_d;
-            p_d4_q <= d4_d;
         end
         p_thn1_q <= thn1_q;
         p_thn2_q <= thn2_q;
-        p_thn3_q <= thn3_q;
-        p_thn4_q <= thn4_q;
     end
 
     // stage P registers: cleared with the tracking state and while B1 holds no data
@@ -951,20 +937,18 @@ module pso (
         if (pb_clr) begin
             b_y_q <= {W_INCR{1'b0}};
             b_opf0_q <= {W_REM{1'b0}};
-            b_opf1_q <= {W_REM{1'b0}};
         end else begin
             b_y_q <= p_y_q;
             b_opf0_q <= opf0_d;
-            b_opf1_q <= opf1_d;
         end
         b_thf0_q <= thf0_d;
-        b_thf1_q <= thf1_d;
     end
 
     // the threshold of the next fire: the start threshold while the tracking state is in reset,
     // then taken at each fire
     always @(posedge i_clk) begin
-        if (rst_trk) thr_q <= thr_st;
+        st_q <= thr_st;
+        if (!run_q) thr_q <= st_q;
         else if (take) thr_q <= thf;
     end
 
@@ -1015,6 +999,7 @@ module pso (
             sp_gtl_q <= 1'b0;
             sp_inc_q <= {W_INC{1'b0}};
             sp_m_q <= {W_GAP{1'b0}};
+            sp_a_q <= {W_SPHI{1'b0}};
             sp_thr_q <= {W_PROD{1'b0}};
             sp_hi_q <= {W_SPHI{1'b0}};
             sp_lo_q <= {W_GAP{1'b0}};
@@ -1032,33 +1017,29 @@ module pso (
             u_v_q <= 1'b0;
             u_inwin_q <= 1'b0;
             e_q <= 1'b0;
+            tk_q <= 1'b0;
             c_fire_q <= 1'b0;
             c_inwin_q <= 1'b0;
             c_live_q <= 1'b0;
             c_hic_q <= {LH{1'b0}};
             c_lo_q <= {LH{1'b0}};
-            c_tm_q <= {W_DIST{1'b0}};
+            c_lt_q <= {(LH+1){1'b0}};
+            c_f_q <= 1'b0;
+            c_tm_q <= {(W_DIST-LH){1'b0}};
             dist_q <= {W_REM{1'b0}};
             idx_o_q <= 7'd0;
             done_o_q <= 1'b0;
             idx_p_q <= 7'd0;
             adv_q <= 1'b0;
-            adv_t_q <= 1'b0;
             adv_g1_q <= 1'b0;
             adv_g2_q <= 1'b0;
-            adv_g3_q <= 1'b0;
-            adv_g4_q <= 1'b0;
             adv_i_q <= 1'b0;
-            adv_p_q <= 4'd0;
-            adv_pp_q <= 4'd0;
+            mv_q <= 2'd0;
             nx_p_q <= i_rst ? 7'd0 : nx_0;
             nx2_p_q <= i_rst ? 7'd0 : nx2_0;
             nx3_p_q <= i_rst ? 7'd0 : nx3_0;
             nx4_p_q <= i_rst ? 7'd0 : nx4_0;
-            nx5_p_q <= i_rst ? 7'd0 : nx5_0;
-            nx6_p_q <= i_rst ? 7'd0 : nx6_0;
             stop0_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx_0 == 7'd0);
-            stop1_q <= !i_rst && i_arr_en && !i_arr_wrap && (nx2_0 == 7'd0);
             done_q <= 1'b0;
             timer_q <= {W_PW{1'b0}};
             nsp2_q <= NSP2_MAX;
@@ -1115,10 +1096,11 @@ module pso (
             sp_go_q <= sp_step && (sp_k_q == 5'd16) && sp_en_q;   // k = 0 and a sample held next
             if (sp_load) begin
                 sp_k_q <= 5'd1;
-                sp_en_q <= (f_min_period_q != 16'd0) && (thr_q[W_DIST-1:W_PROD] == 8'd0);
+                sp_en_q <= (f_min_period_q != 16'd0) && (thr_now[W_DIST-1:W_PROD] == 8'd0);
                 sp_inc_q <= inc;
                 sp_m_q <= f_min_period_q >> 1;
-                sp_thr_q <= thr_q[W_PROD-1:0];
+                sp_a_q <= f_min_period_q[1] ? {1'b0, inc} : {W_SPHI{1'b0}};
+                sp_thr_q <= thr_now[W_PROD-1:0];
                 sp_hi_q <= sp_h0 >> 1;
                 sp_lo_q <= {sp_h0[0], {(W_GAP-1){1'b0}}};
             end else if (sp_step) begin
@@ -1129,6 +1111,7 @@ module pso (
                     sp_gtl_q <= (sp_prod[W_PROD/2-1:0] > sp_thr_q[W_PROD/2-1:0]);
                 end else begin
                     sp_m_q <= sp_m_q >> 1;
+                    sp_a_q <= sp_m_q[1] ? {1'b0, sp_inc_q} : {W_SPHI{1'b0}};
                     sp_hi_q <= sp_sh >> 1;
                     sp_lo_q <= {sp_sh[0], sp_lo_q[W_GAP-1:1]};
                 end
@@ -1151,31 +1134,27 @@ module pso (
             u_v_q <= b_v_q;
             u_inwin_q <= b_inwin_q;
             e_q <= b_v_q && !done_d;
+            tk_q <= p_v_q && !dec && !done_d && !stop0_d;
             c_fire_q <= dec;
             c_inwin_q <= u_inwin_q;
             c_live_q <= e_q;
             c_hic_q <= u_hic;
             c_lo_q <= u_lo_q;
-            c_tm_q <= pos ? {W_DIST{1'b0}} : thr_q;
+            c_lt_q <= ut_lo;
+            c_f_q <= pos;
+            c_tm_q <= pos ? {(W_DIST-LH){1'b0}} : thr_q[W_DIST-1:LH];
             idx_p_q <= idx_l;
             adv_q <= adv;
-            adv_t_q <= adv && b_v_q;      // (adv implies each of these registers is 1)
-            adv_g1_q <= adv && u_v_q;
+            adv_g1_q <= adv && u_v_q;     // (adv implies each of these registers is 1)
             adv_g2_q <= adv && run_q;
-            adv_g3_q <= adv && ok_ae_q;
-            adv_g4_q <= adv && ok_t_q;
             adv_i_q <= adv && ok_w_q;
-            adv_p_q <= {adv && a_v_q, adv && r_v_q, adv && p_v_q, adv && ok_a_q};
             // (adv_q implies each of these registers is 1 in this call, too)
-            adv_pp_q <= {adv_q && a_v_q, adv_q && r_v_q, adv_q && p_v_q, adv_q && ok_a_q};
+            mv_q <= {(adv || adv_q) && a_v_q, (adv || adv_q) && r_v_q};
             nx_p_q <= nx_l;
             nx2_p_q <= nx2_l;
             nx3_p_q <= nx3_l;
             nx4_p_q <= nx4_l;
-            nx5_p_q <= nx5_l;
-            nx6_p_q <= nx6_l;
             stop0_q <= stop0_d;
-            stop1_q <= stop1_d;
             done_q <= done_d;
             // B3
             if (c_live_q) dist_q <= dist_n;
