@@ -11,7 +11,7 @@
 #   2. Yosys: read_verilog (Verilog-2005); hierarchy -check -top MODULE; proc; check -assert;
 #      then a generic `synth -top MODULE` (for the modules holding a large RAM or ROM, error_map,
 #      laserax_top and laserax_axil (the error map's 2 x 1024 x 24-bit RAM), dds_sincos (its
-#      1024 x 17 table) and pso (its 769 x 37 chord ROM and five 64 x 56 array copies), only its
+#      1024 x 17 table) and pso (its 769 x 37 chord ROM and three 64 x 56 array copies), only its
 #      coarse part `synth -run :fine`: the memories stay memory cells instead of tens of
 #      thousands of flip-flops (the former 2 x 2048 map took about 3 minutes; dds_sincos 29 s and
 #      pso 46 s of a CI run, under 1 s and 9 s coarse); their logic around the memories is the
