@@ -169,8 +169,10 @@ inline bool axis_config_ok(const axis_regs& r) {
 // Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
 inline void quad_levels(pos_t pos, bool& qa, bool& qb) {
     const uint<2> i = pos;  // low two bits = pos mod 4 (two's complement)
-    qa = i == 1 || i == 2;
-    qb = i == 2 || i == 3;
+    // (qa = i == 1 || i == 2, qb = i == 2 || i == 3: from the two bits, qa = i0 ^ i1, qb = i1)
+    const bool i1 = (i >> 1) != 0;
+    qa = ((i & 1) != 0) != i1;
+    qb = i1;
 }
 
 class laserax_top {
