@@ -121,9 +121,6 @@ public:
         w_init_ = false;
         qk_ = false;
         qh_ = false;
-#ifndef __SYNTHESIS__
-        qm_ = false;
-#endif
         qp_ = 0;
         u_ = 0;
         len_ = 0;
@@ -179,20 +176,7 @@ public:
         if (pstep == 0 && ((same && qh_) || (qk_ && !rehome)) && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
             // qh_: the previous call was quiet too, outside stage 2, with the same P: k, at_last,
             // tr, fresh, num and the mark tests then hold (formed from held registers and P)
-            // qm_ (C simulation): the last call that was not quiet was a count call of
-            // step_count, which formed them for P = qp_ but the mark tests (u moved in it): only
-            // those are formed again (synthesis: quiet_forms, the same values)
-            if (!(qh_ && (same || pp == qp_))) {
-#ifndef __SYNTHESIS__
-                if (qm_ && (same || pp == qp_)) {
-                    mark_tests(len_);
-                    qh_ = true;  // (stage 1 or 3: a call of step_count)
-                } else
-#endif
-                {
-                    quiet_forms(pp);
-                }
-            }
+            if (!(qh_ && (same || pp == qp_))) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
             taps_t q;
@@ -204,9 +188,6 @@ public:
             return q;
         }
         qh_ = false;
-#ifndef __SYNTHESIS__
-        qm_ = false;
-#endif
         // 0b. count call in stage 1 or 3 with nothing in flight (qk_), no leave and, in stage 1, no
         //     switch rise: step_run would move only the taps, w, u / the mark and the registers
         //     formed from them (no extra count, no stage change; issue 13: simulation speed; same
@@ -478,12 +459,6 @@ private:
         u_ = pos_t(u_ + s);
         const bool mark = stage_ == cfg::STAGE_HOMED && in_rng;
         mark_ = mark;
-        // (k, at_last and stage 1's window values as a quiet call's quiet_forms with this P forms
-        // them; the mark tests not: they take u before the count)
-#ifndef __SYNTHESIS__
-        qm_ = true;
-        qp_ = pp;
-#endif
 
         taps_t o;
         o.ostep = ostep;
@@ -570,13 +545,6 @@ private:
     // the previous call was quiet, outside stage 2, with P = qp_: its quiet_forms hold (cleared
     // in every call that is not quiet and in reset)
     bool qh_;
-    // the last call that was not quiet was a count call of step_count with P = qp_: the
-    // quiet_forms of P = qp_ hold but the mark tests (cleared in every other call that is not
-    // quiet and in reset; C simulation only: no register in synthesis, whose quiet calls form
-    // quiet_forms, as before this flag; issue 13: simulation speed)
-#ifndef __SYNTHESIS__
-    bool qm_;
-#endif
     cfg::p_t qp_;
     pos_t u_;
     cfg::p_t len_;
