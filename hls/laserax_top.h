@@ -169,8 +169,10 @@ inline bool axis_config_ok(const axis_regs& r) {
 // Quadrature level of the position index i mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1).
 inline void quad_levels(pos_t pos, bool& qa, bool& qb) {
     const uint<2> i = pos;  // low two bits = pos mod 4 (two's complement)
-    qa = i == 1 || i == 2;
-    qb = i == 2 || i == 3;
+    // (qa = i == 1 || i == 2, qb = i == 2 || i == 3: from the two bits, qa = i0 ^ i1, qb = i1)
+    const bool i1 = (i >> 1) != 0;
+    qa = ((i & 1) != 0) != i1;
+    qb = i1;
 }
 
 class laserax_top {
@@ -189,7 +191,7 @@ public:
         // a default member initialiser), and those no output shows
         out_ = axis_out{};
         lerr_q_ = false;
-        dec_alarm_ = false;
+        alarm_q_ = false;
         dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
         dig_q2_ = dig_tap{};
         dig_q3_ = dig_tap{};
@@ -326,14 +328,16 @@ private:
         const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude, same);
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
+        // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_; a
+        // clamp sets it in clamp_dac, after the clear)
+        if (regs.clear) {
+            o.dac_clip_st = false;
+            alarm_q_ = alarm_parts();
+        }
         const dac_t dac_hi = chk_q_.dac_hi;
-        bool clip = false;
         const dac_t dac_lo = chk_q_.dac_lo;
-        o.sin = clamp_dac(dds.sin, dac_hi, dac_lo, clip);
-        o.cos = clamp_dac(dds.cos, dac_hi, dac_lo, clip);
-        // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_)
-        if (regs.clear) o.dac_clip_st = false;
-        if (clip) o.dac_clip_st = true;
+        o.sin = clamp_dac(dds.sin, dac_hi, dac_lo);
+        o.cos = clamp_dac(dds.cos, dac_hi, dac_lo);
         // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
         // that produced them and shifted through two taps)
         o.ref_mark = dig_q3_.ref_mark;
@@ -344,18 +348,17 @@ private:
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
         // latency, a sample every 32 calls, DESIGN §4.7)
-        // (map_held: the map's held idle call, whose outputs are those out_ holds; else corr and
-        // cfg_err, read by no block, are stored here, the delta after the pacer read that of the
-        // previous call)
+        // (map_held: the map's held idle call, whose outputs are those out_ holds, those of an idle
+        // call: out_t{}, so its delta is 0; else corr and cfg_err, read by no block, are stored
+        // here; the delta in every call after the pacer read that of the previous call)
         const bool map_held = same && emap_.step_held();
-        bool map_err = false;
-        error_map_cfg::cdelta_t map_delta;
+        error_map_cfg::cdelta_t map_delta = 0;
         if (!map_held) {
             const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
             o.map_cfg_err = emap.cfg_err;
             o.corr = emap.corr;
-            map_err = emap.cfg_err;
             map_delta = emap.delta;
+            alarm_q_ = alarm_parts();
         }
         // (run: written only by a call that is neither held nor moved, read only in that call; C
         // simulation: a member, so no call initialises it; synthesis: a local, no register)
@@ -390,7 +393,7 @@ private:
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
         o.paced_pos = pac.paced;
-        if (!map_held) o.map_delta = map_delta;
+        o.map_delta = map_delta;
         const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
@@ -405,10 +408,10 @@ private:
             o.ovs_edge_st = dec.ovs_st;
             o.glitch_st = dec.glitch_st;
             o.raw_count = dec.raw_count;
-            dec_alarm_ = dec.lerr_alarm || dec.illegal_st || dec.ovs_st;
+            alarm_q_ = alarm_parts();
         }
         swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
-        o.alarm = (dec_alarm_ | pac.ovs_st | map_err | o.dac_clip_st) != 0;  // (one OR, no branches)
+        o.alarm = alarm_q_ | pac.ovs_st;  // (the other parts: alarm_q_)
     }
 
 private:
@@ -427,7 +430,14 @@ private:
     // delta, rephase ostep / out_pos / mark / homed)
     axis_out out_;
     bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
-    bool dec_alarm_;  // the decoder's part of alarm: lerr_alarm || illegal_st || ovs_st (out_)
+    // the parts of alarm but the pacer's (ovs_backlog_st, formed in every call) and cfg_err (false
+    // in a call that runs the blocks): lerr_alarm, illegal_st, ovs_edge_st, map_cfg_err and
+    // dac_clip_st of out_, formed again in a call only where one of them can change (the decoder's
+    // full call, the error map's call that is not its held idle call, the DAC clear and clamp)
+    bool alarm_q_;
+    bool alarm_parts() const {
+        return (out_.lerr_alarm | out_.illegal_st | out_.ovs_edge_st | out_.map_cfg_err | out_.dac_clip_st) != 0;
+    }
     // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
     // mark twice), in axis_out's order
     struct dig_tap {
@@ -472,14 +482,17 @@ private:
         return c;
     }
 
-    // v clamped to lo .. hi (lo = -hi, formed with hi in check())
-    static dac_t clamp_dac(dac_t v, dac_t hi, dac_t lo, bool& clip) {
+    // v clamped to lo .. hi (lo = -hi, formed with hi in check()); a clamp sets the sticky flag
+    // dac_clip_st and with it alarm
+    dac_t clamp_dac(dac_t v, dac_t hi, dac_t lo) {
         if (v > hi) {
-            clip = true;
+            out_.dac_clip_st = true;
+            alarm_q_ = true;
             return hi;
         }
         if (v < lo) {
-            clip = true;
+            out_.dac_clip_st = true;
+            alarm_q_ = true;
             return lo;
         }
         return v;

@@ -214,6 +214,28 @@ inline sint<WH + WL> cat_s(const sint<WH>& hi, const uint<WL>& lo) {
 #endif
 }
 
+// u + 1 for a u the caller knows below 2^W - 1, and u - 1 for a u it knows above 0, as uint<W>
+// (own back end: no wrap of the result, as cat_s; the vendor types: the same value through their
+// operators). E.g. a saturating counter's increment, a nonzero timer's decrement.
+template <int W>
+inline uint<W> inc_below_max(const uint<W>& u) {
+    static_assert(W <= 64, "lx::inc_below_max: at most 64 bits");
+#if defined(LASERAX_USE_AP_TYPES) || defined(LASERAX_USE_AC_TYPES)
+    return uint<W>(u + 1);
+#else
+    return uint<W>::exact(static_cast<uint64_t>(u) + 1);
+#endif
+}
+template <int W>
+inline uint<W> dec_above_zero(const uint<W>& u) {
+    static_assert(W <= 64, "lx::dec_above_zero: at most 64 bits");
+#if defined(LASERAX_USE_AP_TYPES) || defined(LASERAX_USE_AC_TYPES)
+    return uint<W>(u - 1);
+#else
+    return uint<W>::exact(static_cast<uint64_t>(u) - 1);
+#endif
+}
+
 // Number of bits needed to hold values 0..v; usable with both back ends for derived widths.
 // (compile-time only; a loop rather than recursion to keep the hls/ lint simple).
 constexpr int clog2p1(unsigned long long v) {

@@ -174,7 +174,7 @@ public:
         if (emit != 0) {
             timer_ = pace_m - 1;
         } else if (timer_ != 0) {
-            timer_ = timer_ - 1;
+            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
         }
         e_prev_ = emit;
 

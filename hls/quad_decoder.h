@@ -178,7 +178,7 @@ private:
         if (counted) {
             since_ = 0;
         } else if (since_ != cfg::SINCE_MAX) {
-            since_ = since_ + 1;
+            since_ = inc_below_max(since_);  // (since < SINCE_MAX: no wrap)
         }
         close_ = uint<cfg::W_SPACING + 1>(since_) + 1 < min_spacing;
     }

@@ -171,7 +171,9 @@ public:
         //    the switch samples (a clock enable of the rest; issue 13: simulation speed; same
         //    outputs)
         //    (qk_: the register part of the condition, lag = 0, w_init, !dnew, !first)
-        if (pstep == 0 && qk_ && !rehome && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
+        //    (with same, qh_ implies qk_ and !rehome: the previous call was quiet, and qk_
+        //    changes only in step_run and reset, which clear qh_)
+        if (pstep == 0 && ((same && qh_) || (qk_ && !rehome)) && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
             // qh_: the previous call was quiet too, outside stage 2, with the same P: k, at_last,
             // tr, fresh, num and the mark tests then hold (formed from held registers and P)
             if (!(qh_ && (same || pp == qp_))) quiet_forms(pp);
