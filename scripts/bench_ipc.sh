@@ -45,15 +45,26 @@ by_file() {  # CALLS -> "file Ir" lines of the code inlined into laserax_top::ti
     callgrind_annotate --inclusive=no --auto=no "$f" 2>/dev/null | grep -v "=>" |
         sed -n 's/^ *\([0-9,]*\) .*  *\([^ :]*\):\(lx::laserax_top::step\|lx::laserax_top::tick\|(anonymous namespace)::chain_step\)(.*/\2 \1/p' | tr -d ',' |
         sed 's|^[^ ]*/\(hls/[^ ]*\) |\1 |'   # (absolute paths of the build: keep from hls/ on)
+    # the chain call alone: the inclusive count of the bench's non-inlined chain_step (the call,
+    # laserax_top::tick and everything inlined into it; not the stimulus of the bench loop)
+    callgrind_annotate --inclusive=yes --auto=no "$f" 2>/dev/null | grep -v "=>" |
+        sed -n 's/^ *\([0-9,]*\) .*:(anonymous namespace)::chain_step(.*/incl \1/p' | tr -d ',' | head -n 1
     rm -f "$f"
 }
 if command -v callgrind_annotate >/dev/null; then
     s1=$(by_file "$short")
     s2=$(by_file "$long")
+    awk 'FNR == 1 { part++ }
+         $1 == "calls" { c[part] = $2 }
+         $1 == "incl" { v[part] = $2 }
+         END { if (v[1] != "" && v[2] != "")
+                   printf "hls laserax_top, the chain call alone (chain_step inclusive; the bench loop'"'"'s stimulus excluded): %.1f instructions / clock\n", (v[2] - v[1]) / (c[2] - c[1]) }' \
+        <(printf '%s\n' "$s1") <(printf '%s\n' "$s2")
     if printf '%s\n' "$s2" | grep -q '^hls/'; then
         echo "hls laserax_top (full chain) by block (instructions / clock of the code inlined into laserax_top::tick, by source file):"
         awk 'FNR == 1 { part++ }
              $1 == "calls" { c[part] = $2; next }
+             $1 == "incl" { next }
              { v[part, $1] += $2; k[$1] = 1 }
              END { for (f in k) printf "  %-34s %10.1f\n", f, (v[2, f] - v[1, f]) / (c[2] - c[1]) }' \
             <(printf '%s\n' "$s1") <(printf '%s\n' "$s2") | sort -k2 -rn
