@@ -231,7 +231,9 @@ public:
             chk_q_ = check(regs_q_);
             written_ = false;
         }
-        fast_ = same_q_ && run_q_;
+        // (and clear = rehome = 0 in force: blocks() of the fast path takes them as constants;
+        // a block that holds either at 1 runs the path above, which computes the same)
+        fast_ = same_q_ && run_q_ && !regs_q_.clear && !regs_q_.rehome;
         return out_;
     }
 #endif
@@ -317,10 +319,12 @@ private:
 
     // the blocks of one running call on the registers in force (run() made the checks); same: the
     // registers in force (and ratio_h_, offset_h_, chk_q_) are those of the previous call, which
-    // ran the blocks too (tick's fast path; a constant in each caller). A block then skips the
-    // loads of registers formed from them that would load the values they hold (C simulation:
-    // issue 13, simulation speed; false in synthesis)
+    // ran the blocks too, and clear = rehome = 0 in force (tick's fast path; a constant in each
+    // caller). A block then skips the loads of registers formed from them that would load the
+    // values they hold (C simulation: issue 13, simulation speed; false in synthesis)
     void blocks(const axis_pins& pins, const axis_regs& regs, bool same) {
+        const bool clear = !same && regs.clear;    // (same: clear = 0, see tick)
+        const bool rehome = !same && regs.rehome;  // (same: rehome = 0)
         // Every block reads only inter-block registers of the previous call, so the order of the
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
@@ -330,7 +334,7 @@ private:
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_; a
         // clamp sets it in clamp_dac, after the clear)
-        if (regs.clear) {
+        if (clear) {
             o.dac_clip_st = false;
             alarm_q_ = alarm_parts();
         }
@@ -367,7 +371,7 @@ private:
 #else
         rephase::out_t run;
 #endif
-        const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_,
+        const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), rehome, lerr_q_,
                                                    regs.period, regs.mark_len, same, run);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
@@ -388,7 +392,7 @@ private:
             }
         }
         const output_pacer::out_t pac =
-            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear, same);
+            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, clear, same);
         o.ovs_backlog_st = pac.ovs_st;
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
@@ -398,7 +402,7 @@ private:
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
         const quad_decoder::out_t dec =
-            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear, same);
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, clear, same);
         o.step = dec.step;
         if (!dec.held) {  // (held: the other decoder outputs are those out_ and lerr_q_ hold)
             lerr_q_ = dec.lerr;
