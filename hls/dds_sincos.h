@@ -85,7 +85,9 @@ public:
         // the table (held_), and none of them changes in this call: the reads below would load
         // the same codes again, the counter holds (a clock enable; issue 13: simulation speed; P/4
         // is formed only where it is read)
-        if (held_ && ostep == 0 && (same || (cfg::r_t(period >> 2) == qtr_prev_ && amp == amp_q_))) {
+        // (rd_held: the read stage's inputs are those of s1 / c1; the counter may move)
+        const bool rd_held = held_ && (same || (cfg::r_t(period >> 2) == qtr_prev_ && amp == amp_q_));
+        if (rd_held && ostep == 0) {
             sin_ = s1_;
             cos_ = c1_;
             out_t h;
@@ -94,21 +96,24 @@ public:
             return h;
         }
         const cfg::r_t quarter = period >> 2;
-        const cfg::r_t r_mirror = qtr_prev_ - r_;  // 1..P/4 of the previous call (r < that P/4)
-        // r < P/4 <= 1024; the address is the low W_TBL_ADDR bits, as in the RAM (a period that
-        // shrinks under a running block can take r past P/4: never out of the array)
-        const unsigned amask = cfg::TBL_DEPTH - 1;
-        const dac_t t_dir = dac_t(tbl_[r_.to_uint() & amask]);
-        const dac_t t_mir = (r_ == 0) ? dac_t(amp) : dac_t(tbl_[r_mirror.to_uint() & amask]);
         // output stage: the codes of the previous call
         sin_ = s1_;
         cos_ = c1_;
-        // read stage: the codes of the phase before this call
-        switch (q_.to_uint()) {
-            case 0: s1_ = t_dir; c1_ = t_mir; break;
-            case 1: s1_ = t_mir; c1_ = -t_dir; break;
-            case 2: s1_ = -t_dir; c1_ = -t_mir; break;
-            default: s1_ = -t_mir; c1_ = t_dir; break;
+        // read stage: the codes of the phase before this call (held with rd_held: a count's
+        // first call reads the phase whose codes s1 / c1 already hold; a clock enable, issue 13)
+        if (!rd_held) {
+            const cfg::r_t r_mirror = qtr_prev_ - r_;  // 1..P/4 of the previous call (r < that P/4)
+            // r < P/4 <= 1024; the address is the low W_TBL_ADDR bits, as in the RAM (a period
+            // that shrinks under a running block can take r past P/4: never out of the array)
+            const unsigned amask = cfg::TBL_DEPTH - 1;
+            const dac_t t_dir = dac_t(tbl_[r_.to_uint() & amask]);
+            const dac_t t_mir = (r_ == 0) ? dac_t(amp) : dac_t(tbl_[r_mirror.to_uint() & amask]);
+            switch (q_.to_uint()) {
+                case 0: s1_ = t_dir; c1_ = t_mir; break;
+                case 1: s1_ = t_mir; c1_ = -t_dir; break;
+                case 2: s1_ = -t_dir; c1_ = -t_mir; break;
+                default: s1_ = -t_mir; c1_ = t_dir; break;
+            }
         }
         // position-in-period counter
         if (ostep > 0) {
