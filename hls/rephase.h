@@ -121,7 +121,6 @@ public:
         w_init_ = false;
         qk_ = false;
         qh_ = false;
-        qp_ = 0;
         u_ = 0;
         len_ = 0;
         mark_ = false;
@@ -133,9 +132,8 @@ public:
     }
 
     // same: period, mark_len and rehome are those of the previous call (a caller's register stage
-    // that knows it, e.g. laserax_top::tick; false by default): qh_ then implies pp == qp_ (qp_ is
-    // the P of the last quiet call, and qh_ says the previous call was one; issue 13: simulation
-    // speed; same outputs)
+    // that knows it, e.g. laserax_top::tick; false by default; issue 13: simulation speed; same
+    // outputs)
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                period_t mark_len, bool same = false) {
         out_t o;
@@ -167,16 +165,16 @@ public:
         const cfg::p_t pp = period;
         // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
         //    load in flight, no switch rise, no leave. Every register below then holds except
-        //    t, v, k, bs, at_last (formed from held registers and P), the stage-1 window state and
-        //    the switch samples (a clock enable of the rest; issue 13: simulation speed; same
+        //    the mark tests, in stage 2 t, v, k, bs, at_last (formed from held registers and P)
+        //    and the switch samples (a clock enable of the rest; issue 13: simulation speed; same
         //    outputs)
         //    (qk_: the register part of the condition, lag = 0, w_init, !dnew, !first)
         //    (with same, qh_ implies qk_ and !rehome: the previous call was quiet, and qk_
         //    changes only in step_run and reset, which clear qh_)
         if (pstep == 0 && ((same && qh_) || (qk_ && !rehome)) && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
-            // qh_: the previous call was quiet too, outside stage 2, with the same P: k, at_last,
-            // tr, fresh, num and the mark tests then hold (formed from held registers and P)
-            if (!(qh_ && (same || pp == qp_))) quiet_forms(pp);
+            // qh_: the previous call was quiet too, outside stage 2: the mark tests then hold
+            // (formed from u and L, held), and outside stage 2 they are all quiet_forms forms
+            if (!qh_) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
             taps_t q;
@@ -206,24 +204,25 @@ public:
     }
 
 private:
-    // the registers a quiet call forms from held registers and P (a second quiet call with the
-    // same P outside stage 2 forms the same values: qh_, qp_)
+    // The window state (tr, fresh, num, k, at_last; t, v and bs already so, see step_run) is read
+    // only in stage 2, and every entry to stage 2 is the capture call, a call of step_run in stage
+    // 1, which resets tr, fresh and num (4a) and forms k and at_last at its end whatever they held
+    // before. The model therefore forms them in stage-2 calls only (step_run forms them in every
+    // call, as rtl_ref/ does in every call): a quiet call or a count of step_count, which run in
+    // stage 1 or 3, leaves them as they are (issue 13: simulation speed; same outputs).
+
+    // the registers a quiet call forms from held registers and P (a second quiet call outside
+    // stage 2 forms the same values: qh_)
     void quiet_forms(cfg::p_t pp) {
         if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
             t_ = cfg::br_t(cfg::br_t(num_) + k_);
             v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
+            k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
+            form_bs(a_, fwd_, pp);
+            at_last_ = tr_ == tr_t(pp) - 1;
         }
-        if (stage_ == cfg::STAGE_UNHOMED) {
-            tr_ = 0;
-            fresh_ = true;
-            num_ = 0;
-        }
-        k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-        if (stage_ == cfg::STAGE_WINDOW) form_bs(a_, fwd_, pp);
-        at_last_ = tr_ == tr_t(pp) - 1;
         mark_tests(len_);
         qh_ = stage_ != cfg::STAGE_WINDOW;  // (stage 2: bs needs three calls to settle)
-        qp_ = pp;
     }
 
     // one call that is not quiet (the whole step)
@@ -436,20 +435,13 @@ private:
 
     // a count call (pstep != 0) in stage 1 or 3 with lag = 0, w_init, no d load and no first count
     // (qk_), no leave and no capture: step_run with dq = 0, ostep = sgn(pstep), no stage change and
-    // no window state but the stage-1 reset values (tr, fresh, num); t, v, d, lag, adj hold
+    // no window state (stage 1 or 3: see quiet_forms); t, v, d, lag, adj hold
     taps_t step_count(step_t pstep, bool sw, bool sw_valid, cfg::p_t pp) {
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
         paced_ = paced_ + pstep;
         fwd_last_ = pstep > 0;
         const step_t ostep = pstep > 0 ? step_t(1) : step_t(-1);
         move_w(ostep, w_, pp);
-        if (stage_ == cfg::STAGE_UNHOMED) {
-            tr_ = 0;
-            fresh_ = true;
-            num_ = 0;
-        }
-        k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-        at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
         out_pos_ = out_pos_ + ostep;
@@ -542,10 +534,9 @@ private:
     // lag_ == 0 && w_init_ && !dnew_ && !first_, formed at the end of every full call (step_run,
     // the only one that changes them) and in reset: the register part of the quiet-call test
     bool qk_;
-    // the previous call was quiet, outside stage 2, with P = qp_: its quiet_forms hold (cleared
-    // in every call that is not quiet and in reset)
+    // the previous call was quiet, outside stage 2: its quiet_forms hold (cleared in every call
+    // that is not quiet and in reset)
     bool qh_;
-    cfg::p_t qp_;
     pos_t u_;
     cfg::p_t len_;
     bool mark_;        // the mark
