@@ -169,6 +169,64 @@ void restart_edge(tbu::result& res, bool phantom) {
                 tag.c_str(), safe_calls, ri.checks(), ri.resyncs(), losses);
 }
 
+// Directed case for tick's fast path (hls/laserax_top.h): clear and rehome held at 1 for many
+// calls with the registers otherwise unchanged (the random run below presents them as one-call
+// pulses only). While clear is held, single-call glitches on A set glitch_st, which every held
+// call clears again; while rehome is held, the axis goes back below the switch and across it, so
+// the capture takes the window (stage 2) and the held rehome leaves it in the next call. Every
+// output and tap of hls against golden in every call; the stimulus must hit both sequences.
+void held_levels(tbu::result& res) {
+    const std::string tag = "held_levels: ";
+    lxt::axis_settings s;
+    s.glitch_n = 2;
+    s.min_spacing = 8;
+    s.sw_debounce = 8;
+    s.pace_m = 2;
+    lxt::dual_axis ax(s);
+    const int64_t sw_edge = 100;  // switch closed for n >= sw_edge
+    const long long kSpace = 20;  // calls between edges while moving
+    // forward to n = 300 (homes), rehome held in [t_r0, t_r1) while the axis goes back to n = 60
+    // and forward to n = 200, clear held in [t_c0, t_c1) with a glitch on A every 60 calls
+    const long long t_r0 = 7000, t_r1 = 15000, t_c0 = 16000, t_c1 = 18000, t_end = 19000;
+    int64_t n = 0;
+    long long glitch_set = 0, glitch_cleared = 0, windows_left = 0, mismatches = 0;
+    bool homed_before = false;
+    for (long long t = 0; t < t_end && mismatches < 5; ++t) {
+        lxt::axis_settings ns = ax.settings();
+        ns.rehome = t >= t_r0 && t < t_r1;
+        ns.clear = t >= t_c0 && t < t_c1;
+        ax.set(ns);
+        if (t % kSpace == 0) {
+            if (t < t_r0) {
+                if (n < 300) ++n;
+            } else if (t < t_r0 + 250 * kSpace) {
+                if (n > 60) --n;
+            } else if (n < 200) {
+                ++n;
+            }
+        }
+        lx::axis_pins p;
+        lxt::quad_pins(n, p.a, p.b);
+        const bool glitch = t >= t_c0 + 10 && t < t_c1 - 10 && (t - t_c0) % 60 == 0;
+        if (glitch) p.a = !p.a;
+        p.sw = n >= sw_edge;
+        const std::string m = ax.step(p);
+        if (!res.expect(m.empty(), [&] { return tag + "cycle " + std::to_string(t) + ": " + m; })) ++mismatches;
+        const golden::axis_out& g = ax.gold();
+        if (t == t_r0) homed_before = g.homed;
+        // (the register stage: a level presented in call t is in force from call t + 1)
+        if (t > t_r0 + 1 && t < t_r1 && g.stage == 2) ++windows_left;
+        if (t > t_c0 + 1 && t < t_c1 && g.glitch_st) ++glitch_set;
+        if (t > t_c0 + 1 && t < t_c1 && !g.glitch_st && glitch_set > 0) ++glitch_cleared;
+    }
+    res.check(homed_before && windows_left > 0 && glitch_set > 0 && glitch_cleared > 0,
+              tag + "stimulus misses the sequences (homed before rehome " + std::to_string(homed_before) +
+                  ", stage-2 calls under rehome " + std::to_string(windows_left) + ", glitch_st set / cleared calls under clear " +
+                  std::to_string(glitch_set) + " / " + std::to_string(glitch_cleared) + ")");
+    std::printf("  %sstage-2 calls under a held rehome %lld, glitch_st set / cleared under a held clear %lld / %lld\n",
+                tag.c_str(), windows_left, glitch_set, glitch_cleared);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -178,6 +236,7 @@ int main(int argc, char** argv) {
     tbu::result res("tb_chain_random", seed);
     restart_edge(res, false);
     restart_edge(res, true);
+    held_levels(res);
     std::mt19937_64 rng(seed);
     auto uni = [&](long long lo, long long hi) {
         return std::uniform_int_distribution<long long>(lo, hi)(rng);
