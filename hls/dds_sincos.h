@@ -95,7 +95,8 @@ public:
             h.cos = cos_;
             return h;
         }
-        const cfg::r_t quarter = period >> 2;
+        // (same: P/4 and amp are those qtr_prev_ and amp_q_ hold, see above)
+        const cfg::r_t quarter = same ? qtr_prev_ : cfg::r_t(period >> 2);
         // output stage: the codes of the previous call
         sin_ = s1_;
         cos_ = c1_;
@@ -131,9 +132,11 @@ public:
                 r_ = r_ - 1;
             }
         }
-        held_ = ostep == 0 && quarter == qtr_prev_;  // (q, r) and P/4 of the reads unchanged
-        amp_q_ = amp;
-        qtr_prev_ = quarter;
+        held_ = ostep == 0 && (same || quarter == qtr_prev_);  // (q, r) and P/4 of the reads unchanged
+        if (!same) {
+            amp_q_ = amp;
+            qtr_prev_ = quarter;
+        }
         out_t o;
         o.sin = sin_;
         o.cos = cos_;
