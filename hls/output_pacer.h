@@ -90,6 +90,8 @@ public:
         ovs_st_ = false;
         thr_q_ = 0;
         o_held_ = false;
+        st_ = true;  // (every register 0: settled, stage A equals X)
+        ax_ = true;
     }
 
     // same: pace_m, thr and clear are those of the previous call (a caller's register stage that
@@ -132,6 +134,41 @@ public:
             ovs_stage1(thr);
         }
 
+        // ---- settled: the stages below would load the values they hold ----
+        // (st_: e_prev = cq = p_cy = 0, stage A equals X (a_cy = 0), p_lo_d = p_lo and b_ is stage
+        // A's value; with delta = add = 0 the taps and X hold and b_next == b_: a clock enable of
+        // them; issue 13: simulation speed; same outputs)
+        if (st_ && delta == 0 && add == 0) {
+            o_held_ = true;
+        } else {
+            step_stages(delta, add);
+        }
+
+        // ---- timer ----
+        if (emit != 0) {
+            timer_ = pace_m - 1;
+            st_ = false;  // (e_prev = emit != 0 in the next call)
+        } else if (timer_ != 0) {
+            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+        }
+        e_prev_ = emit;
+
+        ovs_ = ovs;
+        if (clear) ovs_st_ = false;
+        if (ovs) ovs_st_ = true;
+
+        out_t o;
+        o.pstep = emit;
+        o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
+        o.backlog = b_;
+        o.ovs = ovs_;
+        o.ovs_st = ovs_st_;
+        return o;
+    }
+
+private:
+    // the taps and X of a call that is not settled (see st_); forms st_ and ax_ for the next call
+    void step_stages(const delta_t& delta, const cfg::add_t& add) {
         // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
         // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
         // (one register of the two halves: the compare of both halves is one compare)
@@ -162,36 +199,21 @@ public:
         }
 
         // ---- X' = X + delta + add - e_prev (split, registered carry; add joins the lower half) ----
-        if (!(nc && delta == 0 && add == 0)) {
+        const bool din = delta == 0 && add == 0;
+        // st_ of the next call: this call settled the taps (nc, no input) on a stage A that
+        // already held X (ax_: the previous call had no input, so it left stage A equal to X,
+        // a_cy = cq), and no count leaves (e_prev = 0: formed with the timer below)
+        st_ = nc && din && ax_;
+        ax_ = din;
+        if (!(nc && din)) {
             const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
             const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
             hi_ = cfg::hi_t(hi_ + d_hi + cq_);
             lo_ = cfg::lo_t(t);
             cq_ = cfg::cq_t(t >> cfg::L);
         }
-
-        // ---- timer ----
-        if (emit != 0) {
-            timer_ = pace_m - 1;
-        } else if (timer_ != 0) {
-            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-        }
-        e_prev_ = emit;
-
-        ovs_ = ovs;
-        if (clear) ovs_st_ = false;
-        if (ovs) ovs_st_ = true;
-
-        out_t o;
-        o.pstep = emit;
-        o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
-        o.backlog = b_;
-        o.ovs = ovs_;
-        o.ovs_st = ovs_st_;
-        return o;
     }
 
-private:
     // ovs, first stage: the backlog tap B(t-3) (register b_, its halves) against thr (o_y1, o_y0,
     // o_cl)
     void ovs_stage1(cfg::thr_t thr) {
@@ -236,6 +258,8 @@ private:
     bool ovs_st_;
     cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
     bool o_held_;       // b_* are those of that compare (unchanged since)
+    bool st_;           // settled: e_prev = cq = p_cy = 0, a_* equal X (a_cy = 0), p_lo_d = p_lo, b_ = stage A
+    bool ax_;           // the previous call had delta = add = 0 (it left a_* equal to X, a_cy = cq)
 };
 
 }  // namespace lx
