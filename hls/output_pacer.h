@@ -101,30 +101,6 @@ public:
     // issue 13)
     out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
                bool clear, bool same = false) {
-        // ---- emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain) ----
-        // (the trees are read only with timer = 0 and e_prev = 0: formed only then)
-        step_t emit = 0;
-        if (timer_ == 0 && e_prev_ == 0) {
-            const bool hi_neg = hi_ < 0;
-            bool h_zero = false;  // hi + cq == 0
-            bool h_neg = false;   // hi + cq < 0
-            if (cq_ == 0) {
-                h_zero = hi_ == 0;
-                h_neg = hi_neg;
-            } else if (cq_ == 1) {
-                h_zero = hi_ == -1;
-                h_neg = hi_neg && hi_ != -1;
-            } else if (cq_ == 2) {
-                h_zero = hi_ == -2;
-                h_neg = hi_neg && hi_ != -1 && hi_ != -2;
-            } else {
-                h_zero = hi_ == 1;
-                h_neg = hi_neg || hi_ == 0;
-            }
-            const bool x_nz = !(h_zero && lo_ == 0);
-            if (x_nz) emit = h_neg ? step_t(-1) : step_t(1);
-        }
-
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
         // ---- ovs, first stage: the backlog tap B(t-3) (register b_) against thr of this call ----
@@ -134,22 +110,34 @@ public:
             ovs_stage1(thr);
         }
 
-        // ---- settled: the stages below would load the values they hold ----
-        // (st_: e_prev = cq = p_cy = 0, stage A equals X (a_cy = 0), p_lo_d = p_lo and b_ is stage
-        // A's value; with delta = add = 0 the taps and X hold and b_next == b_: a clock enable of
-        // them; issue 13: simulation speed; same outputs)
+        // ---- emit decision (from the registers of the previous call), taps, X, timer ----
+        // (the trees of the emit decision are read only with timer = 0 and e_prev = 0: formed
+        // only then)
+        step_t emit = 0;
         if (st_ && delta == 0 && add == 0) {
+            // settled: the taps and X would load the values they hold (st_: e_prev = cq = p_cy
+            // = 0, stage A equals X (a_cy = 0), p_lo_d = p_lo and b_ is stage A's value; with delta
+            // = add = 0, b_next == b_): a clock enable of them (issue 13: simulation speed; same
+            // outputs). e_prev = 0: the emit decision waits for the timer alone.
             o_held_ = true;
+            if (timer_ != 0) {
+                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+            } else {
+                emit = emit_of_x();
+                if (emit != 0) {
+                    timer_ = pace_m - 1;
+                    st_ = false;  // (e_prev = emit != 0 in the next call)
+                }
+            }
         } else {
+            if (timer_ == 0 && e_prev_ == 0) emit = emit_of_x();
             step_stages(delta, add);
-        }
-
-        // ---- timer ----
-        if (emit != 0) {
-            timer_ = pace_m - 1;
-            st_ = false;  // (e_prev = emit != 0 in the next call)
-        } else if (timer_ != 0) {
-            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+            if (emit != 0) {
+                timer_ = pace_m - 1;
+                st_ = false;  // (e_prev = emit != 0 in the next call)
+            } else if (timer_ != 0) {
+                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+            }
         }
         e_prev_ = emit;
 
@@ -167,6 +155,29 @@ public:
     }
 
 private:
+    // the emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain)
+    step_t emit_of_x() const {
+        const bool hi_neg = hi_ < 0;
+        bool h_zero = false;  // hi + cq == 0
+        bool h_neg = false;   // hi + cq < 0
+        if (cq_ == 0) {
+            h_zero = hi_ == 0;
+            h_neg = hi_neg;
+        } else if (cq_ == 1) {
+            h_zero = hi_ == -1;
+            h_neg = hi_neg && hi_ != -1;
+        } else if (cq_ == 2) {
+            h_zero = hi_ == -2;
+            h_neg = hi_neg && hi_ != -1 && hi_ != -2;
+        } else {
+            h_zero = hi_ == 1;
+            h_neg = hi_neg || hi_ == 0;
+        }
+        const bool x_nz = !(h_zero && lo_ == 0);
+        if (!x_nz) return 0;
+        return h_neg ? step_t(-1) : step_t(1);
+    }
+
     // the taps and X of a call that is not settled (see st_); forms st_ and ax_ for the next call
     void step_stages(const delta_t& delta, const cfg::add_t& add) {
         // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
