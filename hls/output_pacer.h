@@ -86,7 +86,6 @@ public:
         o_y1_ = false;
         o_y0_ = false;
         o_cl_ = false;
-        ovs_ = false;
         ovs_st_ = false;
         thr_q_ = 0;
         o_held_ = false;
@@ -141,7 +140,6 @@ public:
         }
         e_prev_ = emit;
 
-        ovs_ = ovs;
         if (clear) ovs_st_ = false;
         if (ovs) ovs_st_ = true;
 
@@ -149,7 +147,7 @@ public:
         o.pstep = emit;
         o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
         o.backlog = b_;
-        o.ovs = ovs_;
+        o.ovs = ovs;  // (the select of registers: no register of its own)
         o.ovs_st = ovs_st_;
         return o;
     }
@@ -265,7 +263,6 @@ private:
     cfg::phi_t p_hi_;
     cfg::cy_t p_cy_;
     bool o_y1_, o_y0_, o_cl_;  // ovs first stage: the result for either lower carry, the carry
-    bool ovs_;
     bool ovs_st_;
     cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
     bool o_held_;       // b_* are those of that compare (unchanged since)
