@@ -190,9 +190,11 @@ private:
         // cq = 0). The same values, without the wraps: issue 13, simulation speed)
         const bool nc = e_prev_ == 0 && cq_ == 0 && p_cy_ == 0;
         if (nc) {
-            a_lo_ = lo_;
-            a_cy_ = 0;
-            a_hi_ = hi_;
+            if (!ax_) {  // (ax_: stage A equals X, a_cy = cq = 0: the same values; issue 13)
+                a_lo_ = lo_;
+                a_cy_ = 0;
+                a_hi_ = hi_;
+            }
             p_lo_d_ = p_lo_;
         } else {
             const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
