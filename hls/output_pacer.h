@@ -90,6 +90,7 @@ public:
         thr_q_ = 0;
         o_held_ = false;
         st_ = true;  // (every register 0: settled, stage A equals X)
+        se_ = false;
         ax_ = true;
     }
 
@@ -126,9 +127,27 @@ public:
                 if (emit != 0) {
                     timer_ = pace_m - 1;
                     st_ = false;  // (e_prev = emit != 0 in the next call)
+                    se_ = true;
                 }
             }
+        } else if (se_ && delta == 0 && add == 0) {
+            // settled but for the count of the previous call (se_: st_'s registers with e_prev
+            // != 0): with delta = add = 0 only the lower halves take it, b_next == b_ (o_held_ is
+            // true since that call), and hi + cq = hi, p_hi + p_cy = p_hi, p_lo_d = p_lo: a clock
+            // enable of those (issue 13: simulation speed; same outputs). No count is decided
+            // (e_prev != 0); the call leaves stage A equal to X (ax_), with cq = a_cy.
+            const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
+            a_lo_ = cfg::lo_t(al);
+            a_cy_ = cfg::cy_t(al >> cfg::L);
+            lo_ = cfg::lo_t(al);
+            cq_ = cfg::cq_t(al >> cfg::L);
+            const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
+            p_lo_ = cfg::plo_t(ps);
+            p_cy_ = cfg::cy_t(ps >> cfg::LP);
+            se_ = false;
+            if (timer_ != 0) timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
         } else {
+            se_ = false;
             if (timer_ == 0 && e_prev_ == 0) emit = emit_of_x();
             step_stages(delta, add);
             if (emit != 0) {
@@ -269,6 +288,7 @@ private:
     cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
     bool o_held_;       // b_* are those of that compare (unchanged since)
     bool st_;           // settled: e_prev = cq = p_cy = 0, a_* equal X (a_cy = 0), p_lo_d = p_lo, b_ = stage A
+    bool se_;           // st_'s registers but e_prev != 0, the count of a settled call (o_held_ since then)
     bool ax_;           // the previous call had delta = add = 0 (it left a_* equal to X, a_cy = cq)
 };
 
