@@ -91,6 +91,7 @@ public:
         o_held_ = false;
         st_ = true;  // (every register 0: settled, stage A equals X)
         se_ = false;
+        sb_ = false;
         ax_ = true;
     }
 
@@ -145,8 +146,29 @@ public:
             p_lo_ = cfg::plo_t(ps);
             p_cy_ = cfg::cy_t(ps >> cfg::LP);
             se_ = false;
+            sb_ = cq_ == 0 && p_cy_ == 0;
             if (timer_ != 0) timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+        } else if (sb_ && delta == 0 && add == 0) {
+            // the call after that (sb_: no carry left, e_prev = cq = p_cy = 0, stage A equals X
+            // with a_cy = 0): with delta = add = 0 the stage-A copies and X hold; stage B and
+            // p_lo_d take the values the count moved, after which the taps are settled (st_)
+            sb_ = false;
+            const backlog_t b_next = cat_s<cfg::W_HI, cfg::L>(a_hi_, a_lo_);
+            o_held_ = b_next == b_;
+            b_ = b_next;
+            p_lo_d_ = p_lo_;
+            st_ = true;
+            if (timer_ != 0) {
+                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+            } else {
+                emit = emit_of_x();
+                if (emit != 0) {
+                    timer_ = pace_m - 1;
+                    st_ = false;  // (e_prev = emit != 0 in the next call; not se_: o_held_ may be 0)
+                }
+            }
         } else {
+            sb_ = false;
             se_ = false;
             if (timer_ == 0 && e_prev_ == 0) emit = emit_of_x();
             step_stages(delta, add);
@@ -287,8 +309,10 @@ private:
     bool ovs_st_;
     cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
     bool o_held_;       // b_* are those of that compare (unchanged since)
+    // clock enables of the taps and X (issue 13: simulation speed; ordinary registers in synthesis too)
     bool st_;           // settled: e_prev = cq = p_cy = 0, a_* equal X (a_cy = 0), p_lo_d = p_lo, b_ = stage A
     bool se_;           // st_'s registers but e_prev != 0, the count of a settled call (o_held_ since then)
+    bool sb_;           // the call after an se_ call, which left no carry (e_prev = cq = p_cy = 0, a_* equal X)
     bool ax_;           // the previous call had delta = add = 0 (it left a_* equal to X, a_cy = cq)
 };
 
