@@ -159,7 +159,10 @@ public:
         if (step == 0 && !pend_ && quiet_ == cfg::QUIET) {
             if (!same) pend_ = ratio != r_use_ || offset != off_tgt_;
             out_t q;
-            q.comp = comp_;
+            // (comp_int, which comp_ holds since the fourth quiet call: delta = 0. Read instead of
+            // comp_, which the full call reads after the test: GCC then loads comp_ ahead of the
+            // test and keeps it across the call; issue 13)
+            q.comp = ci_;
             q.delta = 0;
             return q;
         }
