@@ -20,7 +20,7 @@ short=${2:-100000}
 long=${3:-300000}
 command -v valgrind >/dev/null || { echo "bench_ipc.sh: valgrind not installed (make deps)"; exit 1; }
 # KEY|label (KEY: a substring of the bench item name)
-items=("hls laserax_top|hls laserax_top (chain + bench loop)" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
+items=("hls laserax_top|hls laserax_top + bench loop" "quad_decoder|hls quad_decoder" "pulse_multiplier|hls pulse_multiplier"
        "output_pacer|hls output_pacer" "rephase|hls rephase" "dds_sincos|hls dds_sincos"
        "golden laserax_top|golden laserax_top" "tb style|hls + golden + compare (tb style)")
 measure() {  # CALLS KEY -> "instructions calls"
