@@ -51,6 +51,9 @@ public:
     struct out_t {
         dac_t sin = 0;
         dac_t cos = 0;
+        // the output registers took codes of a new read (false: sin, cos are those of the previous
+        // call; for a caller that keeps what it formed from them, e.g. laserax_top's DAC clamp)
+        bool moved = false;
     };
 
     dds_sincos() { reset(); }
@@ -66,6 +69,7 @@ public:
         cos_ = 0;
         amp_q_ = 0;
         held_ = false;
+        s1new_ = false;
     }
 
     // Table write port (host side of the RAM).
@@ -88,9 +92,13 @@ public:
         // (rd_held: the read stage's inputs are those of s1 / c1; the counter may move)
         const bool rd_held = held_ && (same || (cfg::r_t(period >> 2) == qtr_prev_ && amp == amp_q_));
         if (rd_held && ostep == 0) {
-            sin_ = s1_;
-            cos_ = c1_;
             out_t h;
+            h.moved = s1new_;
+            if (s1new_) {  // (else sin, cos hold s1, c1 already: a clock enable)
+                sin_ = s1_;
+                cos_ = c1_;
+                s1new_ = false;
+            }
             h.sin = sin_;
             h.cos = cos_;
             return h;
@@ -98,8 +106,10 @@ public:
         // (same: P/4 and amp are those qtr_prev_ and amp_q_ hold, see above)
         const cfg::r_t quarter = same ? qtr_prev_ : cfg::r_t(period >> 2);
         // output stage: the codes of the previous call
+        const bool moved = s1new_;
         sin_ = s1_;
         cos_ = c1_;
+        s1new_ = !rd_held;
         // read stage: the codes of the phase before this call (held with rd_held: a count's
         // first call reads the phase whose codes s1 / c1 already hold; a clock enable, issue 13)
         if (!rd_held) {
@@ -140,6 +150,7 @@ public:
         out_t o;
         o.sin = sin_;
         o.cos = cos_;
+        o.moved = moved;
         return o;
     }
 
@@ -151,6 +162,7 @@ private:
     dac_t sin_, cos_;  // output registers
     cfg::amp_t amp_q_;  // amp of the last read (the codes s1 / c1)
     bool held_;         // s1 / c1 are the codes of the registers q, r, qtr_prev, amp_q and the table
+    bool s1new_;        // s1 / c1 were read in the previous call (else sin, cos equal them after a call)
     tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
 #pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
 };

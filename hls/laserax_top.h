@@ -338,10 +338,14 @@ private:
             o.dac_clip_st = false;
             alarm_q_ = alarm_parts();
         }
-        const dac_t dac_hi = chk_q_.dac_hi;
-        const dac_t dac_lo = chk_q_.dac_lo;
-        o.sin = clamp_dac(dds.sin, dac_hi, dac_lo);
-        o.cos = clamp_dac(dds.cos, dac_hi, dac_lo);
+        // (same and codes that did not move: o.sin, o.cos hold their clamp with these limits, and
+        // a clamp of them set dac_clip_st in the previous call; issue 13)
+        if (!(same && !dds.moved)) {
+            const dac_t dac_hi = chk_q_.dac_hi;
+            const dac_t dac_lo = chk_q_.dac_lo;
+            o.sin = clamp_dac(dds.sin, dac_hi, dac_lo);
+            o.cos = clamp_dac(dds.cos, dac_hi, dac_lo);
+        }
         // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
         // that produced them and shifted through two taps)
         o.ref_mark = dig_q3_.ref_mark;
