@@ -173,7 +173,7 @@ public:
         //    changes only in step_run and reset, which clear qh_)
         if (pstep == 0 && ((same && qh_) || (qk_ && !rehome)) && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
             // qh_: the previous call was quiet too, outside stage 2: the mark tests then hold
-            // (formed from u and L, held), and outside stage 2 they are all quiet_forms forms
+            // (formed from u and L, held), and outside stage 2 they are all that quiet_forms forms
             if (!qh_) quiet_forms(pp);
             sw_prev_ = sw;
             sw_seen_ = sw_valid;
