@@ -137,6 +137,7 @@ public:
     lx::laserax_top& core() { return core_; }
     const axis_settings& settings() const { return s_; }
     uint64_t calls() const { return calls_; }
+    uint64_t writes() const { return writes_; }  // register writes to the core (set() with changed settings)
 
 private:
     axis_settings s_;
@@ -146,6 +147,7 @@ private:
     golden::laserax_top gold_;
     golden::axis_out g_{};
     uint64_t calls_ = 0;
+    uint64_t writes_ = 0;
     // integrity state
     controller_decoder dec_;
     // the outputs of call t belong to the rephase out_pos of call t-3 (DESIGN 4.7: dds 3 stages)
