@@ -51,8 +51,9 @@ public:
     struct out_t {
         dac_t sin = 0;
         dac_t cos = 0;
-        // the output registers took codes of a new read (false: sin, cos are those of the previous
-        // call; for a caller that keeps what it formed from them, e.g. laserax_top's DAC clamp)
+        // the output registers took the codes of the last read (false: sin, cos are those of the
+        // previous call; for a caller that keeps what it formed from them, e.g. the DAC clamp of
+        // laserax_top)
         bool moved = false;
     };
 

@@ -121,16 +121,8 @@ public:
             // = add = 0, b_next == b_): a clock enable of them (issue 13: simulation speed; same
             // outputs). e_prev = 0: the emit decision waits for the timer alone.
             o_held_ = true;
-            if (timer_ != 0) {
-                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-            } else {
-                emit = emit_of_x();
-                if (emit != 0) {
-                    timer_ = pace_m - 1;
-                    st_ = false;  // (e_prev = emit != 0 in the next call)
-                    se_ = true;
-                }
-            }
+            emit = wait_or_count(pace_m);
+            if (emit != 0) se_ = true;
         } else if (se_ && delta == 0 && add == 0) {
             // settled but for the count of the previous call (se_: st_'s registers with e_prev
             // != 0): with delta = add = 0 only the lower halves take it, b_next == b_ (o_held_ is
@@ -158,15 +150,7 @@ public:
             b_ = b_next;
             p_lo_d_ = p_lo_;
             st_ = true;
-            if (timer_ != 0) {
-                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-            } else {
-                emit = emit_of_x();
-                if (emit != 0) {
-                    timer_ = pace_m - 1;
-                    st_ = false;  // (e_prev = emit != 0 in the next call; not se_: o_held_ may be 0)
-                }
-            }
+            emit = wait_or_count(pace_m);  // (a count: not se_, o_held_ may be 0)
         } else {
             sb_ = false;
             se_ = false;
@@ -194,6 +178,21 @@ public:
     }
 
 private:
+    // a call of the settled or the sb_ path (e_prev = 0): the timer counts down, or at 0 the emit
+    // decision; a count loads the timer and leaves the settled state (e_prev != 0 in the next call)
+    step_t wait_or_count(const cfg::pace_t& pace_m) {
+        if (timer_ != 0) {
+            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
+            return 0;
+        }
+        const step_t emit = emit_of_x();
+        if (emit != 0) {
+            timer_ = pace_m - 1;
+            st_ = false;
+        }
+        return emit;
+    }
+
     // the emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain)
     step_t emit_of_x() const {
         const bool hi_neg = hi_ < 0;
