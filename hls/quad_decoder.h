@@ -83,9 +83,7 @@ public:
         // simulation speed; same outputs). (idle_key_: the pin levels and clear = 0 of such a
         // call, packed, while primed, the three filters quiet and E = 0; IDLE_NONE otherwise: one
         // compare instead of eight tests)
-        // (with same, clear is not packed: idle_key_ is IDLE_NONE after a call with clear = 1, so
-        // a key that matches says the previous call had clear = 0, which is this call's)
-        if (idle_pack(a, b, lerr, same ? false : clear) == idle_key_) {
+        if (idle_pack(a, b, lerr, clear) == idle_key_) {
             if (!same) {
                 fa_.hold(glitch_n);
                 fb_.hold(glitch_n);
@@ -151,7 +149,7 @@ public:
         if (ra.glitch || rb.glitch) glitch_st_ = true;
         if (lerr_now) lerr_alarm_ = true;
         raw_ = raw_ + step;
-        idle_key_ = (primed_ && fa_.quiet() && fb_.quiet() && fe_.quiet() && !fe_.level() && !clear)
+        idle_key_ = (primed_ && fa_.quiet() && fb_.quiet() && fe_.quiet() && !fe_.level())
                         ? cfg::idle_t(idle_pack(fa_.level(), fb_.level(), false, false))
                         : cfg::idle_t(cfg::IDLE_NONE);
 
@@ -193,9 +191,8 @@ private:
     bool close_;  // a step in the next call is closer than min_spacing (of this call)
     bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
     // idle_pack(A, B, 0, 0) of the A / B filters' levels while primed_ and fa_, fb_, fe_ are quiet
-    // (settled at those levels) with E = 0 and the call had clear = 0, else IDLE_NONE (no pack
-    // equals it); formed after every full call (the only calls that change primed_ or a filter's
-    // quiet / level)
+    // (settled at those levels) with E = 0, else IDLE_NONE (no pack equals it); formed after every
+    // full call (the only calls that change primed_ or a filter's quiet / level)
     cfg::idle_t idle_key_;
 };
 
