@@ -51,10 +51,6 @@ public:
     struct out_t {
         dac_t sin = 0;
         dac_t cos = 0;
-        // the output registers took the codes of the last read (false: sin, cos are those of the
-        // previous call; for a caller that keeps what it formed from them, e.g. the DAC clamp of
-        // laserax_top)
-        bool moved = false;
     };
 
     dds_sincos() { reset(); }
@@ -68,52 +64,21 @@ public:
         c1_ = 0;
         sin_ = 0;
         cos_ = 0;
-        amp_q_ = 0;
-        held_ = false;
-        s1new_ = false;
     }
 
     // Table write port (host side of the RAM).
     void write(tbl_addr_t addr, tbl_word_t data) {
         tbl_[addr.to_uint()] = data;
-        held_ = false;  // the read stage may read this word
     }
     tbl_word_t read(tbl_addr_t addr) const { return tbl_[addr.to_uint()]; }
 
-    // same: period and amp are those of the previous call (a caller's register stage that knows
-    // it, e.g. laserax_top::tick; false by default): after every call qtr_prev_ and amp_q_ hold
-    // that call's P/4 and amp (the held path requires them equal), so the compares below are
-    // known true (issue 13: simulation speed; same outputs)
-    // (ostep and the wide registers by const reference: loaded where a path reads them, issue 13)
-    out_t step(const step_t& ostep, const period_t& period, const cfg::amp_t& amp, bool same = false) {
-        // read stage held: s1 / c1 are the codes of (q, r, P/4 of the previous call, amp_q) and of
-        // the table (held_), and none of them changes in this call: the reads below would load
-        // the same codes again, the counter holds (a clock enable; issue 13: simulation speed; P/4
-        // is formed only where it is read)
-        // (rd_held: the read stage's inputs are those of s1 / c1; the counter may move)
-        const bool rd_held = held_ && (same || (cfg::r_t(period >> 2) == qtr_prev_ && amp == amp_q_));
-        if (rd_held && ostep == 0) {
-            out_t h;
-            h.moved = s1new_;
-            if (s1new_) {  // (else sin, cos hold s1, c1 already: a clock enable)
-                sin_ = s1_;
-                cos_ = c1_;
-                s1new_ = false;
-            }
-            h.sin = sin_;
-            h.cos = cos_;
-            return h;
-        }
-        // (same: P/4 and amp are those qtr_prev_ and amp_q_ hold, see above)
-        const cfg::r_t quarter = same ? qtr_prev_ : cfg::r_t(period >> 2);
+    out_t step(const step_t& ostep, const period_t& period, const cfg::amp_t& amp) {
+        const cfg::r_t quarter = cfg::r_t(period >> 2);
         // output stage: the codes of the previous call
-        const bool moved = s1new_;
         sin_ = s1_;
         cos_ = c1_;
-        s1new_ = !rd_held;
-        // read stage: the codes of the phase before this call (held with rd_held: a count's
-        // first call reads the phase whose codes s1 / c1 already hold; a clock enable, issue 13)
-        if (!rd_held) {
+        // read stage: the codes of the phase before this call
+        {
             const cfg::r_t r_mirror = qtr_prev_ - r_;  // 1..P/4 of the previous call (r < that P/4)
             // r < P/4 <= 1024; the address is the low W_TBL_ADDR bits, as in the RAM (a period
             // that shrinks under a running block can take r past P/4: never out of the array)
@@ -143,15 +108,10 @@ public:
                 r_ = r_ - 1;
             }
         }
-        held_ = ostep == 0 && (same || quarter == qtr_prev_);  // (q, r) and P/4 of the reads unchanged
-        if (!same) {
-            amp_q_ = amp;
-            qtr_prev_ = quarter;
-        }
+        qtr_prev_ = quarter;
         out_t o;
         o.sin = sin_;
         o.cos = cos_;
-        o.moved = moved;
         return o;
     }
 
@@ -161,9 +121,6 @@ private:
     cfg::r_t qtr_prev_;  // P/4 of the previous call: the mirror address of this call's codes
     dac_t s1_, c1_;    // read stage: codes of the phase before the call
     dac_t sin_, cos_;  // output registers
-    cfg::amp_t amp_q_;  // amp of the last read (the codes s1 / c1)
-    bool held_;         // s1 / c1 are the codes of the registers q, r, qtr_prev, amp_q and the table
-    bool s1new_;        // s1 / c1 were read in the previous call (else sin, cos equal them after a call)
     tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
 #pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
 };

@@ -153,20 +153,11 @@ public:
         }
         LX_LOOP(wq_init) for (int k = 0; k < cfg::W_DLY; ++k) wq_[k] = wr_t{};
         wi_ = 0;
-        nw_ = 0;
         reset();
     }
 
-    // Reset of the pipeline (not of the table RAM). The writes already in the write port's delay
-    // line belong to running calls: they are performed, oldest first, never dropped
-    // (ERROR_MAP.md §4).
+    // Reset of the pipeline's registers (not of the table RAM, not of the write port's delay line).
     void reset() {
-        LX_LOOP(wq_flush) for (int k = 0; k < cfg::W_DLY; ++k) {
-            const unsigned slot = (wi_.to_uint() + unsigned(k)) % unsigned(cfg::W_DLY);
-            write(wq_[slot]);
-            wq_[slot] = wr_t{};
-        }
-        nw_ = 0;
         a_ = st_a{};
         b_ = st_b{};
         c_ = st_c{};
@@ -176,44 +167,21 @@ public:
         g_ = st_g{};
         ph_ = 0;
         corr_ = 0;
-        idle_ = true;
-        ih_ = false;
     }
 
-    // The call of step() when the previous call was an idle hold with no write presented or in
-    // flight (ih_) and r is the register block of that call (a caller's register stage that knows
-    // it, e.g. laserax_top::tick): then map_en, we, idle_ and nw_ are those that call tested, so
-    // this call is the same idle hold with the write port held (issue 13: simulation speed; same
-    // outputs). Returns true if it made the call (its outputs those of the previous call,
-    // out_t{}), else does nothing (the caller then calls step()).
-    bool step_held() {
-        if (!ih_) return false;
-        ph_ = cfg::phm_t(ph_.to_uint() + 1);  // wraps at S_MAP
-        return true;
+    // One call in reset (the safe state of laserax_top; rtl_ref i_rst): the pipeline registers
+    // take their reset values; the write port's delay line keeps running, so a write already in
+    // it lands in its own call (one RAM write at most, as in every call), and the port takes no
+    // new write (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
+    void step_reset() {
+        reset();
+        error_map_regs none;
+        none.we = false;
+        write_port(none);
     }
 
-    // (p by const reference: loaded where the sample call reads it, issue 13)
     out_t step(const pos_t& p, bool homed, const error_map_regs& r) {
         const unsigned ph = ph_.to_uint();
-        // ---- idle hold: a clock enable of the stages A .. H (not of the write port and ph) ----
-        // With map_en = 0 and no active or erroneous sample anywhere in the stages (idle_), a
-        // full call would take in values flagged inactive and return corr = delta = 0 with every
-        // flag false; the data fields of inactive stages are never read (every use of them is
-        // gated by the act flag that travels with them, and the flags are recomputed from the
-        // sample call's inputs in stage A1), so the stages may hold instead. Same outputs, fewer
-        // toggles.
-        if (!r.map_en && idle_) {
-            // the write port holds too while no write is in flight or presented: its delay line
-            // then has we = 0 in every entry, whose other fields are read only with we = 1 (a
-            // clock enable; same writes, same outputs)
-            if (r.we || nw_ != 0) write_port(r);
-            ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
-            // (the next call with the same r is an idle hold with the port held: map_en = 0 and
-            // idle_ hold, and no write is presented or in flight)
-            ih_ = !r.we && nw_ == 0;
-            return out_t{};
-        }
-        ih_ = false;
         // ---- H: output registers ------------------------------------------------------------
         out_t o;
         o.corr = g_.corr;
@@ -335,9 +303,6 @@ public:
         }
 
         ph_ = cfg::phm_t(ph + 1);  // wraps at S_MAP
-        idle_ = !(a_.fl.act || a_.fl.err || b_.fl.act || b_.fl.err || c_.fl.act || c_.fl.err || rd_.fl.act ||
-                  rd_.fl.err || d_.fl.act || d_.fl.err || m_.fl.act || m_.fl.err || g_.fl.act || g_.fl.err) &&
-                g_.corr == 0 && corr_ == 0;
         return o;
     }
 
@@ -407,12 +372,10 @@ private:
     void write_port(const error_map_regs& r) {
         wr_t& w = wq_[wi_.to_uint()];
         write(w);
-        if (w.we) nw_ = cfg::wqi_t(nw_ - 1);
         w.we = r.we;
         w.bank = !r.bank_sel;
         w.addr = r.addr;
         w.data = r.data;
-        if (r.we) nw_ = cfg::wqi_t(nw_ + 1);
         wi_ = wi_.to_uint() + 1 == unsigned(cfg::W_DLY) ? cfg::wqi_t(0) : cfg::wqi_t(wi_ + 1);
     }
 
@@ -442,7 +405,6 @@ private:
 #pragma HLS BIND_STORAGE variable = tbl1o_ type = ram_s2p impl = bram
     wr_t wq_[cfg::W_DLY];  // the write port's delay line (slot wi_: the write of W_DLY calls ago)
     cfg::wqi_t wi_;
-    cfg::wqi_t nw_;  // entries of wq_ with we = 1
     st_a a_;
     st_b b_;
     st_c c_;
@@ -452,8 +414,6 @@ private:
     st_g g_;
     cfg::phm_t ph_;  // phase of this call in the sample period (0: sample call)
     cfg::corr_t corr_;
-    bool idle_;  // no stage holds an active or erroneous sample, corr = 0 (see the idle hold)
-    bool ih_;    // the previous call was an idle hold with !r.we and nw_ = 0 (see step_held)
 };
 
 }  // namespace lx

@@ -47,34 +47,14 @@ public:
         cnt_ = 0;
         fill_ = 0;
         ready_ = false;
-        quiet_ = false;
-        key_ = KEY_NONE;
     }
 
-    // the block state for the caller's own clock enable (see step): settled at the level of pin
-    bool settled(bool pin) const { return unsigned(pin) == key_; }
     const bool& level() const { return f_; }
     const bool& valid() const { return valid_; }  // (level(), valid(): the registers f, valid of the last out_t)
-    bool quiet() const { return quiet_; }  // settled at level() (valid, cnt = 0, s1 = s2 = f)
-    // the call of step() in the settled state (settled(pin)): only the pass decision is loaded
-    void hold(cnt_t n) { ready_ = n <= 1; }
 
-    // same: n is that of the previous call (a caller's register stage that knows it, e.g.
-    // laserax_top::tick; false by default): a settled filter is quiet (cnt = 0), so its pass
-    // decision holds n <= 1 of the previous call, and hold() would load the same value (issue 13:
-    // simulation speed; same outputs)
-    out_t step(bool pin, cnt_t n, bool same = false) {
-        // settled (quiet_: valid, cnt = 0, s1 = s2 = f) and the pin still at that level: the call
-        // below would hold every register but the pass decision (cnt + 1 = 1 >= N) and return
-        // (f, 1, 0); a clock enable of the rest (issue 13: simulation speed; same outputs)
-        if (settled(pin)) {
-            if (!same) hold(n);
-            out_t q;
-            q.f = f_;
-            q.valid = true;
-            q.glitch = false;
-            return q;
-        }
+    // One clock. The pin reaches only the first synchroniser flop (s1); every other register reads
+    // the synchronised copy s2 (DESIGN 4.1: no logic on the asynchronous input).
+    out_t step(bool pin, cnt_t n) {
         const bool glitch = valid_ && s2_ == f_ && cnt_ != 0;
         if (!valid_) {
             if (fill_ == 2) {
@@ -96,8 +76,6 @@ public:
         ready_ = uint<W_CNT + 1>(cnt_) + 1 >= n;
         s2_ = s1_;
         s1_ = pin;
-        quiet_ = valid_ && cnt_ == 0 && s1_ == s2_ && s2_ == f_;
-        key_ = quiet_ ? uint<2>(s1_ ? 1 : 0) : uint<2>(KEY_NONE);
         out_t o;
         o.f = f_;
         o.valid = valid_;
@@ -107,11 +85,6 @@ public:
 
 private:
     bool s1_, s2_, f_, valid_;
-    bool quiet_;  // valid_ && cnt_ == 0 && s1_ == s2_ == f_ (registered with them)
-    // the pin level of a settled call: s1_ while quiet_, else KEY_NONE (no pin equals it): one
-    // compare for settled() (issue 13: simulation speed)
-    static constexpr unsigned KEY_NONE = 2;
-    uint<2> key_;
     bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
     cnt_t cnt_;
     typename cfg::fill_t fill_;

@@ -5,7 +5,7 @@
 // One call of step() (or of tick()) is one clock. step(pins, regs) presents a register block in
 // every call; the C simulation also has a register write port, write_regs(), and tick(), which
 // presents the last block written and returns the outputs by reference (the interface the
-// testbenches use, lxt::dual_axis; issue 13: simulation speed). Between two blocks there is
+// testbenches use, lxt::dual_axis; C simulation only, absent from synthesis). Between two blocks there is
 // exactly one register stage: a block consumes the outputs its upstream block returned at the
 // previous call (held in out_, the outputs of the previous call, and in the *_q members for those
 // no output shows).
@@ -28,7 +28,7 @@
 
 // C simulation with the own integer back end: the register stage compares the presented block with
 // the one in force byte-wise (std::memcmp) to skip the reload and the configuration check when
-// nothing changed (issue 13: simulation speed; DESIGN §4.7). Synthesis and the vendor types take
+// nothing changed (the C-simulation register write port; DESIGN §4.7). Synthesis and the vendor types take
 // the plain path (reload and check every call), which computes the same.
 #if !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && !defined(LASERAX_USE_AC_TYPES)
 #include <cstring>
@@ -186,12 +186,11 @@ public:
         pac_.reset();
         rep_.reset();
         dds_.reset();
-        emap_.reset();  // pipeline only, not the table RAM
+        emap_.reset();  // pipeline only, not the table RAM nor the write port's delay line
         // inter-block registers (0 / false): the block outputs in out_ (every axis_out member has
         // a default member initialiser), and those no output shows
         out_ = axis_out{};
         lerr_q_ = false;
-        alarm_q_ = false;
         dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
         dig_q2_ = dig_tap{};
         dig_q3_ = dig_tap{};
@@ -200,7 +199,7 @@ public:
     dds_sincos& dds() { return dds_; }
 
 #ifndef __SYNTHESIS__
-    // Register write port (issue 13: simulation speed; DESIGN §4.7 unchanged): `r` is the block
+    // Register write port (C simulation; DESIGN §4.7 unchanged): `r` is the block
     // presented in every call from the next tick() on, until the next write, i.e. in force from the
     // call after that tick. Only a write reloads the registers in force and checks them; a tick
     // with no write since the previous one presents the same block again (nothing to compare).
@@ -219,7 +218,7 @@ public:
         // reload: run() would skip its loads and checks, tbl_we in force is 0 (it fails the check)
         // and the block in force stays in force; only the blocks run
         if (fast_) {
-            blocks(pins, regs_q_, true);
+            blocks(pins, regs_q_);
             return out_;
         }
         clock(pins);
@@ -231,9 +230,7 @@ public:
             chk_q_ = check(regs_q_);
             written_ = false;
         }
-        // (and clear = rehome = 0 in force: blocks() of the fast path takes them as constants;
-        // a block that holds either at 1 runs the path above, which computes the same)
-        fast_ = same_q_ && run_q_ && !regs_q_.clear && !regs_q_.rehome;
+        fast_ = same_q_ && run_q_;
         return out_;
     }
 #endif
@@ -284,7 +281,7 @@ private:
     void run(const axis_pins& pins, const axis_regs& regs) {
         // The same registers in force as in the previous call (same_q_), which ran: the loads
         // and checks below would load the values they hold and find the configuration valid
-        // again (C simulation only, see LASERAX_REGS_SAME; issue 13: simulation speed).
+        // again (the C-simulation write port only, see LASERAX_REGS_SAME; false in synthesis).
         if (!(same_q_ && run_q_)) {
             // held compensation registers: loaded in every call without comp_sync, else on
             // comp_commit; not part of the chain reset (register file state)
@@ -304,6 +301,9 @@ private:
             run_q_ = ok;
             if (!ok) {
                 reset();  // safe state: every block held in reset
+                // (the error map's write port runs on through the reset, one write per call at
+                // most: a write already in its delay line lands in its own call, rtl_ref i_rst)
+                emap_.step_reset();
                 // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
                 // read the table, so its true dual-port RAM has at most two accesses per call
                 if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
@@ -312,40 +312,24 @@ private:
             }
         }
         // (cfg_err: false in every call that runs the blocks; a call of blocks() alone, tick's
-        // fast path, follows such a call, so it holds there)
+        // register stage without a write, follows such a call, so it holds there)
         out_.cfg_err = false;
-        blocks(pins, regs, false);
+        blocks(pins, regs);
     }
 
-    // the blocks of one running call on the registers in force (run() made the checks); same: the
-    // registers in force (and ratio_h_, offset_h_, chk_q_) are those of the previous call, which
-    // ran the blocks too, and clear = rehome = 0 in force (tick's fast path; a constant in each
-    // caller). A block then skips the loads of registers formed from them that would load the
-    // values they hold (C simulation: issue 13, simulation speed; false in synthesis)
-    void blocks(const axis_pins& pins, const axis_regs& regs, bool same) {
-        const bool clear = !same && regs.clear;    // (same: clear = 0, see tick)
-        const bool rehome = !same && regs.rehome;  // (same: rehome = 0)
+    // the blocks of one running call on the registers in force (run() made the checks)
+    void blocks(const axis_pins& pins, const axis_regs& regs) {
         // Every block reads only inter-block registers of the previous call, so the order of the
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
         axis_out& o = out_;
-        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude, same);
+        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude);
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
-        // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_; a
-        // clamp sets it in clamp_dac, after the clear)
-        if (clear) {
-            o.dac_clip_st = false;
-            alarm_q_ = alarm_parts();
-        }
-        // (same and codes that did not move: o.sin, o.cos hold their clamp with these limits, and
-        // a clamp of them set dac_clip_st in the previous call; issue 13)
-        if (!(same && !dds.moved)) {
-            const dac_t dac_hi = chk_q_.dac_hi;
-            const dac_t dac_lo = chk_q_.dac_lo;
-            o.sin = clamp_dac(dds.sin, dac_hi, dac_lo);
-            o.cos = clamp_dac(dds.cos, dac_hi, dac_lo);
-        }
+        // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_)
+        if (regs.clear) o.dac_clip_st = false;
+        o.sin = clamp_dac(dds.sin, chk_q_.dac_hi, chk_q_.dac_lo);
+        o.cos = clamp_dac(dds.cos, chk_q_.dac_hi, chk_q_.dac_lo);
         // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
         // that produced them and shifted through two taps)
         o.ref_mark = dig_q3_.ref_mark;
@@ -355,71 +339,49 @@ private:
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
-        // latency, a sample every 32 calls, DESIGN §4.7)
-        // (map_held: the map's held idle call, whose outputs are those out_ holds, those of an idle
-        // call: out_t{}, so its delta is 0; else corr and cfg_err, read by no block, are stored
-        // here; the delta in every call after the pacer read that of the previous call)
-        const bool map_held = same && emap_.step_held();
-        error_map_cfg::cdelta_t map_delta = 0;
-        if (!map_held) {
-            const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
-            o.map_cfg_err = emap.cfg_err;
-            o.corr = emap.corr;
-            map_delta = emap.delta;
-            alarm_q_ = alarm_parts();
-        }
-        // (run: written only by a call that is neither held nor moved, read only in that call; C
-        // simulation: a member, so no call initialises it; synthesis: a local, no register)
-#ifndef __SYNTHESIS__
-        rephase::out_t& run = rep_run_;
-#else
-        rephase::out_t run;
-#endif
-        const rephase::taps_t rep = rep_.step_taps(o.pstep, swf_.level(), swf_.valid(), rehome, lerr_q_,
-                                                   regs.period, regs.mark_len, same, run);
+        // latency, a sample every 32 calls, DESIGN §4.7); the delta is stored after the pacer read
+        // that of the previous call
+        const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
+        o.map_cfg_err = emap.cfg_err;
+        o.corr = emap.corr;
+        const rephase::out_t rep =
+            rep_.step(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_, regs.period, regs.mark_len);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
+        dig_q1_ = dig_levels(rep.out_pos, rep.mark);
         o.ostep = rep.ostep;
-        if (!rep.held) {  // (held: the other rephase outputs are those out_ holds, dig_q1_ too)
-            dig_q1_ = dig_levels(rep.out_pos, rep.mark);
-            o.out_pos = rep.out_pos;
-            o.rep_mark = rep.mark;
-            if (!rep.moved) {  // (moved: only ostep, out_pos and mark changed)
-                o.stage = run.stage;
-                o.homed = run.homed;
-                o.adj = run.adj;
-                o.a_pos = run.a;
-                o.b_pos = run.b;
-                o.c_pos = run.c;
-                o.z_pos = run.z;
-                o.d = run.d;
-            }
-        }
-        const output_pacer::out_t pac =
-            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, clear, same);
+        o.out_pos = rep.out_pos;
+        o.rep_mark = rep.mark;
+        o.stage = rep.stage;
+        o.homed = rep.homed;
+        o.adj = rep.adj;
+        o.a_pos = rep.a;
+        o.b_pos = rep.b;
+        o.c_pos = rep.c;
+        o.z_pos = rep.z;
+        o.d = rep.d;
+        const output_pacer::out_t pac = pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
         o.ovs_backlog_st = pac.ovs_st;
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
         o.paced_pos = pac.paced;
-        o.map_delta = map_delta;
-        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_, same);
+        o.map_delta = emap.delta;
+        const pulse_multiplier::out_t mul = mul_.step(o.step, ratio_h_, offset_h_);
         o.comp_pos = mul.comp;
         o.delta = mul.delta;
         const quad_decoder::out_t dec =
-            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, clear, same);
+            dec_.step(pins.a, pins.b, pins.lerr, regs.glitch_n, regs.min_spacing, regs.clear);
         o.step = dec.step;
-        if (!dec.held) {  // (held: the other decoder outputs are those out_ and lerr_q_ hold)
-            lerr_q_ = dec.lerr;
-            o.lerr_alarm = dec.lerr_alarm;
-            o.illegal_st = dec.illegal_st;
-            o.err_cnt = dec.err_cnt;
-            o.ovs_edge_st = dec.ovs_st;
-            o.glitch_st = dec.glitch_st;
-            o.raw_count = dec.raw_count;
-            alarm_q_ = alarm_parts();
-        }
-        swf_.step(pins.sw, regs.sw_debounce, same);  // (its outputs f, valid: the registers level(), valid())
-        o.alarm = alarm_q_ | pac.ovs_st;  // (the other parts: alarm_q_)
+        lerr_q_ = dec.lerr;
+        o.lerr_alarm = dec.lerr_alarm;
+        o.illegal_st = dec.illegal_st;
+        o.err_cnt = dec.err_cnt;
+        o.ovs_edge_st = dec.ovs_st;
+        o.glitch_st = dec.glitch_st;
+        o.raw_count = dec.raw_count;
+        swf_.step(pins.sw, regs.sw_debounce);  // (its outputs f, valid: the registers level(), valid())
+        // alarm: every alarm flag of the call (cfg_err is false in a call that runs the blocks)
+        o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.map_cfg_err || o.dac_clip_st || o.ovs_backlog_st;
     }
 
 private:
@@ -430,22 +392,11 @@ private:
     rephase rep_;
     dds_sincos dds_;
     error_map emap_;
-#ifndef __SYNTHESIS__
-    rephase::out_t rep_run_;  // the outputs of the last call of rephase::step_run (read in that call only)
-#endif
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)
     axis_out out_;
     bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
-    // the parts of alarm but the pacer's (ovs_backlog_st, formed in every call) and cfg_err (false
-    // in a call that runs the blocks): lerr_alarm, illegal_st, ovs_edge_st, map_cfg_err and
-    // dac_clip_st of out_, formed again in a call only where one of them can change (the decoder's
-    // full call, the error map's call that is not its held idle call, the DAC clear and clamp)
-    bool alarm_q_;
-    bool alarm_parts() const {
-        return (out_.lerr_alarm | out_.illegal_st | out_.ovs_edge_st | out_.map_cfg_err | out_.dac_clip_st) != 0;
-    }
     // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
     // mark twice), in axis_out's order
     struct dig_tap {
@@ -491,16 +442,14 @@ private:
     }
 
     // v clamped to lo .. hi (lo = -hi, formed with hi in check()); a clamp sets the sticky flag
-    // dac_clip_st and with it alarm
+    // dac_clip_st
     dac_t clamp_dac(dac_t v, dac_t hi, dac_t lo) {
         if (v > hi) {
             out_.dac_clip_st = true;
-            alarm_q_ = true;
             return hi;
         }
         if (v < lo) {
             out_.dac_clip_st = true;
-            alarm_q_ = true;
             return lo;
         }
         return v;

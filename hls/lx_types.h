@@ -170,7 +170,7 @@ template <int W> using uint = fixed_int<W, false>;
 
 // LASERAX_FLATTEN: on the per-call step() of a chain, inlines every call in its body (GCC /
 // Clang, own integer back end, C simulation only): the block outputs then pass in registers
-// instead of through memory (issue 13: simulation speed). No effect on what is computed; empty
+// instead of through memory (a compiler setting for C simulation speed). No effect on what is computed; empty
 // for synthesis and with the vendor types (their deep class hierarchies would make every chain
 // step one very large function to compile, at -O0 too).
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
@@ -178,17 +178,6 @@ template <int W> using uint = fixed_int<W, false>;
 #define LASERAX_FLATTEN __attribute__((flatten))
 #else
 #define LASERAX_FLATTEN
-#endif
-
-// LASERAX_COLD: on a block's rarely taken full-call path (the clock-enabled idle paths being the
-// common ones on a running axis): kept out of line in the flattened chain step, so the hot path's
-// registers are not spent on it (GCC / Clang, own integer back end, C simulation only; issue 13:
-// simulation speed). No effect on what is computed; empty for synthesis and the vendor types.
-#if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
-    !defined(LASERAX_USE_AC_TYPES)
-#define LASERAX_COLD __attribute__((noinline, cold))
-#else
-#define LASERAX_COLD
 #endif
 
 // LX_LOOP(name) names the loop that follows it for Vitis HLS, whose reports and directives refer

@@ -87,81 +87,44 @@ public:
         o_y0_ = false;
         o_cl_ = false;
         ovs_st_ = false;
-        thr_q_ = 0;
-        o_held_ = false;
-        st_ = true;  // (every register 0: settled, stage A equals X)
-        se_ = false;
-        sb_ = false;
-        ax_ = true;
     }
 
-    // same: pace_m, thr and clear are those of the previous call (a caller's register stage that
-    // knows it, e.g. laserax_top::tick; false by default): after every call thr_q_ holds that
-    // call's thr, so thr == thr_q_ is known true (issue 13: simulation speed; same outputs)
-    // (the addends and the wide registers by const reference: loaded where a path reads them,
-    // issue 13)
     out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
-               bool clear, bool same = false) {
+               bool clear) {
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
         // ---- ovs, first stage: the backlog tap B(t-3) (register b_) against thr of this call ----
-        // (held: o_y1, o_y0, o_cl were formed from this b_ and thr_q_ == thr, so the same values
-        // would be loaded again: a clock enable; issue 13: simulation speed)
-        if (!(o_held_ && (same || thr == thr_q_))) {
-            ovs_stage1(thr);
-        }
+        ovs_stage1(thr);
 
-        // ---- emit decision (from the registers of the previous call), taps, X, timer ----
-        // (the trees of the emit decision are read only with timer = 0 and e_prev = 0: formed
-        // only then)
-        step_t emit = 0;
-        if (st_ && delta == 0 && add == 0) {
-            // settled: the taps and X would load the values they hold (st_: e_prev = cq = p_cy
-            // = 0, stage A equals X (a_cy = 0), p_lo_d = p_lo and b_ is stage A's value; with delta
-            // = add = 0, b_next == b_): a clock enable of them (issue 13: simulation speed; same
-            // outputs). e_prev = 0: the emit decision waits for the timer alone.
-            o_held_ = true;
-            emit = wait_or_count(pace_m);
-            if (emit != 0) se_ = true;
-        } else if (se_ && delta == 0 && add == 0) {
-            // settled but for the count of the previous call (se_: st_'s registers with e_prev
-            // != 0): with delta = add = 0 only the lower halves take it, b_next == b_ (o_held_ is
-            // true since that call), and hi + cq = hi, p_hi + p_cy = p_hi, p_lo_d = p_lo: a clock
-            // enable of those (issue 13: simulation speed; same outputs). No count is decided
-            // (e_prev != 0); the call leaves stage A equal to X (ax_), with cq = a_cy.
-            const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
-            a_lo_ = cfg::lo_t(al);
-            a_cy_ = cfg::cy_t(al >> cfg::L);
-            lo_ = cfg::lo_t(al);
-            cq_ = cfg::cq_t(al >> cfg::L);
-            const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
-            p_lo_ = cfg::plo_t(ps);
-            p_cy_ = cfg::cy_t(ps >> cfg::LP);
-            se_ = false;
-            sb_ = cq_ == 0 && p_cy_ == 0;
-            if (timer_ != 0) timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-        } else if (sb_ && delta == 0 && add == 0) {
-            // the call after that (sb_: no carry left, e_prev = cq = p_cy = 0, stage A equals X
-            // with a_cy = 0): with delta = add = 0 the stage-A copies and X hold; stage B and
-            // p_lo_d take the values the count moved, after which the taps are settled (st_)
-            sb_ = false;
-            const backlog_t b_next = cat_s<cfg::W_HI, cfg::L>(a_hi_, a_lo_);
-            o_held_ = b_next == b_;
-            b_ = b_next;
-            p_lo_d_ = p_lo_;
-            st_ = true;
-            emit = wait_or_count(pace_m);  // (a count: not se_, o_held_ may be 0)
-        } else {
-            sb_ = false;
-            se_ = false;
-            if (timer_ == 0 && e_prev_ == 0) emit = emit_of_x();
-            step_stages(delta, add);
-            if (emit != 0) {
-                timer_ = pace_m - 1;
-                st_ = false;  // (e_prev = emit != 0 in the next call)
-            } else if (timer_ != 0) {
-                timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-            }
+        // ---- emit decision from the registers of the previous call: sign and zero of X ----
+        const step_t emit = (timer_ == 0 && e_prev_ == 0) ? emit_of_x() : step_t(0);
+
+        // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
+        // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
+        b_ = cat_s<cfg::W_HI, cfg::L>(cfg::hi_t(a_hi_ + a_cy_), a_lo_);
+        const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
+        a_lo_ = cfg::lo_t(al);
+        a_cy_ = cfg::cy_t(al >> cfg::L);
+        a_hi_ = cfg::hi_t(hi_ + cq_);
+        // paced: split counter fed by e(t-1); the lower half is delayed one call
+        p_lo_d_ = p_lo_;
+        p_hi_ = cfg::phi_t(p_hi_ + p_cy_);
+        const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
+        p_lo_ = cfg::plo_t(ps);
+        p_cy_ = cfg::cy_t(ps >> cfg::LP);
+
+        // ---- X' = X + delta + add - e_prev (split, registered carry; add joins the lower half) ----
+        const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
+        const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
+        hi_ = cfg::hi_t(hi_ + d_hi + cq_);
+        lo_ = cfg::lo_t(t);
+        cq_ = cfg::cq_t(t >> cfg::L);
+
+        // ---- timer ----
+        if (emit != 0) {
+            timer_ = pace_m - 1;  // (M = 0 loads 65535)
+        } else if (timer_ != 0) {
+            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
         }
         e_prev_ = emit;
 
@@ -178,21 +141,6 @@ public:
     }
 
 private:
-    // a call of the settled or the sb_ path (e_prev = 0): the timer counts down, or at 0 the emit
-    // decision; a count loads the timer and leaves the settled state (e_prev != 0 in the next call)
-    step_t wait_or_count(const cfg::pace_t& pace_m) {
-        if (timer_ != 0) {
-            timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
-            return 0;
-        }
-        const step_t emit = emit_of_x();
-        if (emit != 0) {
-            timer_ = pace_m - 1;
-            st_ = false;
-        }
-        return emit;
-    }
-
     // the emit decision: sign and zero of X = (hi + cq) * 2^L + lo (trees, no chain)
     step_t emit_of_x() const {
         const bool hi_neg = hi_ < 0;
@@ -216,59 +164,9 @@ private:
         return h_neg ? step_t(-1) : step_t(1);
     }
 
-    // the taps and X of a call that is not settled (see st_); forms st_ and ax_ for the next call
-    void step_stages(const delta_t& delta, const cfg::add_t& add) {
-        // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
-        // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
-        // (one register of the two halves: the compare of both halves is one compare)
-        const backlog_t b_next = cat_s<cfg::W_HI, cfg::L>(cfg::hi_t(a_hi_ + a_cy_), a_lo_);
-        o_held_ = b_next == b_;  // (and thr_q_: the thr of the stage above)
-        b_ = b_next;
-        // (nc: no count left in the previous call and no carry pending, e_prev = cq = p_cy = 0;
-        // then the sums below are the plain registers: lo - 0 = lo in 0 .. 2^L - 1 (a_cy = 0),
-        // hi + 0, p_lo + 0 (p_cy = 0), p_hi + 0; and with delta = add = 0 too X holds (t = lo,
-        // cq = 0). The same values, without the wraps: issue 13, simulation speed)
-        const bool nc = e_prev_ == 0 && cq_ == 0 && p_cy_ == 0;
-        if (nc) {
-            if (!ax_) {  // (ax_: stage A equals X, a_cy = cq = 0: the same values; issue 13)
-                a_lo_ = lo_;
-                a_cy_ = 0;
-                a_hi_ = hi_;
-            }
-            p_lo_d_ = p_lo_;
-        } else {
-            const cfg::t_t al = cfg::t_t(cfg::t_t(lo_) - e_prev_);
-            a_lo_ = cfg::lo_t(al);
-            a_cy_ = cfg::cy_t(al >> cfg::L);
-            a_hi_ = cfg::hi_t(hi_ + cq_);
-            // paced: split counter fed by e(t-1); the lower half is delayed one call
-            p_lo_d_ = p_lo_;
-            p_hi_ = cfg::phi_t(p_hi_ + p_cy_);
-            const cfg::pt_t ps = cfg::pt_t(cfg::pt_t(p_lo_) + e_prev_);
-            p_lo_ = cfg::plo_t(ps);
-            p_cy_ = cfg::cy_t(ps >> cfg::LP);
-        }
-
-        // ---- X' = X + delta + add - e_prev (split, registered carry; add joins the lower half) ----
-        const bool din = delta == 0 && add == 0;
-        // st_ of the next call: this call settled the taps (nc, no input) on a stage A that
-        // already held X (ax_: the previous call had no input, so it left stage A equal to X,
-        // a_cy = cq), and no count leaves (e_prev = 0: formed with the timer below)
-        st_ = nc && din && ax_;
-        ax_ = din;
-        if (!(nc && din)) {
-            const cfg::t_t t = cfg::t_t(cfg::t_t(lo_) + cfg::t_t(cfg::lo_t(delta)) + cfg::t_t(add) - e_prev_);
-            const cfg::hi_t d_hi = cfg::hi_t(delta >> cfg::L);
-            hi_ = cfg::hi_t(hi_ + d_hi + cq_);
-            lo_ = cfg::lo_t(t);
-            cq_ = cfg::cq_t(t >> cfg::L);
-        }
-    }
-
     // ovs, first stage: the backlog tap B(t-3) (register b_, its halves) against thr (o_y1, o_y0,
     // o_cl)
     void ovs_stage1(cfg::thr_t thr) {
-        thr_q_ = thr;
         const cfg::hi_t b_hi = cfg::hi_t(b_ >> cfg::L);
         const cfg::lo_t b_lo = cfg::lo_t(b_);
         const cfg::thi_t t_hi = cfg::thi_t(thr >> cfg::L);
@@ -306,13 +204,6 @@ private:
     cfg::cy_t p_cy_;
     bool o_y1_, o_y0_, o_cl_;  // ovs first stage: the result for either lower carry, the carry
     bool ovs_st_;
-    cfg::thr_t thr_q_;  // thr of the last first-stage ovs compare (o_y1, o_y0, o_cl)
-    bool o_held_;       // b_* are those of that compare (unchanged since)
-    // clock enables of the taps and X (issue 13: simulation speed; ordinary registers in synthesis too)
-    bool st_;           // settled: e_prev = cq = p_cy = 0, a_* equal X (a_cy = 0), p_lo_d = p_lo, b_ = stage A
-    bool se_;           // st_'s registers but e_prev != 0, the count of a settled call (o_held_ since then)
-    bool sb_;           // the call after an se_ call, which left no carry (e_prev = cq = p_cy = 0, a_* equal X)
-    bool ax_;           // the previous call had delta = add = 0 (it left a_* equal to X, a_cy = cq)
 };
 
 }  // namespace lx

@@ -66,8 +66,6 @@ struct pulse_multiplier_cfg {
     using cnt_t = uint<W_CNT>;
     using nwide_t = sint<W_RAW + 1>;   // N + step before the wrap
     using carry_t = uint<1>;
-    static constexpr int QUIET = 3;    // quiet calls after which the pipeline holds (step())
-    using quiet_t = uint<2>;
 };
 static_assert(pulse_multiplier_cfg::W_OFFSET < pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO - 1 &&
                   pulse_multiplier_cfg::W_RAW + pulse_multiplier_cfg::W_RATIO + 1 <= pulse_multiplier_cfg::W_ACC,
@@ -117,7 +115,6 @@ public:
         x_ = 0;
         y_ = 0;
         acy_ = 0;
-        quiet_ = 0;
     }
 
     // Preset port (testbench aid, not in the RTL): N and the pair (R, OFF) are loaded, the
@@ -143,31 +140,7 @@ public:
         comp_ = ci_;
     }
 
-    // same: ratio and offset are those of the previous call (a caller's register stage that knows
-    // it, e.g. laserax_top::tick; false by default). In a quiet call pend_ = 0 says the pair of
-    // the previous call equalled (r_use_, off_tgt_), which a quiet call holds, so with the same
-    // pair the registered compare loads 0 again (issue 13: simulation speed; same outputs)
-    // (the wide registers by const reference: loaded where a path reads them, issue 13)
-    out_t step(step_t step, const ratio_t& ratio, const offset_t& offset, bool same = false) {
-        // quiet call: no count, the sequencer idle and none starting (pend_ = 0), after at least
-        // three such calls (quiet_). Then lo, N, T are held, inc = c = 0 since the first of them,
-        // hi, c2, T_hi_d since the second, comp_int since the third, comp since the fourth: every
-        // register holds but the registered compare (pend_) and delta = 0 (a clock enable of the
-        // rest; issue 13: simulation speed; same outputs). busy_ is not tested: quiet_ != 0 implies
-        // busy_ = 0 (a start sets busy_ in a call with pend_ = 1, which is not quiet, and every call
-        // of a running sequencer is not quiet either, so quiet_ is 0 until a quiet call after its end)
-        if (step == 0 && !pend_ && quiet_ == cfg::QUIET) {
-            if (!same) pend_ = ratio != r_use_ || offset != off_tgt_;
-            out_t q;
-            // (comp_int, which comp_ holds since the fourth quiet call: delta = 0. Read instead of
-            // comp_, which the full call reads after the test: GCC then loads comp_ ahead of the
-            // test and keeps it across the call; issue 13)
-            q.comp = ci_;
-            q.delta = 0;
-            return q;
-        }
-        // a quiet call (see above) counts towards quiet_
-        const bool quiet = step == 0 && !busy_ && !pend_;
+    out_t step(step_t step, const ratio_t& ratio, const offset_t& offset) {
         // ---- stage 4: outputs (comp_int of three calls ago) --------------------------------
         const delta_t delta_next = delta_t(ci_) - delta_t(comp_);
         const pos_t comp_next = ci_;
@@ -241,7 +214,6 @@ public:
         lo_ = lo_next;
         c_ = c_next;
         inc_ = inc_next;
-        quiet_ = !quiet ? cfg::quiet_t(0) : quiet_ == cfg::QUIET ? quiet_ : cfg::quiet_t(quiet_ + 1);
         return o;
     }
 
@@ -254,17 +226,32 @@ private:
         inc_wp_ = cfg::inc_t(r_int - r_all);
     }
 
-    // Quarter q of a + b (18 bits; the carry in is 0 for q = 0, else the carry out of quarter
-    // q - 1, registered in cy) into dst, inverted (~sum) with inv.
-    uint<cfg::W_ACC> add_quarter(uint<cfg::W_ACC> dst, uint<cfg::W_ACC> a, uint<cfg::W_ACC> b, int q,
-                                 cfg::carry_t& cy, bool inv = false) {
-        const int sh = q * cfg::W_TQ;
+    // Quarter Q of a + b (18 bits; the carry in is 0 for Q = 0, else the carry out of quarter
+    // Q - 1, registered in cy) into dst, inverted (~sum) with inv. Q is a template argument: every
+    // slice is a constant part-select (no run-time shifter).
+    template <int Q>
+    static void add_quarter(uint<cfg::W_ACC>& dst, const uint<cfg::W_ACC>& a, const uint<cfg::W_ACC>& b,
+                            cfg::carry_t& cy, bool inv) {
+        static_assert(Q >= 0 && Q < cfg::N_TQ, "add_quarter: quarter 0 .. N_TQ - 1");
+        constexpr int sh = Q * cfg::W_TQ;
         const uint<cfg::W_TQ + 1> sum =
-            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (q == 0 ? cfg::carry_t(0) : cy);
+            uint<cfg::W_TQ + 1>(cfg::tq_t(a >> sh)) + cfg::tq_t(b >> sh) + (Q == 0 ? cfg::carry_t(0) : cy);
         cy = cfg::carry_t(sum >> cfg::W_TQ);
         const cfg::tq_t r = inv ? cfg::tq_t(~cfg::tq_t(sum)) : cfg::tq_t(sum);
         const uint<cfg::W_ACC> mask = uint<cfg::W_ACC>(cfg::tq_t(~cfg::tq_t(0))) << sh;
-        return (dst & ~mask) | ((uint<cfg::W_ACC>(r) << sh) & mask);
+        dst = (dst & ~mask) | ((uint<cfg::W_ACC>(r) << sh) & mask);
+    }
+    // The quarter q (0 .. N_TQ - 1, a sequencer call number minus the first call of the addition)
+    // of the addition: a case over the four constant slices.
+    static void add_quarter_of(unsigned q, uint<cfg::W_ACC>& dst, const uint<cfg::W_ACC>& a,
+                               const uint<cfg::W_ACC>& b, cfg::carry_t& cy, bool inv) {
+        static_assert(cfg::N_TQ == 4, "add_quarter_of: four quarters");
+        switch (q) {
+            case 0: add_quarter<0>(dst, a, b, cy, inv); break;
+            case 1: add_quarter<1>(dst, a, b, cy, inv); break;
+            case 2: add_quarter<2>(dst, a, b, cy, inv); break;
+            default: add_quarter<3>(dst, a, b, cy, inv); break;
+        }
     }
 
     static cfg::carry_t carry32(cfg::lo_t a, cfg::lo_t b) {
@@ -298,7 +285,7 @@ private:
         // chain costs a LUT per bit; the inversion of a sum is free)
         const uacc_t t_x = (uacc_t(t_hi_) << cfg::R_FRAC) | uacc_t(t_lo_);
         if (cnt >= cfg::C_S0 && cnt < cfg::C_S0 + cfg::N_TQ)
-            ns_ = add_quarter(ns_, t_x, uacc_t(acc_t(off_tgt_)), cnt - cfg::C_S0, scy_, true);
+            add_quarter_of(unsigned(cnt - cfg::C_S0), ns_, t_x, uacc_t(acc_t(off_tgt_)), scy_, true);
         // serial signed multiply P = N0 * dR: bit i of N0 per call, the sign bit subtracts
         if (cnt >= cfg::C_MUL0 && cnt < cfg::C_MUL0 + cfg::MUL_STEPS) {
             const int i = cnt - cfg::C_MUL0;
@@ -314,8 +301,9 @@ private:
         // X = ~(~S + OFF_old) (calls C_X0..), then T_new = X + P (calls C_ADD0..), one 18-bit
         // quarter per call with a registered carry
         if (cnt >= cfg::C_X0 && cnt < cfg::C_X0 + cfg::N_TQ)
-            x_ = add_quarter(x_, ns_, uacc_t(acc_t(off_old_)), cnt - cfg::C_X0, acy_, true);
-        if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3) y_ = add_quarter(y_, x_, p_x, cnt - cfg::C_ADD0, acy_);
+            add_quarter_of(unsigned(cnt - cfg::C_X0), x_, ns_, uacc_t(acc_t(off_old_)), acy_, true);
+        if (cnt >= cfg::C_ADD0 && cnt <= cfg::C_ADD3)
+            add_quarter_of(unsigned(cnt - cfg::C_ADD0), y_, x_, p_x, acy_, false);
         if (cnt == cfg::K_REBASE) {
             const uacc_t tn = y_;
             t_lo_next = cfg::lo_t(tn);
@@ -357,7 +345,6 @@ private:
     cfg::carry_t scy_;
     uint<cfg::W_ACC> x_, y_;  // T + OFF' - OFF_old, then T_new (built a quarter per call)
     cfg::carry_t acy_;
-    cfg::quiet_t quiet_;  // consecutive quiet calls (no count, sequencer idle, none pending), up to QUIET
 };
 
 }  // namespace lx

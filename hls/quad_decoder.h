@@ -27,8 +27,6 @@ struct quad_decoder_cfg {
     using glitch_t = uint<W_GLITCH>;
     using spacing_t = uint<W_SPACING>;
     using errcnt_t = uint<W_ERRCNT>;
-    static constexpr unsigned IDLE_NONE = 16;  // idle_key_ of a decoder that is not idle
-    using idle_t = uint<5>;
 };
 
 class quad_decoder {
@@ -45,9 +43,6 @@ public:
         bool lerr = false;
         bool lerr_alarm = false;
         bool glitch_st = false;  // sticky: the A or B glitch filter suppressed a pulse
-        // idle call without a laser error (see step): every output but step, illegal and ovs (0
-        // here) equals that of the previous call, so a caller may keep those it holds
-        bool held = false;
     };
 
     quad_decoder() { reset(); }
@@ -67,45 +62,11 @@ public:
         ovs_st_ = false;
         lerr_alarm_ = false;
         glitch_st_ = false;
-        idle_key_ = cfg::IDLE_NONE;
     }
 
-    // same: glitch_n, min_spacing and clear are those of the previous call (a caller's register
-    // stage that knows it, e.g. laserax_top::tick; false by default): in an idle call the three
-    // filters are quiet (cnt = 0), so their pass decisions hold glitch_n <= 1 of the previous
-    // call, and hold() would load the same value (issue 13: simulation speed; same outputs)
-    // (the pins and the wide registers by const reference: loaded where a path reads them, issue 13)
-    out_t step(const bool& a, const bool& b, const bool& lerr, const cfg::glitch_t& glitch_n,
-               const cfg::spacing_t& min_spacing, bool clear, bool same = false) {
-        // the three filters settled at the pin levels (so A' = pa, B' = pb: no count, no glitch),
-        // the laser error filter at 0, primed and no clear: the call below holds every register but
-        // the filters' pass decisions and since / close (a clock enable of the rest; issue 13:
-        // simulation speed; same outputs). (idle_key_: the pin levels and clear = 0 of such a
-        // call, packed, while primed, the three filters quiet and E = 0; IDLE_NONE otherwise: one
-        // compare instead of eight tests)
-        if (idle_pack(a, b, lerr, clear) == idle_key_) {
-            if (!same) {
-                fa_.hold(glitch_n);
-                fb_.hold(glitch_n);
-                fe_.hold(glitch_n);
-            }
-            count_since(false, min_spacing);
-            out_t q;
-            q.step = 0;
-            q.raw_count = raw_;
-            q.illegal = false;
-            q.ovs = false;
-            q.err_cnt = err_cnt_;
-            q.illegal_st = illegal_st_;
-            q.ovs_st = ovs_st_;
-            q.lerr = false;
-            q.lerr_alarm = lerr_alarm_;
-            q.glitch_st = glitch_st_;
-            // lerr = 0 now and in the previous call (the laser error filter held its level 0):
-            // every register output is that of the previous call
-            q.held = true;
-            return q;
-        }
+    // One clock. The pins pass only into the three input filters (their synchronisers).
+    out_t step(bool a, bool b, bool lerr, const cfg::glitch_t& glitch_n, const cfg::spacing_t& min_spacing,
+               bool clear) {
         const input_filter<cfg::W_GLITCH>::out_t ra = fa_.step(a, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t rb = fb_.step(b, glitch_n);
         const input_filter<cfg::W_GLITCH>::out_t re = fe_.step(lerr, glitch_n);
@@ -149,9 +110,6 @@ public:
         if (ra.glitch || rb.glitch) glitch_st_ = true;
         if (lerr_now) lerr_alarm_ = true;
         raw_ = raw_ + step;
-        idle_key_ = (primed_ && fa_.quiet() && fb_.quiet() && fe_.quiet() && !fe_.level())
-                        ? cfg::idle_t(idle_pack(fa_.level(), fb_.level(), false, false))
-                        : cfg::idle_t(cfg::IDLE_NONE);
 
         out_t o;
         o.step = step;
@@ -168,11 +126,6 @@ public:
     }
 
 private:
-    // the pins and clear of a call packed into one word (the idle-call key, see idle_key_)
-    static unsigned idle_pack(bool a, bool b, bool lerr, bool clear) {
-        return unsigned(a) + unsigned(b) * 2u + unsigned(lerr) * 4u + unsigned(clear) * 8u;  // (bits: + is |)
-    }
-
     // the edge spacing counter (reset by a counted step, saturating) and the registered compare
     void count_since(bool counted, cfg::spacing_t min_spacing) {
         if (counted) {
@@ -190,10 +143,6 @@ private:
     cfg::spacing_t since_;
     bool close_;  // a step in the next call is closer than min_spacing (of this call)
     bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
-    // idle_pack(A, B, 0, 0) of the A / B filters' levels while primed_ and fa_, fb_, fe_ are quiet
-    // (settled at those levels) with E = 0, else IDLE_NONE (no pack equals it); formed after every
-    // full call (the only calls that change primed_ or a filter's quiet / level)
-    cfg::idle_t idle_key_;
 };
 
 }  // namespace lx

@@ -81,9 +81,6 @@ public:
         pos_t a = 0, b = 0, c = 0, z = 0, adj = 0;
         cfg::ph_t d = 0;
         bool homed = false;
-        bool held = false;  // quiet call (see step): every output but ostep (0 here) is the previous call's
-        // count call of step_count: every output but ostep, out_pos and mark is the previous call's
-        bool moved = false;
     };
 
     rephase() { reset(); }
@@ -119,121 +116,24 @@ public:
         z0_ = false;
         h_ = false;
         w_init_ = false;
-        qk_ = false;
-        qh_ = false;
         u_ = 0;
         len_ = 0;
         mark_ = false;
-        mt_u_ = 0;
-        mt_len_ = 0;
+        mp_ = false;
+        mn_ = false;
         b_ = 0;
         c_ = 0;
         z_ = 0;
     }
 
-    // same: period, mark_len and rehome are those of the previous call (a caller's register stage
-    // that knows it, e.g. laserax_top::tick; false by default; issue 13: simulation speed; same
-    // outputs)
+    // One clock (DESIGN 4.5, Hardware form).
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
-               period_t mark_len, bool same = false) {
-        out_t o;
-        const taps_t t = step_taps(pstep, sw, sw_valid, rehome, unhome, period, mark_len, same, o);
-        if (t.held || t.moved) {  // (else step_run wrote every output to o)
-            o = outputs(t.ostep, t.mark, d_);
-            o.held = t.held;
-            o.moved = t.moved;
-        }
-        return o;
-    }
-
-    // The outputs that every call forms, with the flags held and moved (see out_t). The others
-    // (stage, a, b, c, z, adj, d, homed) change only in a call of step_run, which writes every
-    // output to `run` (a call with held or moved does not write it). step() is this call with
-    // the outputs of a held or moved call formed from the registers; a caller that keeps the
-    // outputs of the previous call (laserax_top) reads only these (issue 13: simulation speed)
-    struct taps_t {
-        step_t ostep;
-        pos_t out_pos;
-        bool mark;
-        bool held;
-        bool moved;
-    };
-    // (pstep, the switch samples and the wide registers by const reference: loaded where a path
-    // reads them, issue 13)
-    taps_t step_taps(const step_t& pstep, const bool& sw, const bool& sw_valid, bool rehome, bool unhome,
-                     const period_t& period, const period_t& mark_len, bool same, out_t& run) {
-        const cfg::p_t pp = period;
-        // 0. quiet call: no real count, no extra count pending (lag = 0), no A, first-count or d
-        //    load in flight, no switch rise, no leave. Every register below then holds except
-        //    the mark tests, in stage 2 t, v, k, bs, at_last (formed from held registers and P)
-        //    and the switch samples (a clock enable of the rest; issue 13: simulation speed; same
-        //    outputs)
-        //    (qk_: the register part of the condition, lag = 0, w_init, !dnew, !first)
-        //    (with same, qh_ implies qk_ and !rehome: the previous call was quiet, and qk_
-        //    changes only in step_run and reset, which clear qh_)
-        if (pstep == 0 && ((same && qh_) || (qk_ && !rehome)) && !unhome && !(sw && !sw_prev_ && sw_seen_)) {
-            // qh_: the previous call was quiet too, outside stage 2: the mark tests then hold
-            // (formed from u and L, held), and outside stage 2 they are all that quiet_forms forms
-            if (!qh_) quiet_forms(pp);
-            sw_prev_ = sw;
-            sw_seen_ = sw_valid;
-            taps_t q;
-            q.ostep = 0;
-            q.out_pos = out_pos_;
-            q.mark = stage_ == cfg::STAGE_HOMED && mark_;  // (no count: the mark register itself)
-            q.held = true;
-            q.moved = false;
-            return q;
-        }
-        qh_ = false;
-        // 0b. count call in stage 1 or 3 with nothing in flight (qk_), no leave and, in stage 1, no
-        //     switch rise: step_run would move only the taps, w, u / the mark and the registers
-        //     formed from them (no extra count, no stage change; issue 13: simulation speed; same
-        //     outputs)
-        if (pstep != 0 && qk_ && !rehome && !unhome && stage_ != cfg::STAGE_WINDOW &&
-            !(stage_ == cfg::STAGE_UNHOMED && sw && !sw_prev_ && sw_seen_))
-            return step_count(pstep, sw, sw_valid, pp);
-        run = step_run(pstep, sw, sw_valid, rehome, unhome, period, mark_len);
-        taps_t r;
-        r.ostep = run.ostep;
-        r.out_pos = run.out_pos;
-        r.mark = run.mark;
-        r.held = false;
-        r.moved = false;
-        return r;
-    }
-
-private:
-    // The window state (tr, fresh, num, k, at_last; t, v and bs already so, see step_run) is read
-    // only in stage 2, and every entry to stage 2 is the capture call, a call of step_run in stage
-    // 1, which resets tr, fresh and num (4a) and forms k and at_last at its end whatever they held
-    // before. The model therefore forms them in stage-2 calls only (step_run forms them in every
-    // call, as rtl_ref/ does in every call): a quiet call or a count of step_count, which run in
-    // stage 1 or 3, leaves them as they are (issue 13: simulation speed; same outputs).
-
-    // the registers a quiet call forms from held registers and P (a second quiet call outside
-    // stage 2 forms the same values: qh_)
-    void quiet_forms(cfg::p_t pp) {
-        if (stage_ == cfg::STAGE_WINDOW) {  // as step_run: from num, k, d before the call
-            t_ = cfg::br_t(cfg::br_t(num_) + k_);
-            v_ = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_));
-            k_ = cfg::br_t(cfg::br_t(d_) - cfg::br_t(pp));
-            form_bs(a_, fwd_, pp);
-            at_last_ = tr_ == tr_t(pp) - 1;
-        }
-        mark_tests(len_);
-        qh_ = stage_ != cfg::STAGE_WINDOW;  // (stage 2: bs needs three calls to settle)
-    }
-
-    // one call that is not quiet (the whole step)
-    LASERAX_COLD out_t step_run(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
-                   period_t mark_len) {
+               period_t mark_len) {
         const cfg::p_t pp = period;
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
         const bool leave = (unhome || rehome) && stage_ != cfg::STAGE_UNHOMED;
         const bool in2 = stage_ == cfg::STAGE_WINDOW && !leave;
         const bool in3 = stage_ == cfg::STAGE_HOMED && !leave;
-        const cfg::stage_id stage_prev = stage_;
         const cfg::p_t len_prev = len_;
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
 
@@ -279,12 +179,9 @@ private:
         const bool homing = in2 && s > 0 && at_last_;  // tr' == P
         bool back = false;
         // t = num + d - P and v = num - d are formed from the registers num, k, d in every call
-        // (so after a count they are exact again in the next call, before the next count). The
-        // model forms them in stage-2 calls only: nothing reads them elsewhere (stage 2 starts
-        // fresh, and the first count loads them), the RTL forms them in every call
-        const bool form_tv = stage_ == cfg::STAGE_WINDOW;
-        const cfg::br_t t_rc = form_tv ? cfg::br_t(cfg::br_t(num_) + k_) : t_;
-        const cfg::br_t v_rc = form_tv ? cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg)) : v_;
+        // (so after a count they are exact again in the next call, before the next count)
+        const cfg::br_t t_rc = cfg::br_t(cfg::br_t(num_) + k_);
+        const cfg::br_t v_rc = cfg::br_t(cfg::br_t(num_) - cfg::br_t(d_reg));
         if (stage_ == cfg::STAGE_UNHOMED) {
             tr_ = 0;
             fresh_ = true;
@@ -356,7 +253,7 @@ private:
         // k = d - P from the register d (before this call's load): valid from the third call
         // after A, and the first carry can come no earlier (counts >= 2 calls apart)
         k_ = cfg::br_t(cfg::br_t(d_reg) - cfg::br_t(pp));
-        if (stage_prev == cfg::STAGE_WINDOW) form_bs(a_prev, fwd_prev, pp);
+        form_bs(a_prev, fwd_prev, pp);
         at_last_ = tr_ == tr_t(pp) - 1;
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
@@ -371,23 +268,20 @@ private:
         out_pos_ = out_pos_ + ostep;
 
         // 6. reference mark: u = dir * (paced - B) from homing on, mark = u in [0, L]
-        // (the test for a count is made on u and L of the previous call, mt_u / mt_len: they do
-        // not change in the call before a count; rtl_ref/ registers that test, mp_q / mn_q.
-        // Without a count it is the mark register itself, which in stage 3 is the test of u)
-        const bool in_rng = s > 0   ? (mt_u_ >= -1 && mt_u_ < pos_t(mt_len_))
-                            : s < 0 ? (mt_u_ >= 1 && mt_u_ <= pos_t(pos_t(mt_len_) + 1))
-                                    : mark_;
+        // (the tests for a count are registers, mp (forward) and mn (backward), formed in the
+        // previous call from u and L, which do not change in the call before a count. Without a
+        // count it is the mark register itself, which in stage 3 is the test of u)
+        const bool in_rng = s > 0 ? mp_ : s < 0 ? mn_ : mark_;
         mark_tests(len_prev);  // from u and L before this call's update
         u_ = homing ? pos_t(0) : pos_t(u_ + s);
         const bool mark = homing || (in3 && in_rng);
         mark_ = mark;
 
-        const out_t o = outputs(ostep, mark, dnew_ ? d_of(wa_, dm_, pp) : d_);
-        qk_ = lag_ == 0 && w_init_ && !dnew_ && !first_;
-        return o;
+        return outputs(ostep, mark, dnew_ ? d_of(wa_, dm_, pp) : d_);
     }
 
-    // the outputs of a call from the registers after it (step_run, step_count)
+private:
+    // the outputs of a call from the registers after it (step)
     out_t outputs(step_t ostep, bool mark, cfg::ph_t d) const {
         out_t o;
         o.ostep = ostep;
@@ -405,7 +299,7 @@ private:
     }
 
     // 3. the phase w of the output position moved by ostep (-1..1) from w0 (w, or P/8 before the
-    //    first call), with its wrap flags (step_run, step_count)
+    //    first call), with its wrap flags (step)
     void move_w(step_t ostep, cfg::ph_t w0, cfg::p_t pp) {
         using x_t = sint<cfg::W_P + 2>;
         const x_t px = x_t(pp);
@@ -433,34 +327,6 @@ private:
         w_init_ = true;
     }
 
-    // a count call (pstep != 0) in stage 1 or 3 with lag = 0, w_init, no d load and no first count
-    // (qk_), no leave and no capture: step_run with dq = 0, ostep = sgn(pstep), no stage change and
-    // no window state (stage 1 or 3: see quiet_forms); t, v, d, lag, adj hold
-    taps_t step_count(step_t pstep, bool sw, bool sw_valid, cfg::p_t pp) {
-        const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
-        paced_ = paced_ + pstep;
-        fwd_last_ = pstep > 0;
-        const step_t ostep = pstep > 0 ? step_t(1) : step_t(-1);
-        move_w(ostep, w_, pp);
-        sw_prev_ = sw;
-        sw_seen_ = sw_valid;
-        out_pos_ = out_pos_ + ostep;
-        const bool in_rng = s > 0 ? (mt_u_ >= -1 && mt_u_ < pos_t(mt_len_))
-                                  : (mt_u_ >= 1 && mt_u_ <= pos_t(pos_t(mt_len_) + 1));
-        mark_tests(len_);
-        u_ = pos_t(u_ + s);
-        const bool mark = stage_ == cfg::STAGE_HOMED && in_rng;
-        mark_ = mark;
-
-        taps_t o;
-        o.ostep = ostep;
-        o.out_pos = out_pos_;
-        o.mark = mark;
-        o.held = false;
-        o.moved = true;
-        return o;
-    }
-
     using tr_t = cfg::tr_t;
 
     // d from the phase w at A: (7P/8 - ph) mod P = (P - w) mod P forward,
@@ -477,10 +343,8 @@ private:
 
     // bs = A + dir*P (register of the call, used at homing): the low W_CZ bits now, the high
     // part with the low part's carry of the previous call (bs_c), as x + (y ^ bwd) + bwd; bs_pm
-    // is the high part of bs before the call + dir (DESIGN 4.5 "Hardware form")
-    // The model forms them in stage-2 calls only: only the homing call reads them, and the three
-    // calls before it, whose inputs they are, are stage-2 calls (homing needs tr = P - 1 >= 7);
-    // rtl_ref/ forms them in every call, the same values at homing
+    // is the high part of bs before the call + dir (DESIGN 4.5 "Hardware form"); formed in every
+    // call from the registers A and dir (read only by the homing call)
     void form_bs(const pos_t& a, bool fwd, cfg::p_t pp) {
         using l1_t = uint<cfg::W_CZ + 1>;
         const cfg::czl_t ones = cfg::czl_t((1u << cfg::W_CZ) - 1u);
@@ -493,12 +357,11 @@ private:
         bs_ = pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
-    // the mark tests for a count in the next call are those of u and L of this call, before its
-    // update (rtl_ref/ registers the two tests, mp_q / mn_q; the model keeps u and L and tests
-    // them when a count reads them)
+    // the mark tests for a count in the next call, from u and L of this call before its update
+    // (rtl_ref/: mp_q, mn_q): u in [-1, L - 1] for a forward count, [1, L + 1] for a backward one
     void mark_tests(cfg::p_t len) {
-        mt_u_ = u_;
-        mt_len_ = len;
+        mp_ = u_ >= -1 && u_ < pos_t(len);
+        mn_ = u_ >= 1 && u_ <= pos_t(pos_t(len) + 1);
     }
 
     // C / Z at homing: b + dir*y (y < 2^W_CZ) as a W_CZ-bit add; the high part is b's, or b's + dir
@@ -531,17 +394,10 @@ private:
     cfg::lag_t lag_;
     cfg::ph_t w_;
     bool t1_, z0_, h_, w_init_;
-    // lag_ == 0 && w_init_ && !dnew_ && !first_, formed at the end of every full call (step_run,
-    // the only one that changes them) and in reset: the register part of the quiet-call test
-    bool qk_;
-    // the previous call was quiet, outside stage 2: its quiet_forms hold (cleared in every call
-    // that is not quiet and in reset)
-    bool qh_;
     pos_t u_;
     cfg::p_t len_;
     bool mark_;        // the mark
-    pos_t mt_u_;       // u and L of the previous call (the mark tests of a count)
-    cfg::p_t mt_len_;
+    bool mp_, mn_;     // the mark tests of a forward / backward count in the next call
     pos_t b_, c_, z_;
 };
 
