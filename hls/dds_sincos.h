@@ -53,8 +53,6 @@ public:
         dac_t cos = 0;
     };
 
-    dds_sincos() { reset(); }
-
     // Resets the phase and the output registers; the table RAM keeps its contents.
     void reset() {
         q_ = 0;
@@ -116,11 +114,12 @@ public:
     }
 
 private:
-    cfg::quad_t q_;
-    cfg::r_t r_;
-    cfg::r_t qtr_prev_;  // P/4 of the previous call: the mirror address of this call's codes
-    dac_t s1_, c1_;    // read stage: codes of the phase before the call
-    dac_t sin_, cos_;  // output registers
+    // (the initialisers are the reset values, as in reset(), which keeps the table)
+    cfg::quad_t q_ = 0;
+    cfg::r_t r_ = 0;
+    cfg::r_t qtr_prev_ = 0;  // P/4 of the previous call: the mirror address of this call's codes
+    dac_t s1_ = 0, c1_ = 0;    // read stage: codes of the phase before the call
+    dac_t sin_ = 0, cos_ = 0;  // output registers
     tbl_word_t tbl_[cfg::TBL_DEPTH] = {LASERAX_DDS_TABLE_DEFAULT};
 #pragma HLS BIND_STORAGE variable = tbl_ type = ram_t2p impl = bram
 };

@@ -41,6 +41,7 @@
 #define LASERAX_HLS_ERROR_MAP_H
 
 #include "hls/axis_config.h"
+#include "hls/lx_ram.h"
 
 namespace lx {
 
@@ -144,18 +145,6 @@ public:
         bool cfg_err = false;         // map_en and the selected bank's geometry is invalid
     };
 
-    error_map() {
-        LX_LOOP(tbl_init) for (int a = 0; a < cfg::HALF_DEPTH; ++a) {
-            tbl0e_[a] = 0;
-            tbl0o_[a] = 0;
-            tbl1e_[a] = 0;
-            tbl1o_[a] = 0;
-        }
-        LX_LOOP(wq_init) for (int k = 0; k < cfg::W_DLY; ++k) wq_[k] = wr_t{};
-        wi_ = 0;
-        reset();
-    }
-
     // Reset of the pipeline's registers (not of the table RAM, not of the write port's delay line).
     void reset() {
         a_ = st_a{};
@@ -225,11 +214,11 @@ public:
         // ---- R (ph = PH_R): the two reads (one per RAM of the selected bank) --------------------
         if (ph == cfg::PH_R) {
             if (c_.bank) {
-                rd_.we = tbl1e_[c_.ea.to_uint()];
-                rd_.wo = tbl1o_[c_.oa.to_uint()];
+                rd_.we = tbl1e_.w[c_.ea.to_uint()];
+                rd_.wo = tbl1o_.w[c_.oa.to_uint()];
             } else {
-                rd_.we = tbl0e_[c_.ea.to_uint()];
-                rd_.wo = tbl0o_[c_.oa.to_uint()];
+                rd_.we = tbl0e_.w[c_.ea.to_uint()];
+                rd_.wo = tbl0o_.w[c_.oa.to_uint()];
             }
             rd_.u = c_.u;
             rd_.lsb = c_.lsb;
@@ -384,27 +373,27 @@ private:
         const unsigned ha = cfg::haddr_t(w.addr >> 1).to_uint();
         const bool odd = (w.addr & 1) != 0;
         if (w.bank) {
-            if (odd) tbl1o_[ha] = w.data;
-            else tbl1e_[ha] = w.data;
+            if (odd) tbl1o_.w[ha] = w.data;
+            else tbl1e_.w[ha] = w.data;
         } else {
-            if (odd) tbl0o_[ha] = w.data;
-            else tbl0e_[ha] = w.data;
+            if (odd) tbl0o_.w[ha] = w.data;
+            else tbl0e_.w[ha] = w.data;
         }
     }
 
     // two banks, each an even and an odd RAM (TBL_DEPTH/2 x 24 bits, simple dual port): per call one
     // read of each RAM of the selected bank, at most one write into one RAM of the other bank
     static_assert(cfg::N_BANKS == 2, "error_map: banks tbl0*, tbl1*");
-    cfg::word_t tbl0e_[cfg::HALF_DEPTH];
-#pragma HLS BIND_STORAGE variable = tbl0e_ type = ram_s2p impl = bram
-    cfg::word_t tbl0o_[cfg::HALF_DEPTH];
-#pragma HLS BIND_STORAGE variable = tbl0o_ type = ram_s2p impl = bram
-    cfg::word_t tbl1e_[cfg::HALF_DEPTH];
-#pragma HLS BIND_STORAGE variable = tbl1e_ type = ram_s2p impl = bram
-    cfg::word_t tbl1o_[cfg::HALF_DEPTH];
-#pragma HLS BIND_STORAGE variable = tbl1o_ type = ram_s2p impl = bram
-    wr_t wq_[cfg::W_DLY];  // the write port's delay line (slot wi_: the write of W_DLY calls ago)
-    cfg::wqi_t wi_;
+    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl0e_;  // power-up: zero (RAM INIT)
+#pragma HLS BIND_STORAGE variable = tbl0e_.w type = ram_s2p impl = bram
+    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl0o_;  // power-up: zero (RAM INIT)
+#pragma HLS BIND_STORAGE variable = tbl0o_.w type = ram_s2p impl = bram
+    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl1e_;  // power-up: zero (RAM INIT)
+#pragma HLS BIND_STORAGE variable = tbl1e_.w type = ram_s2p impl = bram
+    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl1o_;  // power-up: zero (RAM INIT)
+#pragma HLS BIND_STORAGE variable = tbl1o_.w type = ram_s2p impl = bram
+    wr_t wq_[cfg::W_DLY] = {};  // the write port's delay line (slot wi_: the write of W_DLY calls ago)
+    cfg::wqi_t wi_ = 0;
     st_a a_;
     st_b b_;
     st_c c_;
@@ -412,8 +401,8 @@ private:
     st_d d_;
     st_m m_;
     st_g g_;
-    cfg::phm_t ph_;  // phase of this call in the sample period (0: sample call)
-    cfg::corr_t corr_;
+    cfg::phm_t ph_ = 0;  // phase of this call in the sample period (0: sample call)
+    cfg::corr_t corr_ = 0;
 };
 
 }  // namespace lx

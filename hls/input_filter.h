@@ -37,17 +37,7 @@ public:
         bool glitch = false;  // pulse: a change shorter than max(N,1) calls was suppressed
     };
 
-    input_filter() { reset(); }
-
-    void reset() {
-        s1_ = false;
-        s2_ = false;
-        f_ = false;
-        valid_ = false;
-        cnt_ = 0;
-        fill_ = 0;
-        ready_ = false;
-    }
+    void reset() { *this = input_filter{}; }  // every register to its initialiser (the reset value)
 
     const bool& level() const { return f_; }
     const bool& valid() const { return valid_; }  // (level(), valid(): the registers f, valid of the last out_t)
@@ -84,10 +74,13 @@ public:
     }
 
 private:
-    bool s1_, s2_, f_, valid_;
-    bool ready_;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
-    cnt_t cnt_;
-    typename cfg::fill_t fill_;
+    bool s1_ = false;
+    bool s2_ = false;
+    bool f_ = false;
+    bool valid_ = false;
+    bool ready_ = false;  // the next call passes a differing sample (cnt + 1 >= max(N, 1), N of this call)
+    cnt_t cnt_ = 0;
+    typename cfg::fill_t fill_ = 0;
 };
 
 }  // namespace lx

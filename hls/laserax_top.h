@@ -147,7 +147,7 @@ static_assert(error_map_cfg::W_CDELTA <= output_pacer_cfg::W_ADD, "the map delta
 
 // Configuration check (DESIGN §4.7), every call, of the registers in force (the values presented
 // in the previous call: the register stage; hardware makes it on the presented values, registered).
-inline bool axis_config_ok(const axis_regs& r) {
+inline LX_CONSTEXPR bool axis_config_ok(const axis_regs& r) {
     const bool period_ok = r.period >= axis_widths::P_MIN && r.period <= axis_widths::P_MAX &&
                            (r.period & (axis_widths::P_STEP - 1)) == 0;
     const bool width_ok = r.dac_width >= axis_widths::W_DAC_MIN && r.dac_width <= axis_widths::W_DAC_MAX;
@@ -177,8 +177,10 @@ inline void quad_levels(pos_t pos, bool& qa, bool& qb) {
 
 class laserax_top {
 public:
-    laserax_top() { reset(); }
-
+    // No constructor: every member starts at its initialiser (constant initialisation: the
+    // static top of hls/laserax_axil.cpp has no first-call code; CTest hls_const_init). reset()
+    // is the safe state of the chain, which leaves the register stage, the held compensation
+    // registers and the RAMs (DDS table, error-map tables and write delay line) as they are.
     void reset() {
         swf_.reset();
         dec_.reset();
@@ -395,8 +397,8 @@ private:
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
     // delta, rephase ostep / out_pos / mark / homed)
-    axis_out out_;
-    bool lerr_q_;  // decoder lerr (the rephase's unhome), not an output
+    axis_out out_{};
+    bool lerr_q_ = false;  // decoder lerr (the rephase's unhome), not an output
     // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
     // mark twice), in axis_out's order
     struct dig_tap {
@@ -432,7 +434,7 @@ private:
     bool fast_ = false;     // the next tick runs the blocks only (see tick)
 #endif
 
-    static reg_check check(const axis_regs& r) {
+    static LX_CONSTEXPR reg_check check(const axis_regs& r) {
         reg_check c;
         c.ok = axis_config_ok(r);
         // read only while ok, i.e. with dac_width in W_DAC_MIN..W_DAC_MAX (the shift is defined)

@@ -180,6 +180,16 @@ template <int W> using uint = fixed_int<W, false>;
 #define LASERAX_FLATTEN
 #endif
 
+// LX_CONSTEXPR: constexpr with the own integer back end, whose operations are constant
+// expressions, so that a function that forms an initial value (e.g. the configuration check of the
+// reset registers) leaves the static top constant-initialised (no run-time constructor, CTest
+// hls_const_init); empty with the vendor types, whose operators are not constexpr.
+#if defined(LASERAX_USE_AP_TYPES) || defined(LASERAX_USE_AC_TYPES)
+#define LX_CONSTEXPR
+#else
+#define LX_CONSTEXPR constexpr
+#endif
+
 // LX_LOOP(name) names the loop that follows it for Vitis HLS, whose reports and directives refer
 // to a loop by its label. Only the synthesis front end sees the label: GCC and Clang warn of a
 // label no goto uses (-Wunused-label, an error in this build), so the C++ build drops it.

@@ -67,27 +67,7 @@ public:
         bool ovs_st = false;
     };
 
-    output_pacer() { reset(); }
-
-    void reset() {
-        lo_ = 0;
-        hi_ = 0;
-        cq_ = 0;
-        e_prev_ = 0;
-        timer_ = 0;
-        a_hi_ = 0;
-        a_lo_ = 0;
-        a_cy_ = 0;
-        b_ = 0;
-        p_lo_ = 0;
-        p_lo_d_ = 0;
-        p_hi_ = 0;
-        p_cy_ = 0;
-        o_y1_ = false;
-        o_y0_ = false;
-        o_cl_ = false;
-        ovs_st_ = false;
-    }
+    void reset() { *this = output_pacer{}; }  // every register to its initialiser (the reset value)
 
     out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
                bool clear) {
@@ -189,21 +169,23 @@ private:
         o_cl_ = cl;
     }
 
-    cfg::lo_t lo_;       // X = (hi + cq) * 2^L + lo
-    cfg::hi_t hi_;
-    cfg::cq_t cq_;
-    step_t e_prev_;      // emitted count of the previous call (pstep register)
-    cfg::pace_t timer_;
-    cfg::hi_t a_hi_;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)
-    cfg::lo_t a_lo_;
-    cfg::cy_t a_cy_;
-    backlog_t b_;        // backlog tap, stage B: B(t-2), the halves hi (signed) * 2^L + lo
-    cfg::plo_t p_lo_;    // paced tap: split counter
-    cfg::plo_t p_lo_d_;
-    cfg::phi_t p_hi_;
-    cfg::cy_t p_cy_;
-    bool o_y1_, o_y0_, o_cl_;  // ovs first stage: the result for either lower carry, the carry
-    bool ovs_st_;
+    cfg::lo_t lo_ = 0;       // X = (hi + cq) * 2^L + lo
+    cfg::hi_t hi_ = 0;
+    cfg::cq_t cq_ = 0;
+    step_t e_prev_ = 0;      // emitted count of the previous call (pstep register)
+    cfg::pace_t timer_ = 0;
+    cfg::hi_t a_hi_ = 0;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)
+    cfg::lo_t a_lo_ = 0;
+    cfg::cy_t a_cy_ = 0;
+    backlog_t b_ = 0;        // backlog tap, stage B: B(t-2), the halves hi (signed) * 2^L + lo
+    cfg::plo_t p_lo_ = 0;    // paced tap: split counter
+    cfg::plo_t p_lo_d_ = 0;
+    cfg::phi_t p_hi_ = 0;
+    cfg::cy_t p_cy_ = 0;
+    bool o_y1_ = false;  // ovs first stage: the result for either lower carry, the carry
+    bool o_y0_ = false;
+    bool o_cl_ = false;
+    bool ovs_st_ = false;
 };
 
 }  // namespace lx

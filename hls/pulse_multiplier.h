@@ -83,39 +83,7 @@ public:
         delta_t delta = 0;
     };
 
-    pulse_multiplier() { reset(); }
-
-    void reset() {
-        n_ = 0;
-        r_use_ = 0;
-        off_tgt_ = 0;
-        lo_ = 0;
-        c_ = 0;
-        inc_ = 0;
-        load_wrap_increments();  // of R = 0
-        hi_ = 0;
-        c2_ = 0;
-        ci_ = 0;
-        comp_ = 0;
-        t_lo_ = 0;
-        t_hi_ = 0;
-        t_hi_d_ = 0;
-        busy_ = false;
-        pend_ = false;
-        cnt_ = 0;
-        n0_ = 0;
-        dr_ = 0;
-        pp_ = 0;
-        pl_ = 0;
-        r_old_ = 0;
-        drc_ = 0;
-        off_old_ = 0;
-        ns_ = 0;
-        scy_ = 0;
-        x_ = 0;
-        y_ = 0;
-        acy_ = 0;
-    }
+    void reset() { *this = pulse_multiplier{}; }  // every register to its initialiser (the reset value)
 
     // Preset port (testbench aid, not in the RTL): N and the pair (R, OFF) are loaded, the
     // sequencer is idle, acc = N * R and T = OFF (formed here with a multiply: not hardware), and
@@ -316,35 +284,38 @@ private:
     }
 
     // stage 1
-    raw_t n_;
-    ratio_t r_use_;
-    offset_t off_tgt_;
-    cfg::lo_t lo_;
-    cfg::carry_t c_;
-    cfg::inc_t inc_;
-    cfg::inc_t inc_wp_;  // increment at a wrap of N with step +1, formed when the ratio is loaded
+    raw_t n_ = 0;
+    ratio_t r_use_ = 0;
+    offset_t off_tgt_ = 0;
+    cfg::lo_t lo_ = 0;
+    cfg::carry_t c_ = 0;
+    cfg::inc_t inc_ = 0;
+    cfg::inc_t inc_wp_ = 0;  // increment at a wrap of N with step +1, formed when the ratio is loaded
     // stages 2..4
-    cfg::hi_t hi_;
-    cfg::carry_t c2_;
-    pos_t ci_;
-    pos_t comp_;
+    cfg::hi_t hi_ = 0;
+    cfg::carry_t c2_ = 0;
+    pos_t ci_ = 0;
+    pos_t comp_ = 0;
     // base T (two halves) and the delayed high half used by stage 3
-    cfg::lo_t t_lo_;
-    cfg::hi_t t_hi_, t_hi_d_;
+    cfg::lo_t t_lo_ = 0;
+    cfg::hi_t t_hi_ = 0;
+    cfg::hi_t t_hi_d_ = 0;
     // re-base sequencer
-    bool busy_, pend_;
-    cfg::cnt_t cnt_;
-    raw_t n0_;
-    cfg::dratio_t dr_;
-    ratio_t r_old_;        // the target ratio before the start
-    cfg::carry_t drc_;     // carry of the low dR half
-    cfg::pp_t pp_;
-    cfg::lo_t pl_;
-    offset_t off_old_;
-    uint<cfg::W_ACC> ns_;  // ~S, S = T + OFF' (built a quarter per call)
-    cfg::carry_t scy_;
-    uint<cfg::W_ACC> x_, y_;  // T + OFF' - OFF_old, then T_new (built a quarter per call)
-    cfg::carry_t acy_;
+    bool busy_ = false;
+    bool pend_ = false;
+    cfg::cnt_t cnt_ = 0;
+    raw_t n0_ = 0;
+    cfg::dratio_t dr_ = 0;
+    ratio_t r_old_ = 0;        // the target ratio before the start
+    cfg::carry_t drc_ = 0;     // carry of the low dR half
+    cfg::pp_t pp_ = 0;
+    cfg::lo_t pl_ = 0;
+    offset_t off_old_ = 0;
+    uint<cfg::W_ACC> ns_ = 0;  // ~S, S = T + OFF' (built a quarter per call)
+    cfg::carry_t scy_ = 0;
+    uint<cfg::W_ACC> x_ = 0;  // T + OFF' - OFF_old, then T_new (built a quarter per call)
+    uint<cfg::W_ACC> y_ = 0;
+    cfg::carry_t acy_ = 0;
 };
 
 }  // namespace lx

@@ -45,24 +45,7 @@ public:
         bool glitch_st = false;  // sticky: the A or B glitch filter suppressed a pulse
     };
 
-    quad_decoder() { reset(); }
-
-    void reset() {
-        fa_.reset();
-        fb_.reset();
-        fe_.reset();
-        pa_ = false;
-        pb_ = false;
-        primed_ = false;
-        raw_ = 0;
-        err_cnt_ = 0;
-        since_ = cfg::SINCE_MAX;
-        close_ = false;  // since + 1 = 65536 is never below min_spacing
-        illegal_st_ = false;
-        ovs_st_ = false;
-        lerr_alarm_ = false;
-        glitch_st_ = false;
-    }
+    void reset() { *this = quad_decoder{}; }  // every register to its initialiser (the reset value)
 
     // One clock. The pins pass only into the three input filters (their synchronisers).
     out_t step(bool a, bool b, bool lerr, const cfg::glitch_t& glitch_n, const cfg::spacing_t& min_spacing,
@@ -137,12 +120,18 @@ private:
     }
 
     input_filter<cfg::W_GLITCH> fa_, fb_, fe_;
-    bool pa_, pb_, primed_;
-    raw_t raw_;
-    cfg::errcnt_t err_cnt_;
-    cfg::spacing_t since_;
-    bool close_;  // a step in the next call is closer than min_spacing (of this call)
-    bool illegal_st_, ovs_st_, lerr_alarm_, glitch_st_;
+    bool pa_ = false;
+    bool pb_ = false;
+    bool primed_ = false;
+    raw_t raw_ = 0;
+    cfg::errcnt_t err_cnt_ = 0;
+    cfg::spacing_t since_ = cfg::SINCE_MAX;
+    bool close_ = false;  // a step in the next call is closer than min_spacing (of this call); reset:
+                          // since + 1 = 65536 is never below min_spacing
+    bool illegal_st_ = false;
+    bool ovs_st_ = false;
+    bool lerr_alarm_ = false;
+    bool glitch_st_ = false;
 };
 
 }  // namespace lx

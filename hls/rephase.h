@@ -83,48 +83,7 @@ public:
         bool homed = false;
     };
 
-    rephase() { reset(); }
-
-    void reset() {
-        stage_ = cfg::STAGE_UNHOMED;
-        paced_ = 0;
-        out_pos_ = 0;
-        adj_ = 0;
-        fwd_last_ = true;
-        sw_prev_ = false;
-        sw_seen_ = false;
-        a_ = 0;
-        bs_ = 0;
-        bs_c_ = false;
-        bs_pm_ = 0;
-        fwd_ = true;
-        d_ = 0;
-        wa_ = 0;
-        dm_ = 0;
-        dnew_ = false;
-        k_ = 0;
-        tr_ = 0;
-        at_last_ = false;
-        fresh_ = false;
-        first_ = false;
-        num_ = 0;
-        t_ = 0;
-        v_ = 0;
-        lag_ = 0;
-        w_ = 0;
-        t1_ = false;
-        z0_ = false;
-        h_ = false;
-        w_init_ = false;
-        u_ = 0;
-        len_ = 0;
-        mark_ = false;
-        mp_ = false;
-        mn_ = false;
-        b_ = 0;
-        c_ = 0;
-        z_ = 0;
-    }
+    void reset() { *this = rephase{}; }  // every register to its initialiser (the reset value)
 
     // One clock (DESIGN 4.5, Hardware form).
     out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
@@ -376,29 +335,44 @@ private:
         return pos_t((uint<axis_widths::W_POS>(hi) << cfg::W_CZ) | uint<axis_widths::W_POS>(cfg::czl_t(lo)));
     }
 
-    cfg::stage_id stage_;
-    pos_t paced_, out_pos_, adj_;
-    bool fwd_last_, sw_prev_, sw_seen_;
-    pos_t a_, bs_;
-    bool bs_c_;
-    cfg::czh_t bs_pm_;
-    bool fwd_;
-    cfg::ph_t d_, wa_;
-    cfg::dm_t dm_;
-    bool dnew_;
-    cfg::br_t k_;
-    cfg::tr_t tr_;
-    bool at_last_, fresh_, first_;
-    cfg::ph_t num_;
-    cfg::br_t t_, v_;
-    cfg::lag_t lag_;
-    cfg::ph_t w_;
-    bool t1_, z0_, h_, w_init_;
-    pos_t u_;
-    cfg::p_t len_;
-    bool mark_;        // the mark
-    bool mp_, mn_;     // the mark tests of a forward / backward count in the next call
-    pos_t b_, c_, z_;
+    cfg::stage_id stage_ = cfg::STAGE_UNHOMED;
+    pos_t paced_ = 0;
+    pos_t out_pos_ = 0;
+    pos_t adj_ = 0;
+    bool fwd_last_ = true;
+    bool sw_prev_ = false;
+    bool sw_seen_ = false;
+    pos_t a_ = 0;
+    pos_t bs_ = 0;
+    bool bs_c_ = false;
+    cfg::czh_t bs_pm_ = 0;
+    bool fwd_ = true;
+    cfg::ph_t d_ = 0;
+    cfg::ph_t wa_ = 0;
+    cfg::dm_t dm_ = 0;
+    bool dnew_ = false;
+    cfg::br_t k_ = 0;
+    cfg::tr_t tr_ = 0;
+    bool at_last_ = false;
+    bool fresh_ = false;
+    bool first_ = false;
+    cfg::ph_t num_ = 0;
+    cfg::br_t t_ = 0;
+    cfg::br_t v_ = 0;
+    cfg::lag_t lag_ = 0;
+    cfg::ph_t w_ = 0;
+    bool t1_ = false;
+    bool z0_ = false;
+    bool h_ = false;
+    bool w_init_ = false;
+    pos_t u_ = 0;
+    cfg::p_t len_ = 0;
+    bool mark_ = false;        // the mark
+    bool mp_ = false;     // the mark tests of a forward / backward count in the next call
+    bool mn_ = false;
+    pos_t b_ = 0;
+    pos_t c_ = 0;
+    pos_t z_ = 0;
 };
 
 }  // namespace lx
