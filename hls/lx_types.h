@@ -165,6 +165,68 @@ private:
 template <int W> using sint = fixed_int<W, true>;
 template <int W> using uint = fixed_int<W, false>;
 
+// Mixed-sign arithmetic. The models' arithmetic runs on the native store types: a sint converts
+// to int64_t (i128 above 64 bits), a uint to uint64_t (u128). A signed operand meeting an
+// unsigned one of the same rank is then converted to unsigned by the usual arithmetic conversions
+// (Clang's -Wconversion reports it, -Wsign-conversion; GCC's does not), e.g. hi + T_hi + carry in
+// pulse_multiplier.h. The operators below do that conversion explicitly and give the result the
+// signedness ap_int gives it (ap_int<W1> + ap_uint<W2> is an ap_int), for a signed operand (a sint,
+// or a signed 64-bit or 128-bit native value: what a sum of sints is) with a uint<W2> whose every
+// value the signed result type holds (int64_t for W2 < 64 and a sint of <= 64 bits, else i128 for
+// W2 < 128). The sum, difference or product is formed modulo 2^64 (2^128) in the unsigned type,
+// as the built-in operators did, and read as the signed type: the same bit pattern as before (so
+// the same value once narrowed to an lx type), and no signed overflow. Only +, - and *; native
+// operands narrower than 64 bits (literals: u + 1, u - 1) keep the built-in operators, and so do
+// division, remainder, shifts, the bitwise operators and comparisons (mixed-sign comparisons are
+// -Wsign-compare errors in both compilers).
+namespace detail {
+// the signed operand: its width class (64 or 128), 0 for any other type
+template <typename T>
+struct mix_s : std::integral_constant<int, (std::is_integral<T>::value && std::is_signed<T>::value &&
+                                            sizeof(T) == 8) ? 64 : 0> {};
+template <> struct mix_s<i128> : std::integral_constant<int, 128> {};
+template <int W> struct mix_s<fixed_int<W, true>> : std::integral_constant<int, (W <= 64 ? 64 : 128)> {};
+// the unsigned operand: a uint<W>, its width; 0 for any other type
+template <typename T> struct mix_u : std::integral_constant<int, 0> {};
+template <int W> struct mix_u<fixed_int<W, false>> : std::integral_constant<int, W> {};
+// the width of the result for signed SO and unsigned UO: 64, 128, or 0 (no mixed-sign operator)
+template <typename SO, typename UO>
+struct mix_su : std::integral_constant<int, (mix_s<SO>::value == 0 || mix_u<UO>::value == 0) ? 0
+                                            : (mix_s<SO>::value == 64 && mix_u<UO>::value < 64) ? 64
+                                            : (mix_u<UO>::value < 128) ? 128 : 0> {};
+// either order of the operands
+template <typename A, typename B>
+struct mix : std::integral_constant<int, mix_su<A, B>::value != 0 ? mix_su<A, B>::value : mix_su<B, A>::value> {};
+template <int N> struct mix_types {};  // N = 0: no type, the operators drop out (SFINAE)
+template <> struct mix_types<64> { using s = int64_t; using u = uint64_t; };
+template <> struct mix_types<128> { using s = i128; using u = u128; };
+// an operand's value as a native integer
+template <typename T> constexpr T mix_native(T x) { return x; }
+template <int W, bool S>
+constexpr typename fixed_int<W, S>::store_t mix_native(const fixed_int<W, S>& x) {
+    return static_cast<typename fixed_int<W, S>::store_t>(x);
+}
+}  // namespace detail
+
+template <typename A, typename B, int N = detail::mix<A, B>::value>
+constexpr typename detail::mix_types<N>::s operator+(const A& a, const B& b) {
+    using U = typename detail::mix_types<N>::u;
+    return static_cast<typename detail::mix_types<N>::s>(static_cast<U>(detail::mix_native(a)) +
+                                                         static_cast<U>(detail::mix_native(b)));
+}
+template <typename A, typename B, int N = detail::mix<A, B>::value>
+constexpr typename detail::mix_types<N>::s operator-(const A& a, const B& b) {
+    using U = typename detail::mix_types<N>::u;
+    return static_cast<typename detail::mix_types<N>::s>(static_cast<U>(detail::mix_native(a)) -
+                                                         static_cast<U>(detail::mix_native(b)));
+}
+template <typename A, typename B, int N = detail::mix<A, B>::value>
+constexpr typename detail::mix_types<N>::s operator*(const A& a, const B& b) {
+    using U = typename detail::mix_types<N>::u;
+    return static_cast<typename detail::mix_types<N>::s>(static_cast<U>(detail::mix_native(a)) *
+                                                         static_cast<U>(detail::mix_native(b)));
+}
+
 }  // namespace lx
 #endif
 

@@ -161,9 +161,9 @@ private:
         const bool neg1 = cfg::cmp_t(u + 1) < 0;
         const uint<cfg::LH> bl_h = uint<cfg::LH>(b_lo >> cfg::LH), bl_l = uint<cfg::LH>(b_lo);
         const uint<cfg::LH> tl_h = uint<cfg::LH>(t_lo >> cfg::LH), tl_l = uint<cfg::LH>(t_lo);
-        const bool cl = (uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH != 0;
-        const bool cu0 = (uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH != 0;
-        const bool cu1 = (uint<cfg::LH + 1>(bl_h) + tl_h + 1) >> cfg::LH != 0;
+        const bool cl = ((uint<cfg::LH + 1>(bl_l) + tl_l) >> cfg::LH) != 0;
+        const bool cu0 = ((uint<cfg::LH + 1>(bl_h) + tl_h) >> cfg::LH) != 0;
+        const bool cu1 = ((uint<cfg::LH + 1>(bl_h) + tl_h + 1) >> cfg::LH) != 0;
         o_y1_ = gt || (cu1 ? neg1 : neg0);
         o_y0_ = gt || (cu0 ? neg1 : neg0);
         o_cl_ = cl;

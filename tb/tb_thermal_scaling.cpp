@@ -450,8 +450,8 @@ int main(int argc, char** argv) {
         std::string out, err;
         const char* shown[] = {"--temp-c 20 --pressure-kpa 101.325 --rh 50",
                                "--temp-c 15 --pressure-kpa 95 --rh 20 --material steel --material-temp-c 15",
-                               "--temp-c 30 --pressure-pa 105000 --rh 80 --equation edlen --alpha-ppm 23.1 --material-temp-c 25 "
-                               "--origin-um 150000"};
+                               ("--temp-c 30 --pressure-pa 105000 --rh 80 --equation edlen --alpha-ppm 23.1 --material-temp-c 25 "
+                                "--origin-um 150000")};
         for (const char* line : shown) {
             const int rc = run_cmd(line, &out, &err);
             res.check(rc == 0, std::string("laserax compensate ") + line + " exit " + std::to_string(rc) + ": " + err);

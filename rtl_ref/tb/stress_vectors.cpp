@@ -497,7 +497,7 @@ vec_table dds_stress(rng_t& r, long long calls) {
                 period = static_cast<unsigned>(periods[pi]);
                 amp = next_amp;
             }
-        } else if (k > 2000 && pi + 1 < sizeof periods / sizeof periods[0] && r.chance(calls / 8)) {
+        } else if (k > 2000 && pi + 1 < sizeof periods / sizeof periods[0] && r.chance(static_cast<uint64_t>(calls / 8))) {
             ++pi;
             next_amp = r.chance(2) ? static_cast<unsigned>(r.range(1, 131071)) : 32767u;
             load = lxt::dds_table(periods[pi], static_cast<int>(next_amp));
@@ -834,7 +834,7 @@ vec_table encoder_counter_stress(rng_t& r, long long calls) {
                     case 3: g.sim_inc[c] = C::SIM_INC_MAX + 1 + r.u() % 3000000000ULL; break;  // legal on src 0 only
                     default: g.sim_inc[c] = static_cast<uint64_t>(r.range(0, 1 << 24)); break;
                 }
-                if (g.src[c] == 1 && g.sim_inc[c] > C::SIM_INC_MAX) g.sim_inc[c] = C::SIM_INC_MAX - r.range(0, 5);
+                if (g.src[c] == 1 && g.sim_inc[c] > C::SIM_INC_MAX) g.sim_inc[c] = C::SIM_INC_MAX - static_cast<uint64_t>(r.range(0, 5));
                 g.sim_down[c] = r.chance(2);
                 g.scale[c] = draw_scale();
                 prob[c] = r.chance(3) ? 1.0 : static_cast<double>(r.range(0, 1000)) / 1000.0;
@@ -994,7 +994,7 @@ vec_table pso_stress(rng_t& r, long long calls) {
     auto draw_dist = [&]() -> uint64_t {
         switch (r.range(0, 4)) {
             case 0: return C::MIN_DIST;
-            case 1: return C::MIN_DIST + r.range(1, 3);
+            case 1: return C::MIN_DIST + static_cast<uint64_t>(r.range(1, 3));
             case 2: return (static_cast<uint64_t>(r.range(2, 4)) << 32) + (r.u() & 0xffffffffULL);
             default: return (static_cast<uint64_t>(r.range(2, 200)) << 32) + (r.u() & 0xffffffffULL);
         }
