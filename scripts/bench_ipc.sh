@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# bench_ipc.sh — instructions per simulated clock (issue 13's deterministic figure).
+# bench_ipc.sh — instructions per simulated clock (the deterministic speed figure).
 #   bash scripts/bench_ipc.sh BUILD_DIR/bench [SHORT_CALLS] [LONG_CALLS]
 # Every figure is a difference of two runs under valgrind --tool=callgrind, a short and a long one
 # ((Ir(long) - Ir(short)) / (calls(long) - calls(short))), so start-up and the reading of the
@@ -7,7 +7,7 @@
 # deterministic (no timer, no sampling).
 # 1. The chain call: the inclusive count of the bench's non-inlined chain_step, i.e. the call of
 #    laserax_top::tick and every block step inlined into it, the instructions the model spends per
-#    simulated clock (issue 13's <= 250). Not counted: the bench loop around the call (its stimulus,
+#    simulated clock (issue 37's target: <= 400 with one hardware-form path per block). Not counted: the bench loop around the call (its stimulus,
 #    the pins of quadrature index t / 37, about 20 per clock).
 # 2. Every bench item alone (`bench CALLS --only KEY`), its loop included: the chain item is the
 #    chain call plus that loop; the block items inline the block's step into the loop.
@@ -56,7 +56,7 @@ chain=$(awk 'FNR == 1 { part++ }
              END { if (v[1] != "" && v[2] != "") printf "%.1f", (v[2] - v[1]) / (c[2] - c[1]) }' \
         <(printf '%s\n' "$s1") <(printf '%s\n' "$s2"))
 if [ -n "$chain" ]; then
-    printf '  %-34s %10s instructions / clock   (issue 13: <= 250)\n' "hls laserax_top, the chain call" "$chain"
+    printf '  %-34s %10s instructions / clock   (issue 37: <= 400)\n' "hls laserax_top, the chain call" "$chain"
 else
     echo "  hls laserax_top, the chain call: no figure (callgrind_annotate missing or chain_step inlined)"
 fi
