@@ -15,6 +15,9 @@
 
 #include "hls/laserax_regmap.h"
 
+// Catapult HLS: this function is the design top (Vitis HLS ignores the pragma; its top is named
+// by set_top in scripts/run_hls.tcl)
+#pragma hls_design top
 void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::uint<13> period,
                  lx::uint<13> tbl_period,
