@@ -1198,6 +1198,13 @@ Conventions:
   ([ERROR_MAP.md](ERROR_MAP.md) §4.5); `any` is every value of the width.
 * Reset: the values after power-up; they are the default member values of `lx::axis_regs`,
   `golden::axis_regs` and the host settings `lxt::axis_settings` (checked by `tb_regmap`).
+  These are the reset values of the **RTL IP** (`rtl_ref/laserax_regs.v`, `rtl_ref/laserax_axil.v`)
+  and of the C++ models. The **HLS IP** made from `hls/laserax_axil.cpp` cannot have them: an
+  s_axilite scalar argument has no initial value in Vitis HLS, so its registers start at **0**
+  after power-up. With those zeros the configuration check fails (`period`, `ratio` and others
+  are 0), so the core sits in the safe state with `cfg_err` set (no count is taken), until software
+  writes the whole register image, then starts the block (0x81 to 0x00). A host driving the HLS
+  IP must therefore write every register once before the start, not only those it changes.
 
 | offset | name | width | access | reset | units | legal | description |
 |---|---|---|---|---|---|---|---|
