@@ -161,7 +161,7 @@ public:
     // One call in reset (the safe state of laserax_top; rtl_ref i_rst): the pipeline registers
     // take their reset values; the write port's delay line keeps running, so a write already in
     // it lands in its own call (one RAM write at most, as in every call), and the port takes no
-    // new write (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
+    // further write (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
     void step_reset() {
         reset();
         error_map_regs none;

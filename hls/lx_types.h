@@ -232,7 +232,7 @@ constexpr typename detail::mix_types<N>::s operator*(const A& a, const B& b) {
 
 // LASERAX_FLATTEN: on the per-call step() of a chain, inlines every call in its body (GCC /
 // Clang, own integer back end, C simulation only): the block outputs then pass in registers
-// instead of through memory (a compiler setting for C simulation speed). No effect on what is computed; empty
+// instead of through memory (a compiler setting of the C build). No effect on what is computed; empty
 // for synthesis and with the vendor types (their deep class hierarchies would make every chain
 // step one very large function to compile, at -O0 too).
 #if (defined(__GNUC__) || defined(__clang__)) && !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && \
