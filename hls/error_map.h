@@ -158,16 +158,11 @@ public:
         corr_ = 0;
     }
 
-    // One call in reset (the safe state of laserax_top; rtl_ref i_rst): the pipeline registers
-    // take their reset values; the write port's delay line keeps running, so a write already in
-    // it lands in its own call (one RAM write at most, as in every call), and the port takes no
-    // further write (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
-    void step_reset() {
-        reset();
-        error_map_regs none;
-        none.we = false;
-        write_port(none);
-    }
+    // The write port in a call in reset (the safe state of laserax_top, which also calls reset();
+    // rtl_ref i_rst): the delay line keeps running, so a write already in it lands in its own call
+    // (one RAM write at most, as in every call), and the port takes no further write
+    // (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
+    void step_reset_port() { write_port(error_map_regs{}); }
 
     out_t step(const pos_t& p, bool homed, const error_map_regs& r) {
         const unsigned ph = ph_.to_uint();

@@ -305,7 +305,7 @@ private:
                 reset();  // safe state: every block held in reset
                 // (the error map's write port runs on through the reset, one write per call at
                 // most: a write already in its delay line lands in its own call, rtl_ref i_rst)
-                emap_.step_reset();
+                emap_.step_reset_port();
                 // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
                 // read the table, so its true dual-port RAM has at most two accesses per call
                 if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
