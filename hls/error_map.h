@@ -75,6 +75,8 @@ struct error_map_cfg {
     static constexpr int L_MAP = PH_LOAD + 1 + W_V + 2;           // 50: sample call t -> outputs
                                                                   //   of call t + L_MAP - 1
     static constexpr int W_DLY = PH_R;                            // 24: write of call t done in t + 24
+    static constexpr int DL_DEPTH = 32;                           // the delay line's RAM (a power of two)
+    static constexpr int DL_READ = DL_DEPTH + 2 - W_DLY;          // 10: read slot wp + 10 = wp - 22
     static constexpr int W_DIFF = W_CORR + 1;                     // 25, odd word - even word
     static constexpr int W_MHI = W_DIFF + 1;                      // 26, multiplier accumulator
     static constexpr int W_ME = W_CORR + 1;                       // 25, e + 2^(F-1)
@@ -99,7 +101,7 @@ struct error_map_cfg {
     using mag_t = uint<W_OFF - 1>;       // off's bits below the sign (shifted by S)
     using lo_t = uint<W_LO>;
     using hi_t = sint<W_OFF - W_LO>;
-    using wqi_t = uint<clog2p1(W_DLY)>;  // slot of the write delay line, 0 .. W_DLY - 1
+    using dlp_t = uint<clog2p1(DL_DEPTH - 1)>;  // slot of the write delay line (wraps)
     using frac_t = uint<W_FRAC>;
     using v_t = uint<W_V>;
     using diff_t = sint<W_DIFF>;
@@ -162,9 +164,20 @@ public:
     // rtl_ref i_rst): the delay line keeps running, so a write already in it lands in its own call
     // (one RAM write at most, as in every call), and the port takes no further write
     // (ERROR_MAP.md §4: a write of a running call is never lost, none is taken in reset).
-    void step_reset_port() { write_port(error_map_regs{}); }
+    void step_reset_port() {
+        next_call();
+        write_port(error_map_regs{});
+    }
+
+#ifndef __SYNTHESIS__
+    int ram_violations() const { return tble_.violations() | tblo_.violations() | dl_.violations(); }
+#endif
 
     out_t step(const pos_t& p, bool homed, const error_map_regs& r) {
+#pragma HLS BIND_STORAGE variable = tble_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = tblo_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = dl_.m_.w type = ram_s2p impl = bram
+        next_call();
         const unsigned ph = ph_.to_uint();
         // ---- H: output registers ------------------------------------------------------------
         out_t o;
@@ -200,26 +213,23 @@ public:
 
         // ---- D (ph = PH_D): the two words, orientation of the interval -------------------------
         if (ph == cfg::PH_D) {
-            d_.e = rd_.we;
-            d_.o = rd_.wo;
+            d_.e = tble_.q<0>();  // the RAMs' output registers (read at PH_R = PH_D - 1)
+            d_.o = tblo_.q<0>();
             d_.v = rd_.lsb ? cfg::v_t(cfg::v_t(1 << cfg::K_MAX) - cfg::v_t(rd_.u)) : cfg::v_t(rd_.u);
             d_.fl = rd_.fl;
         }
 
-        // ---- R (ph = PH_R): the two reads (one per RAM of the selected bank) --------------------
+        // ---- R (ph = PH_R): the two reads (one per RAM, the selected bank's half) --------------
         if (ph == cfg::PH_R) {
-            if (c_.bank) {
-                rd_.we = tbl1e_.w[c_.ea.to_uint()];
-                rd_.wo = tbl1o_.w[c_.oa.to_uint()];
-            } else {
-                rd_.we = tbl0e_.w[c_.ea.to_uint()];
-                rd_.wo = tbl0o_.w[c_.oa.to_uint()];
-            }
+            const unsigned bk = c_.bank ? unsigned(cfg::HALF_DEPTH) : 0u;  // bank: the address MSB
+            tble_.read<0>(bk + c_.ea.to_uint());
+            tblo_.read<0>(bk + c_.oa.to_uint());
             rd_.u = c_.u;
             rd_.lsb = c_.lsb;
             rd_.fl = c_.fl;
         }
-        // the write of call t - W_DLY, after the reads (always the other bank), then this call's
+        // the write of call t - W_DLY, after the reads (always the other bank), and this call's
+        // into the delay line
         write_port(r);
 
         // ---- C (ph = PH_C): clamp, the two addresses (multiplexers only) ------------------------
@@ -328,7 +338,6 @@ private:
         flags_t fl;
     };
     struct st_r {
-        cfg::word_t we = 0, wo = 0;  // registered RAM outputs: even and odd word
         cfg::frac_t u = 0;
         bool lsb = false;
         flags_t fl;
@@ -351,44 +360,45 @@ private:
         flags_t fl;
     };
 
-    // the write port's delay line (W_DLY calls): performs the write of call t - W_DLY, then takes
-    // this call's (to the bank not selected now) into the same slot
+    // the clock edge of the block's RAMs (every call: the write port runs in every call)
+    void next_call() {
+        tble_.next_call();
+        tblo_.next_call();
+        dl_.next_call();
+    }
+
+    // The write port's delay line (W_DLY = 24 calls, rtl_ref's structure): w1_ takes the call's
+    // write (to the bank not selected now; none in a reset call); the block RAM dl_ holds it for
+    // 22 calls (write pointer wp_, free running and never reset, so the writes in flight keep
+    // their calls across a reset; read pointer wp_ + 10 = wp_ - 22 mod 32); dl_'s output register
+    // is the write of call t - 24 in call t, performed into the table RAM after the reads of R.
     void write_port(const error_map_regs& r) {
-        wr_t& w = wq_[wi_.to_uint()];
-        write(w);
-        w.we = r.we;
-        w.bank = !r.bank_sel;
-        w.addr = r.addr;
-        w.data = r.data;
-        wi_ = wi_.to_uint() + 1 == unsigned(cfg::W_DLY) ? cfg::wqi_t(0) : cfg::wqi_t(wi_ + 1);
-    }
-
-    void write(const wr_t& w) {
-        if (!w.we) return;
-        const unsigned ha = cfg::haddr_t(w.addr >> 1).to_uint();
-        const bool odd = (w.addr & 1) != 0;
-        if (w.bank) {
-            if (odd) tbl1o_.w[ha] = w.data;
-            else tbl1e_.w[ha] = w.data;
-        } else {
-            if (odd) tbl0o_.w[ha] = w.data;
-            else tbl0e_.w[ha] = w.data;
+        const wr_t wd = dl_.q<0>();
+        if (wv_ && wd.we) {
+            const unsigned a = (wd.bank ? unsigned(cfg::HALF_DEPTH) : 0u) + cfg::haddr_t(wd.addr >> 1).to_uint();
+            if ((wd.addr & 1) != 0) tblo_.write(a, wd.data);
+            else tble_.write(a, wd.data);
         }
+        dl_.read<0>(cfg::dlp_t(wp_ + cfg::DL_READ).to_uint());
+        dl_.write(wp_.to_uint(), w1_);
+        w1_.we = r.we;
+        w1_.bank = !r.bank_sel;
+        w1_.addr = r.addr;
+        w1_.data = r.data;
+        wp_ = cfg::dlp_t(wp_ + 1);
+        wv_ = true;
     }
 
-    // two banks, each an even and an odd RAM (TBL_DEPTH/2 x 24 bits, simple dual port): per call one
-    // read of each RAM of the selected bank, at most one write into one RAM of the other bank
-    static_assert(cfg::N_BANKS == 2, "error_map: banks tbl0*, tbl1*");
-    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl0e_;  // power-up: zero (RAM INIT)
-#pragma HLS BIND_STORAGE variable = tbl0e_.w type = ram_s2p impl = bram
-    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl0o_;  // power-up: zero (RAM INIT)
-#pragma HLS BIND_STORAGE variable = tbl0o_.w type = ram_s2p impl = bram
-    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl1e_;  // power-up: zero (RAM INIT)
-#pragma HLS BIND_STORAGE variable = tbl1e_.w type = ram_s2p impl = bram
-    ram_zero<cfg::word_t, cfg::HALF_DEPTH> tbl1o_;  // power-up: zero (RAM INIT)
-#pragma HLS BIND_STORAGE variable = tbl1o_.w type = ram_s2p impl = bram
-    wr_t wq_[cfg::W_DLY] = {};  // the write port's delay line (slot wi_: the write of W_DLY calls ago)
-    cfg::wqi_t wi_ = 0;
+    // two RAMs, even and odd words (TBL_DEPTH x 24 bits each, simple dual port; the bank is the
+    // address MSB): per call one read of each (the selected bank's half) and at most one write
+    // into one of them (the other bank's half)
+    static_assert(cfg::N_BANKS == 2, "error_map: the bank is the RAM address MSB");
+    ram<cfg::word_t, cfg::TBL_DEPTH, RAM_S2P> tble_;  // power-up: zero (RAM INIT)
+    ram<cfg::word_t, cfg::TBL_DEPTH, RAM_S2P> tblo_;
+    ram<wr_t, cfg::DL_DEPTH, RAM_S2P> dl_;  // the write delay line (power-up: no writes)
+    wr_t w1_;
+    cfg::dlp_t wp_ = 0;
+    bool wv_ = false;  // dl_'s output register holds a word of the delay line (false at power-up)
     st_a a_;
     st_b b_;
     st_c c_;
