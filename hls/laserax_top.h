@@ -198,7 +198,13 @@ public:
         dig_q3_ = dig_tap{};
     }
 
-    dds_sincos& dds() { return dds_; }
+    // the DDS of the chain: the table write port only in the safe state (no write bypass)
+    using dds_type = dds_sincos_t<false>;
+    dds_type& dds() { return dds_; }
+#ifndef __SYNTHESIS__
+    // RAM port violations of the chain's RAMs (lx_ram.h RAM_V_* bits, C simulation): 0 always
+    int ram_violations() const { return dds_.ram_violations() | emap_.ram_violations(); }
+#endif
 
 #ifndef __SYNTHESIS__
     // Register write port (C simulation; DESIGN §4.7 unchanged): `r` is the block
@@ -233,6 +239,15 @@ public:
             written_ = false;
         }
         fast_ = same_q_ && run_q_;
+        return out_;
+    }
+#else
+    // The synthesis view: the testbenches' write port and tick() are step() on the last block
+    // written (host-side wrappers; the synthesis top calls step() only).
+    void write_regs(const axis_regs& r) { presented_ = r; }
+    const axis_regs& presented() const { return presented_; }
+    const axis_out& tick(const axis_pins& pins) {
+        (void)step(pins, presented_);
         return out_;
     }
 #endif
@@ -302,13 +317,14 @@ private:
             period_q_ = regs.period;
             run_q_ = ok;
             if (!ok) {
+                // DDS table writes: only here (tbl_we fails axis_config_ok), presented before the
+                // DDS's call in reset, which performs it after its read of T[0] (true dual port: two
+                // accesses in the call)
+                if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
                 reset();  // safe state: every block held in reset
                 // (the error map's write port runs on through the reset, one write per call at
                 // most: a write already in its delay line lands in its own call, rtl_ref i_rst)
                 emap_.step_reset_port();
-                // DDS table writes: only here (tbl_we fails axis_config_ok), where the DDS does not
-                // read the table, so its true dual-port RAM has at most two accesses per call
-                if (regs.tbl_we) dds_.write(regs.tbl_addr, regs.tbl_data);
                 safe_out(true);
                 return;
             }
@@ -325,7 +341,7 @@ private:
         // steps within a call is free: they run downstream first, and each inter-block register is
         // loaded right after its last reader (no block output is held across the other steps).
         axis_out& o = out_;
-        const dds_sincos::out_t dds = dds_.step(o.ostep, regs.period, regs.amplitude);
+        const dds_sincos_out dds = dds_.step(o.ostep, regs.period, regs.amplitude);
         // DAC range guard (DESIGN §4.7): the codes never leave +-(2^(dac_width-1) - 1), whatever
         // the table in use holds; a clamp sets the sticky dac_clip_st (clear first, event wins).
         // (o.dac_clip_st is the sticky flag's register: false after reset(), which clears out_)
@@ -392,7 +408,7 @@ private:
     pulse_multiplier mul_;
     output_pacer pac_;
     rephase rep_;
-    dds_sincos dds_;
+    dds_type dds_;
     error_map emap_;
     // the outputs of the call: every block output in it is also the inter-block register that
     // the blocks of the next call read (decoder step, multiplier comp / delta, pacer pstep, map
@@ -428,8 +444,9 @@ private:
     bool powered_ = false;            // false until the power-up call
     bool tblw_q_ = false;             // tbl_we in force in the previous call (DESIGN §4.6, §4.7)
     bool same_q_ = false;  // regs_q_ holds the block in force in the previous call too (not reloaded)
+    // the block presented (the write port; C simulation, and the synthesis view's tick())
+    alignas(16) axis_regs presented_ = axis_regs{};
 #ifndef __SYNTHESIS__
-    alignas(16) axis_regs presented_ = axis_regs{};  // the block presented (write port; C simulation)
     bool written_ = false;  // presented_ written since the last clock (reload and check after it)
     bool fast_ = false;     // the next tick runs the blocks only (see tick)
 #endif

@@ -22,7 +22,7 @@ static_assert(kOutputCountNmComp == kOutputCountNm, "output count differs from h
 
 void load_table(lx::laserax_top& core, int period, int amplitude) {
     const std::vector<uint32_t> t = dds_table(period, amplitude);
-    for (size_t k = 0; k < t.size(); ++k) core.dds().write(static_cast<unsigned>(k), t[k]);
+    for (size_t k = 0; k < t.size(); ++k) core.dds().load(static_cast<unsigned>(k), t[k]);
 }
 
 namespace {
@@ -252,6 +252,11 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     }
     std::string m = compare(h, g_);
     if (m.empty()) m = integrity();
+    // the chain's RAMs within their ports in every call (hls/lx_ram.h)
+#ifndef __SYNTHESIS__  // (the RAM flags: C simulation only)
+    if (m.empty() && core_.ram_violations() != 0)
+        m = "RAM port violation (lx_ram.h RAM_V_* bits " + std::to_string(core_.ram_violations()) + ")";
+#endif
     if (f_stale_) {  // s_ changed since it was last copied (set(), write_map(), the we clear above)
         f_ = s_;
         f_stale_ = false;

@@ -150,7 +150,7 @@ int main(int argc, char** argv) {
                 lx::laserax_top core;
                 golden::laserax_top gold;
                 for (size_t k = 0; k < words.size(); ++k)
-                    core.dds().write(lx::tbl_addr_t(k), lx::tbl_word_t(words[k]));
+                    core.dds().load(lx::tbl_addr_t(k), lx::tbl_word_t(words[k]));
                 golden::axis_regs g{};
                 g.period = P;
                 g.tbl_period = P;

@@ -23,7 +23,7 @@ int main(int argc, char** argv) {
         for (int P : periods) {
             lx::dds_sincos d;
             const std::vector<uint32_t> t = lxt::dds_table(P, amp);
-            for (size_t k = 0; k < t.size(); ++k) d.write(static_cast<unsigned>(k), t[k]);
+            for (size_t k = 0; k < t.size(); ++k) d.load(static_cast<unsigned>(k), t[k]);
             std::vector<int64_t> s, c;
             // the codes of call k belong to phase k - 1 (two stages, DESIGN 4.6): the first call
             // shows the reset codes and is dropped, calls 1..P give phases 0..P-1

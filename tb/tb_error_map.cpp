@@ -168,6 +168,12 @@ struct dut {
             pend.pop_front();
         }
         check_expect(res, cur, ho, where, t);
+#ifndef __SYNTHESIS__  // (the RAM flags: C simulation only)
+        res.expect(h.ram_violations() == 0, [&] {
+            return std::string(where) + " call " + std::to_string(t) + ": RAM port violations " +
+                   std::to_string(h.ram_violations());
+        });
+#endif
         ++calls;
         sum_delta += ho.delta.to_int64();
         res.expect(ho.corr.to_int64() == go.corr && ho.delta.to_int64() == go.delta && ho.active == go.active &&

@@ -164,6 +164,10 @@ void replay_top(tbu::result& res, const lxt::vec_table& t) {
                 ++reload_bad;
     }
     in.report(res);
+#ifndef __SYNTHESIS__  // (the RAM flags: C simulation only)
+    res.check(core.ram_violations() == 0 && reload.ram_violations() == 0,
+              "laserax_top: RAM port violations " + std::to_string(core.ram_violations() | reload.ram_violations()));
+#endif
     const std::vector<int64_t>& last = t.rows.back();
     const int stage = t.col("stage");
     res.check(stage >= 0 && (last[static_cast<size_t>(stage)] == 3 || last[static_cast<size_t>(stage)] == 1),
@@ -185,6 +189,9 @@ void replay_dds(tbu::result& res, const lxt::vec_table& t) {
         if (!check_outputs(res, t, r, {{"sin", o.sin.to_int64()}, {"cos", o.cos.to_int64()}})) ++bad;
     }
     in.report(res);
+#ifndef __SYNTHESIS__  // (the RAM flags: C simulation only)
+    res.check(d.ram_violations() == 0, "dds_sincos: RAM port violations " + std::to_string(d.ram_violations()));
+#endif
 }
 
 void replay_multiplier(tbu::result& res, const lxt::vec_table& t) {
@@ -228,6 +235,9 @@ void replay_error_map(tbu::result& res, const lxt::vec_table& t) {
             ++bad;
     }
     in.report(res);
+#ifndef __SYNTHESIS__  // (the RAM flags: C simulation only)
+    res.check(m.ram_violations() == 0, "error_map: RAM port violations " + std::to_string(m.ram_violations()));
+#endif
 }
 
 }  // namespace

@@ -678,7 +678,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
     g_dds.reset();
     {
         const std::vector<uint32_t> tbl = dds_table(256, 32767);
-        for (size_t k = 0; k < tbl.size(); ++k) h_dds.write(static_cast<unsigned>(k), tbl[k]);
+        for (size_t k = 0; k < tbl.size(); ++k) h_dds.load(static_cast<unsigned>(k), tbl[k]);
     }
     int prev_step = 0, prev_pstep = 0, prev_ostep = 0;
     int64_t prev_delta = 0;
