@@ -71,6 +71,7 @@ formal:
 	bash scripts/formal.sh output_pacer_sum
 	bash scripts/formal.sh --engine smtbmc quad_decoder quad_decoder_pins output_pacer pulse_multiplier \
 	    pulse_multiplier_mul dds_sincos pulse_multiplier_seq output_pacer_sum rephase rephase_adj rephase_div error_map
+	bash scripts/formal.sh --engine smtbmc --selftest
 
 fuzz:
 	@bash scripts/setup_deps.sh test

@@ -201,6 +201,8 @@ selftest() {
     for m in "${MUTATIONS[@]}"; do
         IFS='|' read -r name file proof expr <<<"$m"
         [ -z "${SELFTEST_ONLY:-}" ] || [[ "$name" =~ $SELFTEST_ONLY ]] || continue
+        # SELFTEST_PROOFS="p1 p2": only the mutations of these proofs
+        [ -z "${SELFTEST_PROOFS:-}" ] || [[ " $SELFTEST_PROOFS " == *" $proof "* ]] || continue
         # smtbmc: only the mutations of the proofs in its list (SMT_ALL); the others are the sat
         # engine's, whose self-test runs every mutation
         [ "$ENGINE" = sat ] || [[ " ${SMT_ALL[*]} " == *" $proof "* ]] || continue
