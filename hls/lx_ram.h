@@ -100,11 +100,7 @@ public:
     // The clock edge before a call (see the header).
     void next_call() {
 #ifndef __SYNTHESIS__
-        nr_ = 0;
-        nw_ = 0;
-        rd0_ = false;
-        rd1_ = false;
-        wrote_ = false;
+        st_ = 0;
 #endif
     }
 
@@ -114,11 +110,11 @@ public:
         static_assert(P >= 0 && P < read_ports, "lx::ram::read: no such read port");
 #ifndef __SYNTHESIS__
         addr = check_addr(addr);
-        if (wrote_ && wa_ == addr) viol_ |= RAM_V_RAW;
-        if (P == 0 ? rd0_ : rd1_) viol_ |= RAM_V_PORTS;  // a port reads once per call
-        ++nr_;
-        count();
-        (P == 0 ? rd0_ : rd1_) = true;
+        const unsigned bit = P == 0 ? S_R0 : S_R1;
+        // a port reads once per call; 1P: nothing else in the call; T2P: two accesses in all
+        if ((st_ & bit) != 0 || (K == RAM_1P && st_ != 0) || (K == RAM_T2P && accesses() >= 2)) viol_ |= RAM_V_PORTS;
+        if ((st_ & S_W1) != 0 && wa_ == addr) viol_ |= RAM_V_RAW;
+        st_ = static_cast<unsigned char>(st_ | bit);
 #endif
         (P == 0 ? q0_ : q1_) = m_.w[addr];
     }
@@ -128,7 +124,7 @@ public:
     const T& q() {
         static_assert(P >= 0 && P < read_ports, "lx::ram::q: no such read port");
 #ifndef __SYNTHESIS__
-        if (P == 0 ? rd0_ : rd1_) viol_ |= RAM_V_EARLY;
+        if ((st_ & (P == 0 ? S_R0 : S_R1)) != 0) viol_ |= RAM_V_EARLY;
 #endif
         return P == 0 ? q0_ : q1_;
     }
@@ -137,9 +133,10 @@ public:
     void write(unsigned addr, const T& d) {
 #ifndef __SYNTHESIS__
         addr = check_addr(addr);
-        ++nw_;
-        count();
-        wrote_ = true;
+        // 1P: nothing else in the call; S2P: one write; T2P: two accesses in all
+        if ((K == RAM_1P && st_ != 0) || (K == RAM_S2P && (st_ & S_W1) != 0) || (K == RAM_T2P && accesses() >= 2))
+            viol_ |= RAM_V_PORTS;
+        st_ = static_cast<unsigned char>(st_ | ((st_ & S_W1) != 0 ? S_W2 : S_W1));
         wa_ = addr;
 #endif
         m_.w[addr] = d;
@@ -162,10 +159,9 @@ private:
         viol_ |= RAM_V_ADDR;
         return 0;
     }
-    void count() {
-        const bool over = K == RAM_1P ? nr_ + nw_ > 1 : K == RAM_S2P ? (nr_ > 1 || nw_ > 1) : nr_ + nw_ > 2;
-        if (over) viol_ |= RAM_V_PORTS;
-    }
+    // the accesses of this call so far (st_ bits)
+    enum : unsigned { S_R0 = 1, S_R1 = 2, S_W1 = 4, S_W2 = 8 };
+    int accesses() const { return (st_ & 1) + ((st_ >> 1) & 1) + ((st_ >> 2) & 1) + ((st_ >> 3) & 1); }
 #endif
 
 public:
@@ -177,10 +173,8 @@ private:
     // output registers of the read ports: at power-up, as if each port had read address 0
     T q0_ = m_.w[0], q1_ = m_.w[0];
 #ifndef __SYNTHESIS__
-    unsigned char nr_ = 0, nw_ = 0;  // reads and writes of this call
-    bool rd0_ = false, rd1_ = false; // port read in this call
-    bool wrote_ = false;             // a write in this call, at wa_
-    unsigned wa_ = 0;
+    unsigned char st_ = 0;  // the accesses of this call: S_R0, S_R1 (port read), S_W1, S_W2 (writes)
+    unsigned wa_ = 0;       // the address of the call's last write (with S_W1)
     int viol_ = 0;
 #endif
 };
