@@ -553,9 +553,18 @@ namespace idx {
 %s
 }  // namespace idx
 
-inline constexpr reg_info kRegs[kNumRegs] = {
+// One table for the program in C++17 (an inline variable); a C++14 translation unit (the Vitis
+// C simulation compiles its testbench files, host/ip_init.cpp among them, as C++14) has a copy of
+// its own of the constant table.
+#if __cplusplus >= 201703L
+#define LXT_REGMAP_INLINE_VAR inline
+#else
+#define LXT_REGMAP_INLINE_VAR
+#endif
+LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
 %s
 };
+#undef LXT_REGMAP_INLINE_VAR
 
 // Smallest / largest value of the register's width.
 constexpr int64_t width_min(const reg_info& r) {
