@@ -18,7 +18,8 @@ Generated (each with the header line of GENERATED_NOTE):
     host/laserax_regs_c.h                    C header for firmware
     sysmodel/regmap_models.h, .cpp           accessors of lx::axis_regs and golden::axis_regs,
                                              to_hls / to_golden / settings_from
-    sysmodel/laserax_axil_call.h              laserax_axil() called with an lx::axis_regs
+    sysmodel/laserax_axil_call.h              laserax_axil() behind a model of the HLS IP's
+                                             s_axilite slave (registers 0 at power-up)
     docs/REGISTERS.md                        the documented map
     rtl_ref/laserax_regs.v                   Verilog AXI4-Lite slave holding the map (o_<name> ports)
 
@@ -810,29 +811,98 @@ axis_settings settings_from(const golden::axis_regs& g) {
 
 
 def gen_top_call_h(regs):
-    args = ",\n".join("                %s" % ("r." + r.hls_member) for r in regs)
-    return """// laserax_axil_call.h — host-side (testbench) helper: calls the synthesis top laserax_axil(),
-// whose arguments are one scalar per register, with the registers of an lx::axis_regs. Header-only
-// and built on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
+    end = max(r.offset + r.span for r in regs)
+    masks = []
+    for r in regs:
+        for off, lo, hi in word_ranges(r):
+            n = hi - lo + 1
+            what = r.name if r.words == 1 else "%s bits %d..%d" % (r.name, hi, lo)
+            masks.append("            case 0x%02X: return 0x%Xu;  // %s" % (off, (1 << n) - 1, what))
+    args = []
+    for r in regs:
+        if r.width == 1:
+            a = "at(0x%02X) != 0" % r.offset
+        elif r.words == 1:
+            a = "%s(at(0x%02X))" % (r.lx_type, r.offset)
+        else:
+            a = "%s(pair(0x%02X))" % (r.lx_type, r.offset)
+        args.append("                     %s,  // %s" % (a, r.name))
+    return """// laserax_axil_call.h — the synthesis top laserax_axil() behind a model of the HLS IP's
+// s_axilite slave, for C simulation (testbench glue): the registers are 32-bit words at their
+// offsets of docs/REGISTERS.md, all 0 at power-up as in the IP Vitis HLS makes (an s_axilite
+// argument has no initial value), written one bus word at a time (host/ip_init.h writes the whole
+// image), and every clock calls the top with the arguments the words hold. Header-only and built
+// on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
 //
 // %s
 #ifndef LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 #define LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 
+#include <cstdint>
+
 #include "hls/laserax_axil.h"
 
 namespace lxt {
 
-inline void laserax_axil_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
-    laserax_axil(a, b, sw, lerr,
-%s,
-                out);
-}
+// The HLS IP's s_axilite slave (bundle ctrl) and its block control, as the C simulation sees
+// them. A register word holds the bits of its register only (the bits above the width dropped,
+// as the Vitis slave keeps W bits; a register wider than 32 bits takes consecutive words, low
+// word first); the block-control word 0x00 keeps ap_start (bit 0) and auto_restart (bit 7). The
+// model knows only the free-running mode the IP is used in: the core runs (one call of
+// laserax_axil() per clock()) while 0x00 holds 0x81, i.e. from lxt::start_core on; a write of 0 to
+// 0x00 stops it after the current call. The state of the core (the static laserax_top of
+// hls/laserax_axil.cpp) is kept while it is stopped. Writes to 0x04..0x0F, to the reserved word
+// after each register and past the map are ignored.
+class laserax_axil_slave {
+public:
+    // One bus write (all four byte lanes); false when the word is ignored.
+    bool write(uint32_t offset, uint32_t value) {
+        if (offset == 0x00) {
+            ctrl_ = value & 0x81u;
+            return true;
+        }
+        const uint32_t m = mask(offset);
+        if (m == 0) return false;
+        w_[(offset - 0x%02Xu) / 4] = value & m;
+        return true;
+    }
+    // The word a register holds (0x00: the block control; 0 for every other offset).
+    uint32_t word(uint32_t offset) const {
+        if (offset == 0x00) return ctrl_;
+        return mask(offset) != 0 ? at(offset) : 0u;
+    }
+    bool running() const { return ctrl_ == 0x81u; }
+
+    // One clock: while the core runs, one call of laserax_axil() on the registers the words hold
+    // (true, outputs in out); else no call (false, out unchanged).
+    bool clock(bool a, bool b, bool sw, bool lerr, lx::axis_out& out) {
+        if (!running()) return false;
+        laserax_axil(a, b, sw, lerr,
+%s
+                     out);
+        return true;
+    }
+
+private:
+    // the bits a register word holds; 0 for a word that is not a register word
+    static uint32_t mask(uint32_t offset) {
+        switch (offset) {
+%s
+            default: return 0u;
+        }
+    }
+    uint32_t at(uint32_t offset) const { return w_[(offset - 0x%02Xu) / 4]; }
+    uint64_t pair(uint32_t offset) const { return (uint64_t(at(offset + 4)) << 32) | at(offset); }
+
+    uint32_t w_[(0x%02Xu - 0x%02Xu) / 4] = {};  // the words 0x%02X .. 0x%02X, 0 at power-up
+    uint32_t ctrl_ = 0;                    // block control: stopped at power-up
+};
 
 }  // namespace lxt
 
 #endif  // LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
-""" % (GENERATED_NOTE, args)
+""" % (GENERATED_NOTE, FIRST_OFFSET, "\n".join(args), "\n".join(masks), FIRST_OFFSET, end, FIRST_OFFSET,
+       FIRST_OFFSET, end - 4)
 
 
 def gen_c_h(regs):
@@ -1213,7 +1283,21 @@ Conventions:
   after power-up. With those zeros the configuration check fails (`period`, `ratio` and others
   are 0), so the core sits in the safe state with `cfg_err` set (no count is taken), until software
   writes the whole register image, then starts the block (0x81 to 0x00). A host driving the HLS
-  IP must therefore write every register once before the start, not only those it changes.
+  IP must therefore write every register once before the start, not only those it changes:
+  `lxt::init_registers(image, write)` (`host/ip_init.h`; `image` e.g. `lxt::axis_settings{}`, the
+  reset values, or a `reg_image`) writes it through the caller's register-write function, in this
+  order: `comp_sync` = 1; every other register but `comp_commit` in offset order, low word first
+  (the reserved words are not written); `comp_commit` = 1, then 0; `comp_sync` = 0 last, whatever
+  the image holds (a core that has not run yet loads `ratio` / `comp_offset` into its pair in
+  force only in a call with `comp_sync` = 0: it cannot see a commit made before the start). Then
+  `lxt::start_core(write)` writes 0x81 to 0x00; writes that need a running core come after it
+  (`comp_sync` = 1 with `lxt::compensation_writes`, `lxt::program_dds` for a table other than the
+  power-up one, `lxt::program_map`). An image with a pulse register or a table write enable at 1
+  is refused. The same sequence is correct for the RTL IP (its slave ignores the write to 0x00).
+  `tb_hls_csim` (the Vitis C-simulation testbench) brings the HLS top up this way through a model
+  of its slave whose registers start at 0 (`sysmodel/laserax_axil_call.h`) and checks that the core
+  stays in the safe state without the call and leaves it in the call after the register stage
+  with it.
 
 | offset | name | width | access | reset | units | legal | description |
 |---|---|---|---|---|---|---|---|
@@ -1246,7 +1330,8 @@ temperature, thermal origin, error-map table) to register values and back; `lase
 prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
 It also writes the bus sequences that change registers the core must not see half-updated: the
 compensation pair (`compensation_writes`), an error-map bank (`program_map`) and the DDS table
-with its period (`program_dds`, the table load above).
+with its period (`program_dds`, the table load above), and the whole image before the core is
+started (`init_registers`, `host/ip_init.h`: see Reset above).
 
 ## RTL slave (`rtl_ref/laserax_regs.v`)
 

@@ -50,8 +50,9 @@ set root [file normalize [file join [file dirname [info script]] ..]]
 cd $root
 
 # The files of the C simulation: the design, and the testbench with the golden chain it compares
-# against: exactly the sources CMake compiles for tb_hls_csim (the .cpp files tb/tb_hls_csim.cpp
-# reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
+# against and the host's initialisation call it writes the registers with (host/ip_init.cpp and
+# the register table it reads): exactly the sources CMake compiles for tb_hls_csim (the .cpp files
+# tb/tb_hls_csim.cpp reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
 # <build>/hls_csim_sources.txt, so they cannot drift (scripts/check_hls_tcl.py).
 set design_files {
     hls/laserax_axil.cpp
@@ -66,6 +67,8 @@ set tb_files {
     golden/pulse_multiplier.cpp
     golden/quad_decoder.cpp
     golden/rephase.cpp
+    host/ip_init.cpp
+    host/regmap_table.cpp
 }
 
 # Compile flags, the same for design and testbench: C++14 (the Vitis front end), the ap_int back
