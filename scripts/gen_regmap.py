@@ -11,7 +11,10 @@ Usage (Python 3 standard library only):
 Options: --csv PATH (default regmap/laserax_regs.csv), --out-dir DIR (default: the repository root).
 
 Generated (each with the header line of GENERATED_NOTE):
-    hls/laserax_axil.h, hls/laserax_axil.cpp   Vitis HLS top: one s_axilite scalar per register
+    hls/laserax_axil.h, hls/laserax_axil.cpp   Vitis HLS top: one s_axilite scalar per register;
+                                             its debug taps (LASERAX_HLS_DEBUG_TAPS, default 0)
+                                             are the outputs rtl_ref/laserax_top.v ties to 0
+                                             with DEBUG_TAPS = 0 (read from that file)
     hls/laserax_regmap.h                     lx::regmap constants + static_asserts against lx::axis_regs
     host/regmap_table.h, .cpp                host table, the host settings struct lxt::axis_settings
                                              and its accessors
@@ -283,6 +286,27 @@ def word_ranges(r):
     return out
 
 
+# The debug taps of the HLS top (lx::axis_out members, the registered outputs of the blocks that
+# only the testbenches compare): exactly the outputs that rtl_ref/laserax_top.v ties to 0 with
+# DEBUG_TAPS = 0 (`assign o_<name> = TAPS ? ... : 0;`), read from that file so that the two columns
+# drop the same outputs. The error-map outputs corr / map_delta stay in both.
+RTL_TOP_REL = "rtl_ref/laserax_top.v"
+RTL_TAP_RE = re.compile(r"^\s*assign\s+o_([a-z_][a-z0-9_]*)\s*=\s*TAPS\s*\?", re.M)
+
+
+def debug_taps():
+    path = os.path.join(ROOT, RTL_TOP_REL)
+    try:
+        with open(path, "r", encoding="utf-8") as f:
+            text = f.read()
+    except OSError as e:
+        raise CsvError(RTL_TOP_REL, 0, "cannot read the debug taps: %s" % e)
+    taps = RTL_TAP_RE.findall(text)
+    if not taps or len(set(taps)) != len(taps):
+        raise CsvError(RTL_TOP_REL, 0, "no (or a repeated) `assign o_<name> = TAPS ? ...` debug tap found")
+    return taps
+
+
 def gen_top_h(regs):
     args = ",\n".join("                 %s %s" % (r.lx_type, r.name) for r in regs)
     return """// laserax_axil.h — declaration of the synthesis top (see laserax_axil.cpp).
@@ -293,6 +317,19 @@ def gen_top_h(regs):
 
 #include "hls/laserax_top.h"
 
+// LASERAX_HLS_DEBUG_TAPS, a compile-time switch (0 or 1; default 0, as DEBUG_TAPS = 0 of
+// rtl_ref/laserax_top.v): 0 drops the debug taps from the top's outputs, the lx::axis_out members
+//   %s
+// are 0 in every call, so synthesis removes the logic that only feeds them (the deployed core);
+// 1 drives them, for the testbenches that compare them (CTest tb_hls_csim_taps). The pins, the
+// status and the error-map outputs (map_cfg_err, corr, map_delta) are the same for both values.
+#ifndef LASERAX_HLS_DEBUG_TAPS
+#define LASERAX_HLS_DEBUG_TAPS 0
+#endif
+#if LASERAX_HLS_DEBUG_TAPS != 0 && LASERAX_HLS_DEBUG_TAPS != 1
+#error "LASERAX_HLS_DEBUG_TAPS must be 0 or 1"
+#endif
+
 // Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
 // s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
 void laserax_axil(bool a, bool b, bool sw, bool lerr,
@@ -300,7 +337,21 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::axis_out& out);
 
 #endif  // LASERAX_HLS_LASERAX_AXIL_H
-""" % (GENERATED_NOTE, args)
+""" % (GENERATED_NOTE, wrap_list(debug_taps(), "//   ", 92), args)
+
+
+def wrap_list(names, prefix, width):
+    """names as `a`, `b`, ... wrapped into comment lines of at most width characters after the first."""
+    words = ["%s%s" % (n, "," if i + 1 < len(names) else "") for i, n in enumerate(names)]
+    lines, cur = [], ""
+    for w in words:
+        if cur and len(cur) + 1 + len(w) > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = w if not cur else cur + " " + w
+    lines.append(cur)
+    return ("\n" + prefix).join(lines)
 
 
 def gen_top_cpp(regs):
@@ -308,6 +359,7 @@ def gen_top_cpp(regs):
     pragmas = "\n".join("#pragma HLS INTERFACE mode=s_axilite port=%s offset=0x%02X bundle=ctrl" % (r.name, r.offset)
                         for r in regs)
     assigns = "\n".join("    regs.%s = %s;" % (r.hls_member, r.name) for r in regs)
+    taps = "\n".join("    out.%s = 0;" % t for t in debug_taps())
     return """// laserax_axil.cpp — Vitis HLS top function of the single-axis interface.
 //
 // %s
@@ -319,7 +371,10 @@ def gen_top_cpp(regs):
 // ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
 // Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
 // the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
-// pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
+// pipeline takes one call per clock. The registers start at 0, not at their reset values (an
+// s_axilite argument has no initial value): software writes the whole image before the start
+// (lxt::init_registers, host/ip_init.h). The debug taps of lx::axis_out are 0 unless
+// LASERAX_HLS_DEBUG_TAPS = 1 (laserax_axil.h). Build for Vitis with -DLASERAX_USE_AP_TYPES (see
 // scripts/run_hls.tcl); the default build uses lx_types' own classes.
 #include "hls/laserax_axil.h"
 
@@ -349,8 +404,12 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
     lx::axis_regs regs;
 %s
     out = core.step(pins, regs);
+#if !LASERAX_HLS_DEBUG_TAPS
+    // the debug taps dropped (laserax_axil.h): constant 0, as DEBUG_TAPS = 0 ties them in rtl_ref
+%s
+#endif
 }
-""" % (GENERATED_NOTE, params, pragmas, assigns)
+""" % (GENERATED_NOTE, params, pragmas, assigns, taps)
 
 
 def gen_regmap_h(regs):

@@ -14,6 +14,10 @@
 #                                           through AXI4-Lite; the II = 1 pipeline free-runs once
 #                                           started with auto_restart, see hls/laserax_axil.cpp)
 #   export    EXPORT            default 0   export_design -format ip_catalog
+#   debug_taps LASERAX_DEBUG_TAPS default 0  -DLASERAX_HLS_DEBUG_TAPS=<0|1> for design and
+#                                           testbench: 0 drops the debug taps of the top's
+#                                           outputs (the deployed core, as DEBUG_TAPS = 0 in
+#                                           rtl_ref), 1 drives them (hls/laserax_axil.h)
 #   reset     RESET             default 0   open the project with -reset (drops earlier results)
 # The project folder laserax_hls/ is created in the repository root (ignored by git).
 
@@ -24,8 +28,10 @@ set csynth   1
 set cosim    0
 set export   0
 set reset    0
+set debug_taps 0
 
-set envmap {part LASERAX_PART clock_ns LASERAX_CLOCK_NS csim CSIM csynth CSYNTH cosim COSIM export EXPORT reset RESET}
+set envmap {part LASERAX_PART clock_ns LASERAX_CLOCK_NS csim CSIM csynth CSYNTH cosim COSIM export EXPORT reset RESET
+            debug_taps LASERAX_DEBUG_TAPS}
 foreach {var envname} $envmap {
     if {[info exists ::env($envname)] && $::env($envname) ne ""} {
         set $var $::env($envname)
@@ -36,8 +42,8 @@ if {[info exists argv]} {
         if {[regexp {^-*([A-Za-z_]+)=(.*)$} $arg -> key value]} {
             set key [string tolower $key]
             if {$key eq "clock"} { set key clock_ns }
-            if {[lsearch -exact {part clock_ns csim csynth cosim export reset} $key] < 0} {
-                puts "run_hls.tcl: unknown setting '$key' (known: part clock_ns csim csynth cosim export reset)"
+            if {[lsearch -exact {part clock_ns csim csynth cosim export reset debug_taps} $key] < 0} {
+                puts "run_hls.tcl: unknown setting '$key' (known: part clock_ns csim csynth cosim export reset debug_taps)"
                 exit 2
             }
             set $key $value
@@ -72,13 +78,18 @@ set tb_files {
 }
 
 # Compile flags, the same for design and testbench: C++14 (the Vitis front end), the ap_int back
-# end of hls/lx_types.h (Vitis supplies ap_int.h itself), includes from the repository root.
+# end of hls/lx_types.h (Vitis supplies ap_int.h itself), the debug-taps switch of the top,
+# includes from the repository root.
 # Absolute -I: csim compiles inside the solution folder, where a relative -I. would not resolve.
 # csim_design compiles without optimisation (its default, no -O); `make test` runs the same
 # testbench built with the vendor ap_int.h at -O0 and -O2 (CTest tb_hls_csim.ap_O0 / .ap_O2).
-set cflags "-std=c++14 -DLASERAX_USE_AP_TYPES -I$root"
+if {$debug_taps ne "0" && $debug_taps ne "1"} {
+    puts "run_hls.tcl: debug_taps must be 0 or 1, not '$debug_taps'"
+    exit 2
+}
+set cflags "-std=c++14 -DLASERAX_USE_AP_TYPES -DLASERAX_HLS_DEBUG_TAPS=$debug_taps -I$root"
 
-puts "run_hls.tcl: part=$part clock=${clock_ns}ns csim=$csim csynth=$csynth cosim=$cosim export=$export"
+puts "run_hls.tcl: part=$part clock=${clock_ns}ns csim=$csim csynth=$csynth cosim=$cosim export=$export debug_taps=$debug_taps"
 
 if {$reset} {
     open_project -reset laserax_hls

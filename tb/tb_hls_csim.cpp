@@ -19,10 +19,13 @@
 // 3. lxt::start_core, then one homing through the switch at the reset values (P = 256, ratio for a
 //    HeNe laser in standard air) at the power-up table contents: the first call after the start
 //    still runs on the registers in force before the stop (zeros: cfg_err); the core must leave
-//    cfg_err in the next call (the register stage, DESIGN §4.7) and never set it again; every
-//    output compared with the golden chain on every call from that call on (the golden chain's
-//    power-up call is aligned with the first call after the start); then Z - A = 320 and
-//    sin == cos > 0 with the mark active at Z.
+//    cfg_err in the next call (the register stage, DESIGN §4.7) and never set it again; the pins,
+//    the status and the error-map outputs compared with the golden chain on every call from that
+//    call on (the golden chain's power-up call is aligned with the first call after the start),
+//    and the debug taps (raw_count .. rep_mark) too when the top is built with
+//    LASERAX_HLS_DEBUG_TAPS = 1 (CTest tb_hls_csim_taps), else they must be 0 in every call (the
+//    default build, CTest tb_hls_csim: the switch drops them); then Z - A = 320 and sin == cos > 0
+//    with the mark active at Z (positions from the golden chain's taps).
 // Returns 1 on failure, like the Vitis examples. Optional argument `--calls N` (calls of part 3,
 // default 400000; homing and Z are reached within the first 10000 calls): the shorter run of the
 // valgrind test and of co-simulation.
@@ -137,7 +140,8 @@ int main(int argc, char** argv) {
     long long a = 0, z = 0;
     bool homed = false, z_ok = false;
     n = 0;
-    lx::axis_out prev2{}, prev1{};
+    long tap_nonzero = 0;  // golden taps != 0: the taps-off check compares against non-zero values
+    golden::axis_out prev2{}, prev1{};
     for (long t = 0; t < calls && mismatches < 5; ++t) {
         if (t > 100 && t % 60 == 0 && n < 130) ++n;
         const bool sw = n >= 30;
@@ -156,35 +160,63 @@ int main(int argc, char** argv) {
             continue;
         }
         check(!o.cfg_err, "cfg_err after init_registers and the register stage", t);
-        const long long hv[] = {o.sin.to_int64(), o.cos.to_int64(), o.ref_mark, o.qa, o.qb, o.stage.to_int64(),
-                                o.cfg_err, o.alarm, o.raw_count.to_int64(), o.comp_pos.to_int64(), o.out_pos.to_int64()};
-        const long long gv[] = {g.sin, g.cos, g.ref_mark, g.qa, g.qb, g.stage, g.cfg_err, g.alarm, g.raw_count,
-                                g.comp_pos, g.out_pos};
-        const char* names[] = {"sin", "cos", "ref_mark", "qa", "qb", "stage", "cfg_err", "alarm", "raw_count",
-                               "comp_pos", "out_pos"};
-        for (int k = 0; k < 11; ++k) {
+        // the pins, the status and the error-map outputs: in both builds
+        const long long hv[] = {o.sin.to_int64(), o.cos.to_int64(), o.ref_mark, o.qa, o.qb, o.qz, o.cfg_err,
+                                o.stage.to_int64(), o.homed, o.lerr_alarm, o.illegal_st, o.err_cnt.to_int64(),
+                                o.ovs_edge_st, o.ovs_backlog_st, o.glitch_st, o.alarm, o.dac_clip_st, o.map_cfg_err,
+                                o.corr.to_int64(), o.map_delta.to_int64()};
+        const long long gv[] = {g.sin, g.cos, g.ref_mark, g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm,
+                                g.illegal_st, g.err_cnt, g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm,
+                                g.dac_clip_st, g.map_cfg_err, g.corr, g.map_delta};
+        const char* names[] = {"sin", "cos", "ref_mark", "qa", "qb", "qz", "cfg_err", "stage", "homed", "lerr_alarm",
+                               "illegal_st", "err_cnt", "ovs_edge_st", "ovs_backlog_st", "glitch_st", "alarm",
+                               "dac_clip_st", "map_cfg_err", "corr", "map_delta"};
+        for (int k = 0; k < 20; ++k) {
             if (hv[k] != gv[k]) {
                 std::printf("call %ld signal %s: expected %lld got %lld\n", t, names[k], gv[k], hv[k]);
                 ++mismatches;
             }
         }
+        // the debug taps (the registered block outputs; rtl_ref's DEBUG_TAPS set): equal to the
+        // golden chain's with LASERAX_HLS_DEBUG_TAPS = 1, 0 in every call without
+        const long long htap[] = {o.raw_count.to_int64(), o.step.to_int64(), o.comp_pos.to_int64(),
+                                  o.delta.to_int64(), o.backlog.to_int64(), o.pstep.to_int64(),
+                                  o.paced_pos.to_int64(), o.ostep.to_int64(), o.out_pos.to_int64(),
+                                  o.adj.to_int64(), o.a_pos.to_int64(), o.b_pos.to_int64(), o.c_pos.to_int64(),
+                                  o.z_pos.to_int64(), o.d.to_int64(), o.rep_mark};
+        const long long gtap[] = {g.raw_count, g.step, g.comp_pos, g.delta, g.backlog, g.pstep, g.paced_pos, g.ostep,
+                                  g.out_pos, g.adj, g.a_pos, g.b_pos, g.c_pos, g.z_pos, g.d, g.rep_mark};
+        const char* tap_names[] = {"raw_count", "step", "comp_pos", "delta", "backlog", "pstep", "paced_pos", "ostep",
+                                   "out_pos", "adj", "a_pos", "b_pos", "c_pos", "z_pos", "d", "rep_mark"};
+        for (int k = 0; k < 16; ++k) {
+            const long long want = LASERAX_HLS_DEBUG_TAPS ? gtap[k] : 0;
+            if (htap[k] != want) {
+                std::printf("call %ld tap %s: expected %lld got %lld (LASERAX_HLS_DEBUG_TAPS = %d)\n", t, tap_names[k],
+                            want, htap[k], LASERAX_HLS_DEBUG_TAPS);
+                ++mismatches;
+            }
+            if (gtap[k] != 0) ++tap_nonzero;
+        }
+        // the positions from the golden chain's taps (equal to the top's, compared above, when it
+        // has them)
         if (o.homed && !homed) {
             homed = true;
-            a = o.a_pos.to_int64();
-            z = o.z_pos.to_int64();
+            a = g.a_pos;
+            z = g.z_pos;
         }
         // sin/cos of this call belong to the rephase outputs of two calls ago
-        if (prev2.homed && prev2.out_pos - prev2.adj == prev2.z_pos && prev2.ostep == 0 && prev2.adj == o.adj)
+        if (prev2.homed && prev2.out_pos - prev2.adj == prev2.z_pos && prev2.ostep == 0 && prev2.adj == g.adj)
             z_ok = z_ok || (o.sin == o.cos && o.sin > 0 && o.ref_mark);
         prev2 = prev1;
-        prev1 = o;
+        prev1 = g;
     }
     check(first_run == 1, "the core did not leave cfg_err in the call after the register stage", first_run);
+    check(tap_nonzero > 0, "the golden taps were 0 in every call", calls);
     const bool ok = g_fails == 0 && mismatches == 0 && homed && z - a == 320 && z_ok;
-    std::printf("[tb_hls_csim] %s: without init cfg_err held %ld calls: %d; init_registers %ld writes, register "
+    std::printf("[tb_hls_csim] %s (debug taps %s): without init cfg_err held %ld calls: %d; init_registers %ld writes, register "
                 "words = CSV reset: %d; after the start cfg_err left at call %ld (bound 1); homed %d, Z - A = %lld, "
                 "sin == cos > 0 with mark at Z: %d, %ld mismatches, %ld failed checks\n",
-                ok ? "PASS" : "FAIL", kNoInitCalls, no_init_safe ? 1 : 0, init_writes, words_ok ? 1 : 0,
+                ok ? "PASS" : "FAIL", LASERAX_HLS_DEBUG_TAPS ? "on, compared" : "off, all 0", kNoInitCalls, no_init_safe ? 1 : 0, init_writes, words_ok ? 1 : 0,
                 first_run, homed ? 1 : 0, z - a, z_ok ? 1 : 0, mismatches, g_fails);
     return ok ? 0 : 1;
 }
