@@ -107,8 +107,9 @@ create_clock -period $clock_ns -name default
 if {$csim}   { csim_design }
 if {$csynth} { csynth_design }
 # co-simulation drives every call through the AXI4-Lite adapter: the testbench's default of
-# 400000 calls would be 400000 bus transactions, so cosim runs it with 20000 calls (homing and
-# Z need at least 10000; tb_hls_csim refuses fewer)
+# 400000 calls would be 400000 bus transactions, so cosim runs it with 20000 calls after the
+# initialisation (homing and Z need at least 10000; tb_hls_csim refuses fewer), plus the 3000
+# calls before it in which the core must hold cfg_err on its zero registers
 if {$cosim}  { cosim_design -rtl verilog -argv {--calls 20000} }
 if {$export} { export_design -format ip_catalog }
 exit
