@@ -9,7 +9,10 @@
 // ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
 // Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
 // the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
-// pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
+// pipeline takes one call per clock. The registers start at 0, not at their reset values (an
+// s_axilite argument has no initial value): software writes the whole image before the start
+// (lxt::init_registers, host/ip_init.h). The debug taps of lx::axis_out are 0 unless
+// LASERAX_HLS_DEBUG_TAPS = 1 (laserax_axil.h). Build for Vitis with -DLASERAX_USE_AP_TYPES (see
 // scripts/run_hls.tcl); the default build uses lx_types' own classes.
 #include "hls/laserax_axil.h"
 
@@ -126,4 +129,23 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
     regs.comp_sync = comp_sync;
     regs.comp_commit = comp_commit;
     out = core.step(pins, regs);
+#if !LASERAX_HLS_DEBUG_TAPS
+    // the debug taps dropped (laserax_axil.h): constant 0, as DEBUG_TAPS = 0 ties them in rtl_ref
+    out.raw_count = 0;
+    out.step = 0;
+    out.comp_pos = 0;
+    out.delta = 0;
+    out.backlog = 0;
+    out.pstep = 0;
+    out.paced_pos = 0;
+    out.ostep = 0;
+    out.out_pos = 0;
+    out.adj = 0;
+    out.a_pos = 0;
+    out.b_pos = 0;
+    out.c_pos = 0;
+    out.z_pos = 0;
+    out.d = 0;
+    out.rep_mark = 0;
+#endif
 }

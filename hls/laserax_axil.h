@@ -6,6 +6,20 @@
 
 #include "hls/laserax_top.h"
 
+// LASERAX_HLS_DEBUG_TAPS, a compile-time switch (0 or 1; default 0, as DEBUG_TAPS = 0 of
+// rtl_ref/laserax_top.v): 0 drops the debug taps from the top's outputs, the lx::axis_out members
+//   raw_count, step, comp_pos, delta, backlog, pstep, paced_pos, ostep, out_pos, adj, a_pos,
+//   b_pos, c_pos, z_pos, d, rep_mark
+// are 0 in every call, so synthesis removes the logic that only feeds them (the deployed core);
+// 1 drives them, for the testbenches that compare them (CTest tb_hls_csim_taps). The pins, the
+// status and the error-map outputs (map_cfg_err, corr, map_delta) are the same for both values.
+#ifndef LASERAX_HLS_DEBUG_TAPS
+#define LASERAX_HLS_DEBUG_TAPS 0
+#endif
+#if LASERAX_HLS_DEBUG_TAPS != 0 && LASERAX_HLS_DEBUG_TAPS != 1
+#error "LASERAX_HLS_DEBUG_TAPS must be 0 or 1"
+#endif
+
 // Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
 // s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
 void laserax_axil(bool a, bool b, bool sw, bool lerr,

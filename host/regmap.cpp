@@ -160,6 +160,10 @@ axis_settings settings_from(const reg_image& img) {
     return s;
 }
 
+bool init_registers(const reg_image& img, const bus_write_fn& write, std::string* err) {
+    return init_registers(settings_from(img), write, err);
+}
+
 // ---- compensation ----------------------------------------------------------------------------
 
 bool apply_compensation(const comp_inputs& in, reg_image* img, comp_outputs* out, std::string* err) {

@@ -9,6 +9,8 @@
 //   image <-> settings lxt::axis_settings (every register), through the generated accessors of
 //                     host/regmap_table.h (the model register structs lx::axis_regs and
 //                     golden::axis_regs: sysmodel/model_regs.h).
+//   initialisation    the whole image written before the core is started (init_registers,
+//                     host/ip_init.h: the HLS IP's registers start at 0, not at the reset values).
 //   compensation      comp_inputs (air T, p, RH, CO2, wavelength, equation, alpha, material T,
 //                     origin) -> ratio and comp_offset (compute_compensation, compensation.h);
 //                     back: ratio -> scale/ppm, and with the quantities a register cannot hold
@@ -40,6 +42,7 @@
 
 #include "host/air_index.h"
 #include "host/compensation.h"
+#include "host/ip_init.h"
 #include "host/regmap_table.h"
 
 namespace lxt {
@@ -89,6 +92,12 @@ std::string range_text(const regmap::reg_info& r);
 // register's width.
 bool image_from(const axis_settings& s, reg_image* img, std::string* err = nullptr);
 axis_settings settings_from(const reg_image& img);
+
+// ---- initialisation before the core is started (host/ip_init.h) ------------------------------
+// init_registers(settings_from(img), write, err): the whole image img through the caller's
+// register write, in the order of host/ip_init.h (the HLS IP's registers start at 0, not at the
+// reset values: write the image, then lxt::start_core).
+bool init_registers(const reg_image& img, const bus_write_fn& write, std::string* err = nullptr);
 
 // Points per error-map bank: the largest map_n0 / map_n1 (lx::error_map_cfg::TBL_DEPTH in hls/,
 // checked in sysmodel/model_regs.cpp).

@@ -115,7 +115,15 @@ constexpr int comp_sync = 28;
 constexpr int comp_commit = 29;
 }  // namespace idx
 
-inline constexpr reg_info kRegs[kNumRegs] = {
+// One table for the program in C++17 (an inline variable); a C++14 translation unit (the Vitis
+// C simulation compiles its testbench files, host/ip_init.cpp among them, as C++14) has a copy of
+// its own of the constant table.
+#if __cplusplus >= 201703L
+#define LXT_REGMAP_INLINE_VAR inline
+#else
+#define LXT_REGMAP_INLINE_VAR
+#endif
+LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
     {"period", 0x10, 13, false, 256LL, access::rw, "output counts", false, 8LL, 4096LL, 8LL, check::cfg, "tbl_period == period; mark_len in period/4 .. period", "period", "period",
      "sin/cos period P (20 um = 256 counts); a change while running restarts the chain (one safe-state call). Bad value: outside 8..4096, not a multiple of 8, != tbl_period or mark_len outside period/4..period -> cfg_err (safe state)"},
     {"tbl_period", 0x18, 13, false, 256LL, access::rw, "output counts", false, 8LL, 4096LL, 8LL, check::cfg, "== period", "tbl_period", "tbl_period",
@@ -177,6 +185,7 @@ inline constexpr reg_info kRegs[kNumRegs] = {
     {"comp_commit", 0x120, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_commit", "comp_commit",
      "with comp_sync = 1: loads ratio and comp_offset into the multiplier in this clock (both together). Bad value: a commit between the words of a wide register loads a half-written value (host side: words first, then commit)"},
 };
+#undef LXT_REGMAP_INLINE_VAR
 
 // Smallest / largest value of the register's width.
 constexpr int64_t width_min(const reg_info& r) {

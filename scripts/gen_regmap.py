@@ -11,14 +11,18 @@ Usage (Python 3 standard library only):
 Options: --csv PATH (default regmap/laserax_regs.csv), --out-dir DIR (default: the repository root).
 
 Generated (each with the header line of GENERATED_NOTE):
-    hls/laserax_axil.h, hls/laserax_axil.cpp   Vitis HLS top: one s_axilite scalar per register
+    hls/laserax_axil.h, hls/laserax_axil.cpp   Vitis HLS top: one s_axilite scalar per register;
+                                             its debug taps (LASERAX_HLS_DEBUG_TAPS, default 0)
+                                             are the outputs rtl_ref/laserax_top.v ties to 0
+                                             with DEBUG_TAPS = 0 (read from that file)
     hls/laserax_regmap.h                     lx::regmap constants + static_asserts against lx::axis_regs
     host/regmap_table.h, .cpp                host table, the host settings struct lxt::axis_settings
                                              and its accessors
     host/laserax_regs_c.h                    C header for firmware
     sysmodel/regmap_models.h, .cpp           accessors of lx::axis_regs and golden::axis_regs,
                                              to_hls / to_golden / settings_from
-    sysmodel/laserax_axil_call.h              laserax_axil() called with an lx::axis_regs
+    sysmodel/laserax_axil_call.h              laserax_axil() behind a model of the HLS IP's
+                                             s_axilite slave (registers 0 at power-up)
     docs/REGISTERS.md                        the documented map
     rtl_ref/laserax_regs.v                   Verilog AXI4-Lite slave holding the map (o_<name> ports)
 
@@ -282,6 +286,27 @@ def word_ranges(r):
     return out
 
 
+# The debug taps of the HLS top (lx::axis_out members, the registered outputs of the blocks that
+# only the testbenches compare): exactly the outputs that rtl_ref/laserax_top.v ties to 0 with
+# DEBUG_TAPS = 0 (`assign o_<name> = TAPS ? ... : 0;`), read from that file so that the two columns
+# drop the same outputs. The error-map outputs corr / map_delta stay in both.
+RTL_TOP_REL = "rtl_ref/laserax_top.v"
+RTL_TAP_RE = re.compile(r"^\s*assign\s+o_([a-z_][a-z0-9_]*)\s*=\s*TAPS\s*\?", re.M)
+
+
+def debug_taps():
+    path = os.path.join(ROOT, RTL_TOP_REL)
+    try:
+        with open(path, "r", encoding="utf-8") as f:
+            text = f.read()
+    except OSError as e:
+        raise CsvError(RTL_TOP_REL, 0, "cannot read the debug taps: %s" % e)
+    taps = RTL_TAP_RE.findall(text)
+    if not taps or len(set(taps)) != len(taps):
+        raise CsvError(RTL_TOP_REL, 0, "no (or a repeated) `assign o_<name> = TAPS ? ...` debug tap found")
+    return taps
+
+
 def gen_top_h(regs):
     args = ",\n".join("                 %s %s" % (r.lx_type, r.name) for r in regs)
     return """// laserax_axil.h — declaration of the synthesis top (see laserax_axil.cpp).
@@ -292,6 +317,19 @@ def gen_top_h(regs):
 
 #include "hls/laserax_top.h"
 
+// LASERAX_HLS_DEBUG_TAPS, a compile-time switch (0 or 1; default 0, as DEBUG_TAPS = 0 of
+// rtl_ref/laserax_top.v): 0 drops the debug taps from the top's outputs, the lx::axis_out members
+//   %s
+// are 0 in every call, so synthesis removes the logic that only feeds them (the deployed core);
+// 1 drives them, for the testbenches that compare them (CTest tb_hls_csim_taps). The pins, the
+// status and the error-map outputs (map_cfg_err, corr, map_delta) are the same for both values.
+#ifndef LASERAX_HLS_DEBUG_TAPS
+#define LASERAX_HLS_DEBUG_TAPS 0
+#endif
+#if LASERAX_HLS_DEBUG_TAPS != 0 && LASERAX_HLS_DEBUG_TAPS != 1
+#error "LASERAX_HLS_DEBUG_TAPS must be 0 or 1"
+#endif
+
 // Pins a, b, sw, lerr and the outputs are wires; every other argument is one register of the
 // s_axilite slave (bundle ctrl), in offset order (docs/REGISTERS.md).
 void laserax_axil(bool a, bool b, bool sw, bool lerr,
@@ -299,7 +337,21 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::axis_out& out);
 
 #endif  // LASERAX_HLS_LASERAX_AXIL_H
-""" % (GENERATED_NOTE, args)
+""" % (GENERATED_NOTE, wrap_list(debug_taps(), "//   ", 92), args)
+
+
+def wrap_list(names, prefix, width):
+    """names as `a`, `b`, ... wrapped into comment lines of at most width characters after the first."""
+    words = ["%s%s" % (n, "," if i + 1 < len(names) else "") for i, n in enumerate(names)]
+    lines, cur = [], ""
+    for w in words:
+        if cur and len(cur) + 1 + len(w) > width:
+            lines.append(cur)
+            cur = w
+        else:
+            cur = w if not cur else cur + " " + w
+    lines.append(cur)
+    return ("\n" + prefix).join(lines)
 
 
 def gen_top_cpp(regs):
@@ -307,6 +359,7 @@ def gen_top_cpp(regs):
     pragmas = "\n".join("#pragma HLS INTERFACE mode=s_axilite port=%s offset=0x%02X bundle=ctrl" % (r.name, r.offset)
                         for r in regs)
     assigns = "\n".join("    regs.%s = %s;" % (r.hls_member, r.name) for r in regs)
+    taps = "\n".join("    out.%s = 0;" % t for t in debug_taps())
     return """// laserax_axil.cpp — Vitis HLS top function of the single-axis interface.
 //
 // %s
@@ -318,7 +371,10 @@ def gen_top_cpp(regs):
 // ap_start / ap_done / auto-restart in the control word at 0x00, the words 0x00..0x0F), as
 // Vitis requires when arguments are s_axilite and as C/RTL co-simulation needs; software starts
 // the IP once with ap_start = 1 and auto_restart = 1 (control word 0x81), after which the II = 1
-// pipeline takes one call per clock. Build for Vitis with -DLASERAX_USE_AP_TYPES (see
+// pipeline takes one call per clock. The registers start at 0, not at their reset values (an
+// s_axilite argument has no initial value): software writes the whole image before the start
+// (lxt::init_registers, host/ip_init.h). The debug taps of lx::axis_out are 0 unless
+// LASERAX_HLS_DEBUG_TAPS = 1 (laserax_axil.h). Build for Vitis with -DLASERAX_USE_AP_TYPES (see
 // scripts/run_hls.tcl); the default build uses lx_types' own classes.
 #include "hls/laserax_axil.h"
 
@@ -348,8 +404,12 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
     lx::axis_regs regs;
 %s
     out = core.step(pins, regs);
+#if !LASERAX_HLS_DEBUG_TAPS
+    // the debug taps dropped (laserax_axil.h): constant 0, as DEBUG_TAPS = 0 ties them in rtl_ref
+%s
+#endif
 }
-""" % (GENERATED_NOTE, params, pragmas, assigns)
+""" % (GENERATED_NOTE, params, pragmas, assigns, taps)
 
 
 def gen_regmap_h(regs):
@@ -553,9 +613,18 @@ namespace idx {
 %s
 }  // namespace idx
 
-inline constexpr reg_info kRegs[kNumRegs] = {
+// One table for the program in C++17 (an inline variable); a C++14 translation unit (the Vitis
+// C simulation compiles its testbench files, host/ip_init.cpp among them, as C++14) has a copy of
+// its own of the constant table.
+#if __cplusplus >= 201703L
+#define LXT_REGMAP_INLINE_VAR inline
+#else
+#define LXT_REGMAP_INLINE_VAR
+#endif
+LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
 %s
 };
+#undef LXT_REGMAP_INLINE_VAR
 
 // Smallest / largest value of the register's width.
 constexpr int64_t width_min(const reg_info& r) {
@@ -801,29 +870,98 @@ axis_settings settings_from(const golden::axis_regs& g) {
 
 
 def gen_top_call_h(regs):
-    args = ",\n".join("                %s" % ("r." + r.hls_member) for r in regs)
-    return """// laserax_axil_call.h — host-side (testbench) helper: calls the synthesis top laserax_axil(),
-// whose arguments are one scalar per register, with the registers of an lx::axis_regs. Header-only
-// and built on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
+    end = max(r.offset + r.span for r in regs)
+    masks = []
+    for r in regs:
+        for off, lo, hi in word_ranges(r):
+            n = hi - lo + 1
+            what = r.name if r.words == 1 else "%s bits %d..%d" % (r.name, hi, lo)
+            masks.append("            case 0x%02X: return 0x%Xu;  // %s" % (off, (1 << n) - 1, what))
+    args = []
+    for r in regs:
+        if r.width == 1:
+            a = "at(0x%02X) != 0" % r.offset
+        elif r.words == 1:
+            a = "%s(at(0x%02X))" % (r.lx_type, r.offset)
+        else:
+            a = "%s(pair(0x%02X))" % (r.lx_type, r.offset)
+        args.append("                     %s,  // %s" % (a, r.name))
+    return """// laserax_axil_call.h — the synthesis top laserax_axil() behind a model of the HLS IP's
+// s_axilite slave, for C simulation (testbench glue): the registers are 32-bit words at their
+// offsets of docs/REGISTERS.md, all 0 at power-up as in the IP Vitis HLS makes (an s_axilite
+// argument has no initial value), written one bus word at a time (host/ip_init.h writes the whole
+// image), and every clock calls the top with the arguments the words hold. Header-only and built
+// on hls/ and the standard library only, so it compiles in the Vitis C simulation too.
 //
 // %s
 #ifndef LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 #define LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
 
+#include <cstdint>
+
 #include "hls/laserax_axil.h"
 
 namespace lxt {
 
-inline void laserax_axil_regs(bool a, bool b, bool sw, bool lerr, const lx::axis_regs& r, lx::axis_out& out) {
-    laserax_axil(a, b, sw, lerr,
-%s,
-                out);
-}
+// The HLS IP's s_axilite slave (bundle ctrl) and its block control, as the C simulation sees
+// them. A register word holds the bits of its register only (the bits above the width dropped,
+// as the Vitis slave keeps W bits; a register wider than 32 bits takes consecutive words, low
+// word first); the block-control word 0x00 keeps ap_start (bit 0) and auto_restart (bit 7). The
+// model knows only the free-running mode the IP is used in: the core runs (one call of
+// laserax_axil() per clock()) while 0x00 holds 0x81, i.e. from lxt::start_core on; a write of 0 to
+// 0x00 stops it after the current call. The state of the core (the static laserax_top of
+// hls/laserax_axil.cpp) is kept while it is stopped. Writes to 0x04..0x0F, to the reserved word
+// after each register and past the map are ignored.
+class laserax_axil_slave {
+public:
+    // One bus write (all four byte lanes); false when the word is ignored.
+    bool write(uint32_t offset, uint32_t value) {
+        if (offset == 0x00) {
+            ctrl_ = value & 0x81u;
+            return true;
+        }
+        const uint32_t m = mask(offset);
+        if (m == 0) return false;
+        w_[(offset - 0x%02Xu) / 4] = value & m;
+        return true;
+    }
+    // The word a register holds (0x00: the block control; 0 for every other offset).
+    uint32_t word(uint32_t offset) const {
+        if (offset == 0x00) return ctrl_;
+        return mask(offset) != 0 ? at(offset) : 0u;
+    }
+    bool running() const { return ctrl_ == 0x81u; }
+
+    // One clock: while the core runs, one call of laserax_axil() on the registers the words hold
+    // (true, outputs in out); else no call (false, out unchanged).
+    bool clock(bool a, bool b, bool sw, bool lerr, lx::axis_out& out) {
+        if (!running()) return false;
+        laserax_axil(a, b, sw, lerr,
+%s
+                     out);
+        return true;
+    }
+
+private:
+    // the bits a register word holds; 0 for a word that is not a register word
+    static uint32_t mask(uint32_t offset) {
+        switch (offset) {
+%s
+            default: return 0u;
+        }
+    }
+    uint32_t at(uint32_t offset) const { return w_[(offset - 0x%02Xu) / 4]; }
+    uint64_t pair(uint32_t offset) const { return (uint64_t(at(offset + 4)) << 32) | at(offset); }
+
+    uint32_t w_[(0x%02Xu - 0x%02Xu) / 4] = {};  // the words 0x%02X .. 0x%02X, 0 at power-up
+    uint32_t ctrl_ = 0;                    // block control: stopped at power-up
+};
 
 }  // namespace lxt
 
 #endif  // LASERAX_SYSMODEL_LASERAX_AXIL_CALL_H
-""" % (GENERATED_NOTE, args)
+""" % (GENERATED_NOTE, FIRST_OFFSET, "\n".join(args), "\n".join(masks), FIRST_OFFSET, end, FIRST_OFFSET,
+       FIRST_OFFSET, end - 4)
 
 
 def gen_c_h(regs):
@@ -1204,7 +1342,21 @@ Conventions:
   after power-up. With those zeros the configuration check fails (`period`, `ratio` and others
   are 0), so the core sits in the safe state with `cfg_err` set (no count is taken), until software
   writes the whole register image, then starts the block (0x81 to 0x00). A host driving the HLS
-  IP must therefore write every register once before the start, not only those it changes.
+  IP must therefore write every register once before the start, not only those it changes:
+  `lxt::init_registers(image, write)` (`host/ip_init.h`; `image` e.g. `lxt::axis_settings{}`, the
+  reset values, or a `reg_image`) writes it through the caller's register-write function, in this
+  order: `comp_sync` = 1; every other register but `comp_commit` in offset order, low word first
+  (the reserved words are not written); `comp_commit` = 1, then 0; `comp_sync` = 0 last, whatever
+  the image holds (a core that has not run yet loads `ratio` / `comp_offset` into its pair in
+  force only in a call with `comp_sync` = 0: it cannot see a commit made before the start). Then
+  `lxt::start_core(write)` writes 0x81 to 0x00; writes that need a running core come after it
+  (`comp_sync` = 1 with `lxt::compensation_writes`, `lxt::program_dds` for a table other than the
+  power-up one, `lxt::program_map`). An image with a pulse register or a table write enable at 1
+  is refused. The same sequence is correct for the RTL IP (its slave ignores the write to 0x00).
+  `tb_hls_csim` (the Vitis C-simulation testbench) brings the HLS top up this way through a model
+  of its slave whose registers start at 0 (`sysmodel/laserax_axil_call.h`) and checks that the core
+  stays in the safe state without the call and leaves it in the call after the register stage
+  with it.
 
 | offset | name | width | access | reset | units | legal | description |
 |---|---|---|---|---|---|---|---|
@@ -1237,7 +1389,8 @@ temperature, thermal origin, error-map table) to register values and back; `lase
 prints the resulting register writes (`--regs-out FILE` writes them as `offset name value`).
 It also writes the bus sequences that change registers the core must not see half-updated: the
 compensation pair (`compensation_writes`), an error-map bank (`program_map`) and the DDS table
-with its period (`program_dds`, the table load above).
+with its period (`program_dds`, the table load above), and the whole image before the core is
+started (`init_registers`, `host/ip_init.h`: see Reset above).
 
 ## RTL slave (`rtl_ref/laserax_regs.v`)
 

@@ -14,6 +14,10 @@
 #                                           through AXI4-Lite; the II = 1 pipeline free-runs once
 #                                           started with auto_restart, see hls/laserax_axil.cpp)
 #   export    EXPORT            default 0   export_design -format ip_catalog
+#   debug_taps LASERAX_DEBUG_TAPS default 0  -DLASERAX_HLS_DEBUG_TAPS=<0|1> for design and
+#                                           testbench: 0 drops the debug taps of the top's
+#                                           outputs (the deployed core, as DEBUG_TAPS = 0 in
+#                                           rtl_ref), 1 drives them (hls/laserax_axil.h)
 #   reset     RESET             default 0   open the project with -reset (drops earlier results)
 # The project folder laserax_hls/ is created in the repository root (ignored by git).
 
@@ -24,8 +28,10 @@ set csynth   1
 set cosim    0
 set export   0
 set reset    0
+set debug_taps 0
 
-set envmap {part LASERAX_PART clock_ns LASERAX_CLOCK_NS csim CSIM csynth CSYNTH cosim COSIM export EXPORT reset RESET}
+set envmap {part LASERAX_PART clock_ns LASERAX_CLOCK_NS csim CSIM csynth CSYNTH cosim COSIM export EXPORT reset RESET
+            debug_taps LASERAX_DEBUG_TAPS}
 foreach {var envname} $envmap {
     if {[info exists ::env($envname)] && $::env($envname) ne ""} {
         set $var $::env($envname)
@@ -36,8 +42,8 @@ if {[info exists argv]} {
         if {[regexp {^-*([A-Za-z_]+)=(.*)$} $arg -> key value]} {
             set key [string tolower $key]
             if {$key eq "clock"} { set key clock_ns }
-            if {[lsearch -exact {part clock_ns csim csynth cosim export reset} $key] < 0} {
-                puts "run_hls.tcl: unknown setting '$key' (known: part clock_ns csim csynth cosim export reset)"
+            if {[lsearch -exact {part clock_ns csim csynth cosim export reset debug_taps} $key] < 0} {
+                puts "run_hls.tcl: unknown setting '$key' (known: part clock_ns csim csynth cosim export reset debug_taps)"
                 exit 2
             }
             set $key $value
@@ -50,8 +56,9 @@ set root [file normalize [file join [file dirname [info script]] ..]]
 cd $root
 
 # The files of the C simulation: the design, and the testbench with the golden chain it compares
-# against: exactly the sources CMake compiles for tb_hls_csim (the .cpp files tb/tb_hls_csim.cpp
-# reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
+# against and the host's initialisation call it writes the registers with (host/ip_init.cpp and
+# the register table it reads): exactly the sources CMake compiles for tb_hls_csim (the .cpp files
+# tb/tb_hls_csim.cpp reaches through its #includes; no Eigen). CTest hls_tcl_files compares these two lists with
 # <build>/hls_csim_sources.txt, so they cannot drift (scripts/check_hls_tcl.py).
 set design_files {
     hls/laserax_axil.cpp
@@ -66,16 +73,23 @@ set tb_files {
     golden/pulse_multiplier.cpp
     golden/quad_decoder.cpp
     golden/rephase.cpp
+    host/ip_init.cpp
+    host/regmap_table.cpp
 }
 
 # Compile flags, the same for design and testbench: C++14 (the Vitis front end), the ap_int back
-# end of hls/lx_types.h (Vitis supplies ap_int.h itself), includes from the repository root.
+# end of hls/lx_types.h (Vitis supplies ap_int.h itself), the debug-taps switch of the top,
+# includes from the repository root.
 # Absolute -I: csim compiles inside the solution folder, where a relative -I. would not resolve.
 # csim_design compiles without optimisation (its default, no -O); `make test` runs the same
 # testbench built with the vendor ap_int.h at -O0 and -O2 (CTest tb_hls_csim.ap_O0 / .ap_O2).
-set cflags "-std=c++14 -DLASERAX_USE_AP_TYPES -I$root"
+if {$debug_taps ne "0" && $debug_taps ne "1"} {
+    puts "run_hls.tcl: debug_taps must be 0 or 1, not '$debug_taps'"
+    exit 2
+}
+set cflags "-std=c++14 -DLASERAX_USE_AP_TYPES -DLASERAX_HLS_DEBUG_TAPS=$debug_taps -I$root"
 
-puts "run_hls.tcl: part=$part clock=${clock_ns}ns csim=$csim csynth=$csynth cosim=$cosim export=$export"
+puts "run_hls.tcl: part=$part clock=${clock_ns}ns csim=$csim csynth=$csynth cosim=$cosim export=$export debug_taps=$debug_taps"
 
 if {$reset} {
     open_project -reset laserax_hls
@@ -93,8 +107,9 @@ create_clock -period $clock_ns -name default
 if {$csim}   { csim_design }
 if {$csynth} { csynth_design }
 # co-simulation drives every call through the AXI4-Lite adapter: the testbench's default of
-# 400000 calls would be 400000 bus transactions, so cosim runs it with 20000 calls (homing and
-# Z need at least 10000; tb_hls_csim refuses fewer)
+# 400000 calls would be 400000 bus transactions, so cosim runs it with 20000 calls after the
+# initialisation (homing and Z need at least 10000; tb_hls_csim refuses fewer), plus the 3000
+# calls before it in which the core must hold cfg_err on its zero registers
 if {$cosim}  { cosim_design -rtl verilog -argv {--calls 20000} }
 if {$export} { export_design -format ip_catalog }
 exit

@@ -37,7 +37,11 @@
 // 7. Host settings: lxt::axis_settings (host/regmap_table.h, the host library's own settings type)
 //    defaults equal the CSV resets; image <-> settings exact; to_hls / to_golden of the settings
 //    equal hls_from / golden_from of the image; a member outside its width is refused by name.
-// Each topic is one function (test_defaults .. test_host_settings), run in this order by main().
+// 8. HLS IP initialisation (lxt::init_registers, host/ip_init.h): the documented write order and
+//    count; on a word image of zeros (the HLS IP's registers at power-up) the writes leave exactly
+//    the image, for the reset image and random ones; pulse registers / table write enables at 1
+//    and a value outside its width are refused before any write.
+// Each topic is one function (test_defaults .. test_init_registers), run in this order by main().
 // ctest-args: --seed 5 --samples 3000
 // ctest-args-O0: --seed 5 --samples 300
 #include <algorithm>
@@ -58,6 +62,7 @@
 #include "host/dds_table.h"
 #include "tools/laserax/compensate_cmd.h"
 #include "host/laserax_regs_c.h"
+#include "host/ip_init.h"
 #include "host/regmap.h"
 #include "sysmodel/model_regs.h"
 #include "host/regmap_table.h"
@@ -1059,6 +1064,90 @@ void test_host_settings(ctx& topic) {
                 "equal to the model structs' conversions\n", trips);
 }
 
+// ---- 8. initialisation before the start (lxt::init_registers, host/ip_init.h) ----------------
+// The documented order: comp_sync = 1 first; then the words of every register but comp_sync and
+// comp_commit, each once, in offset order (low word first); comp_commit = 1, comp_commit = 0;
+// comp_sync = 0 last; init_register_writes() writes. Replayed into a word image of zeros (the HLS
+// IP at power-up) they leave exactly the image (comp_sync 0), for the reset image and random images
+// (every register random in its width, the pulse registers and table write enables 0); the
+// reg_image overload writes the same sequence. Refused with nothing written: a pulse register or a
+// table write enable at 1, a member outside its register's width. Its own random stream.
+void test_init_registers(ctx& topic) {
+    tbu::result& res = topic.res;
+    std::mt19937_64 rng(topic.seed ^ 0x1417a11ull);
+    struct bus_log {
+        std::vector<std::pair<uint32_t, uint32_t>> w;
+        lxt::bus_write_fn fn() {
+            return [this](uint32_t offset, uint32_t value) { w.emplace_back(offset, value); };
+        }
+    };
+    const uint32_t sync_off = rm::kRegs[rm::idx::comp_sync].offset;
+    const uint32_t commit_off = rm::kRegs[rm::idx::comp_commit].offset;
+    std::vector<uint32_t> body;  // the register words of step 2, in offset order
+    for (int i = 0; i < rm::kNumRegs; ++i)
+        if (i != rm::idx::comp_sync && i != rm::idx::comp_commit)
+            for (int w = 0; w < rm::kRegs[i].words(); ++w) body.push_back(rm::kRegs[i].offset + 4u * static_cast<uint32_t>(w));
+    res.check(static_cast<int>(body.size()) + 4 == lxt::init_register_writes(),
+              "init_register_writes() != the words of the map + 4");
+    std::string where, err;
+    long images = 0;
+    for (int t = 0; t < 500; ++t) {
+        lxt::axis_settings s{};  // t == 0: the reset image
+        if (t > 0) {
+            for (int i = 0; i < rm::kNumRegs; ++i) {
+                const rm::reg_info& r = rm::kRegs[i];
+                const bool action = r.acc == rm::access::pulse || (r.acc == rm::access::port && r.width == 1);
+                const int64_t v = action ? 0 : std::uniform_int_distribution<int64_t>(rm::width_min(r), rm::width_max(r))(rng);
+                res.check(rm::set(s, i, v), std::string("settings set ") + r.name);
+            }
+        }
+        bus_log log;
+        err.clear();
+        if (!res.expect(lxt::init_registers(s, log.fn(), &err), [&] { return "init_registers refused an image: " + err; }))
+            continue;
+        const auto& w = log.w;
+        bool order = w.size() == body.size() + 4 && w.front() == std::make_pair(sync_off, 1u) &&
+                     w.back() == std::make_pair(sync_off, 0u);
+        if (order) {
+            order = w[w.size() - 3] == std::make_pair(commit_off, 1u) && w[w.size() - 2] == std::make_pair(commit_off, 0u);
+            for (size_t k = 0; k < body.size(); ++k) order = order && w[k + 1].first == body[k];
+        }
+        res.check(order, "init_registers: the writes are not in the documented order (image " + std::to_string(t) + ")");
+        lxt::reg_image want, got;
+        res.check(lxt::image_from(s, &want), "image_from");
+        want.set(rm::idx::comp_sync, 0);
+        for (uint32_t off = rm::kFirstOffset; off < rm::kEndOffset; off += 4) got.write_word(off, 0);
+        for (const auto& x : w) res.check(got.write_word(x.first, x.second, &err), "init_registers wrote outside the map: " + err);
+        res.expect(same_words(want, got, &where), [&] { return "init_registers on zeros does not leave the image: " + where; });
+        bus_log log2;
+        // (want holds comp_sync = 0, s maybe 1: the image's comp_sync is not written, the same writes)
+        res.check(lxt::init_registers(want, log2.fn()) && log2.w == w,
+                  "init_registers(reg_image) differs from init_registers(settings)");
+        ++images;
+    }
+    // refused, nothing written
+    for (int i = 0; i < rm::kNumRegs; ++i) {
+        const rm::reg_info& r = rm::kRegs[i];
+        const bool action = r.acc == rm::access::pulse || (r.acc == rm::access::port && r.width == 1);
+        if (!action) continue;
+        lxt::axis_settings s{};
+        rm::set(s, i, 1);
+        bus_log log;
+        err.clear();
+        res.check(!lxt::init_registers(s, log.fn(), &err) && log.w.empty() && err.find(r.name) != std::string::npos,
+                  std::string("init_registers accepted ") + r.name + " = 1 (or wrote before refusing): '" + err + "'");
+    }
+    lxt::axis_settings wide{};
+    wide.period = int64_t(1) << 13;  // 13-bit register
+    bus_log log;
+    err.clear();
+    res.check(!lxt::init_registers(wide, log.fn(), &err) && log.w.empty() && err.find("period") != std::string::npos,
+              "init_registers accepted period = 2^13 (or wrote before refusing): '" + err + "'");
+    std::printf("  init_registers: %ld images (the reset image and random ones) in the documented order, %d writes "
+                "each, leaving the image on zeros; pulses / write enables at 1 and a value outside its width refused\n",
+                images, lxt::init_register_writes());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -1075,5 +1164,6 @@ int main(int argc, char** argv) {
     test_compensate_regs_out(c);  // 5. (laserax compensate --regs-out)
     test_dds_table_load(c);       // 6.
     test_host_settings(c);        // 7.
+    test_init_registers(c);       // 8.
     return res.finish();
 }
