@@ -5,7 +5,8 @@
 // One call of step() (or of tick()) is one clock. step(pins, regs) presents a register block in
 // every call; the C simulation also has a register write port, write_regs(), and tick(), which
 // presents the last block written and returns the outputs by reference (the interface the
-// testbenches use, lxt::dual_axis; C simulation only, absent from synthesis). Between two blocks there is
+// testbenches use, lxt::dual_axis; in the synthesis view, where the top calls step() only, they are
+// host-side wrappers of step()). Between two blocks there is
 // exactly one register stage: a block consumes the outputs its upstream block returned at the
 // previous call (held in out_, the outputs of the previous call, and in the *_q members for those
 // no output shows).
