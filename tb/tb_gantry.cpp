@@ -1,4 +1,4 @@
-// ctest-args-O0: --samples-div 64 --small-sweeps 0 --alarm-stride 4
+// ctest-args-O0: --samples-div 64 --small-sweeps 0 --alarm-stride 4 --period-max 320
 // tb_gantry — twin-axis (gantry) referencing with two compensators (docs/GANTRY.md): the
 // cycle-accurate system (two lx::laserax_top, a controller that decodes their sin/cos, coupled
 // mechanics) against the floating-point golden model golden/gantry_model, over the power-up
@@ -177,7 +177,8 @@ int main(int argc, char** argv) {
     };
     std::vector<table_row> table;
 
-    // --samples-div D: 1/D of the random combinations (the -O0 type back-end build); the two
+    // --samples-div D: 1/D of the random combinations (the -O0 type back-end build; D > 1 also runs
+    // 4 of the 16 P = 256 alarm combinations, the directed one included); the two
     // extreme combinations of every period and the exhaustive part are always run
     const long long samples_div = tbu::arg_ll(argc, argv, "--samples-div", 1);
     // --small-sweeps 0: leave out the repeated P = 8 / 16 sweeps (the P = 16 exhaustive skew sweep,
@@ -190,6 +191,13 @@ int main(int argc, char** argv) {
     const long long alarm_stride = tbu::arg_ll(argc, argv, "--alarm-stride", 1);
     if (alarm_stride < 1 || alarm_stride > 16) {
         std::printf("tb_gantry: --alarm-stride must be 1..16\n");
+        return 2;
+    }
+    // --period-max N: the sampled part only for the periods up to N (the -O0 build: 256 and 320;
+    // the runs grow with P, P = 1280 alone was a third of that build's clocks)
+    const long long period_max = tbu::arg_ll(argc, argv, "--period-max", 1280);
+    if (period_max < 256) {
+        std::printf("tb_gantry: --period-max must be >= 256\n");
         return 2;
     }
     if (samples_div < 1 || samples_div > 64) {
@@ -218,6 +226,7 @@ int main(int argc, char** argv) {
     const int periods[5] = {256, 320, 512, 640, 1280};
     for (int k = 0; k < 5; ++k) {
         const int p = periods[k];
+        if (p > period_max) continue;
         stats st;
         std::vector<std::pair<int, int>> combos = {{phase_for_d(p, p - 1), phase_for_d(p, 0)},
                                                    {phase_for_d(p, 0), phase_for_d(p, p - 1)}};
@@ -300,7 +309,8 @@ int main(int argc, char** argv) {
         const int p = 256, limit = 100;
         int alarms = 0, expected = 0, n = 0;
         std::uniform_int_distribution<int> ph(0, p - 1);
-        for (int i = 0; i < 16; ++i) {
+        const int runs = samples_div > 1 ? 4 : 16;  // (--samples-div: the directed one and three random)
+        for (int i = 0; i < runs; ++i) {
             lxt::gantry_config c = base(p);
             c.phase[0] = ph(rng);
             c.phase[1] = ph(rng);
