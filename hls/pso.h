@@ -11,8 +11,9 @@
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
-//   stage Q  (A of the last call)  the chord ROM address s = sum D_i^2 (the BRAM's address
-//                                  register).
+//   stage Q  (A of the last call)  the chord ROM address s = sum D_i^2, into the ROM's block RAM
+//                                  (its address register; the word is in the RAM's output
+//                                  register in the next call).
 //   stage R  (Q of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32), the estimate step
 //                                  Y = chord + one - (the open chord, unless a reversal closed it).
 //   stage B1 (R of the last call)  Y - thr for two candidate thresholds of the fire after the
@@ -44,10 +45,8 @@
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
 
-#include <cstddef>
-#include <utility>  // std::index_sequence (compile-time only: the chord ROM initialiser)
-
 #include "hls/axis_config.h"
+#include "hls/lx_ram.h"
 
 namespace lx {
 
@@ -119,7 +118,8 @@ struct pso_cfg {
 // the digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
 // partial remainder stays below 2 * root + 1 < 2^40). Ties cannot occur (sqrt(s) * 2^32 is an
 // integer or irrational), so "round to nearest" needs no tie rule: root + 1 when the remainder
-// x - root^2 exceeds root.
+// x - root^2 exceeds root. The words are the INIT of the ROM's block RAM (lx::ram_list: count,
+// word(s)); the ROM is pso_chord_rom_t, 769 words of W_CHORD = 37 bits, read-only, one port.
 struct pso_chord_rom {
     static constexpr uint64_t round_sqrt(uint64_t s) {
         constexpr int s_pairs = (pso_cfg::W_S + 1) / 2;
@@ -138,20 +138,15 @@ struct pso_chord_rom {
         }
         return rem > root ? root + 1 : root;
     }
-
-    // The ROM is the array `rom` itself (a function-local static with a constant initialiser,
-    // one element per s), so BIND_STORAGE names the array where it is declared.
-    template <std::size_t... S>
-    static pso_cfg::chord_t lookup(pso_cfg::s_t s, std::index_sequence<S...>) {
-        static const uint64_t rom[sizeof...(S)] = {round_sqrt(S)...};
-#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
-        return rom[s.to_uint()];
-    }
+    static constexpr int count = pso_cfg::S_MAX + 1;
+    static constexpr uint64_t word(int s) { return round_sqrt(static_cast<uint64_t>(s)); }
 };
-
-inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
-    return pso_chord_rom::lookup(s, std::make_index_sequence<pso_cfg::S_MAX + 1>());
-}
+// W_CHORD is the real width of the words: the largest word needs all of its bits
+static_assert(pso_chord_rom::round_sqrt(pso_cfg::S_MAX) < (1ULL << pso_cfg::W_CHORD) &&
+                  pso_chord_rom::round_sqrt(pso_cfg::S_MAX) >= (1ULL << (pso_cfg::W_CHORD - 1)),
+              "chord ROM: the largest word is W_CHORD bits wide");
+using pso_chord_rom_t = ram<pso_cfg::chord_t, pso_chord_rom::count, RAM_1P,
+                            ram_list<pso_cfg::chord_t, pso_chord_rom::count, pso_chord_rom>>;
 
 // Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched
 // at the rising edge of the run state (enable with a valid configuration); the others act live.
@@ -252,8 +247,16 @@ public:
     // rp: the register values presented in this call; they are in force in the next call
     // (register stage, docs/PSO_COUNTERS.md §2.2), with their configuration check formed now.
     out_t step(const pso_in& in, const pso_regs& rp) {
+#pragma HLS BIND_STORAGE variable = rom_.m_.w type = rom_1p impl = bram
+        rom_.next_call();
         const pso_regs r = rq_;    // the values in force (presented in the last call)
         const bool cfg_ok = ok_q_; // their check, formed in the last call
+        // chord ROM (every call, as rtl_ref: the port has no enable): stage R's chord is the word
+        // read in the last call; stage Q's address s = sum |Dn_i|^2 of stage A's squares goes into
+        // the ROM's address register now (its word is stage R's chord in the next call)
+        const cfg::chord_t chord = rom_.q<0>();
+        const cfg::s_t s = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
+        rom_.read<0>(s.to_uint());
         if (r.arr_we) arr_[r.arr_addr.to_uint()] = r.arr_data;
         // register stage: the bad-entry map after the presented write (one call ahead of the
         // RAM), the check of the presented values against it
@@ -388,18 +391,22 @@ public:
         p_inwin_ = r_v_ && r_inwin_;
         p_v_ = r_v_;
 
-        // ---- stage R: chord ROM read at the address stage Q wrote, the estimate step ----
-        const uint64_t chord = pso_chord(q_s_).to_uint64();
-        const uint64_t one = q_pulse_ ? cfg::ONE : 0;
-        // Y = est - est of the previous entry: this entry's chord (plus a generator pulse), less the
-        // open chord it extends (a reversal closed that one, a K close left none); >= 0
-        r_y_ = chord + one - (q_rev_ ? uint64_t(0) : part_.to_uint64());
-        part_ = q_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
+        // ---- stage R: the ROM word of stage Q's address (read in the last call), the estimate
+        // step; 0 while Q holds no data (the ROM's output register is not reset) ----
+        if (q_v_) {
+            const uint64_t one = q_pulse_ ? cfg::ONE : 0;
+            // Y = est - est of the previous entry: this entry's chord (plus a generator pulse),
+            // less the open chord it extends (a reversal closed that one, a K close left none); >= 0
+            r_y_ = chord.to_uint64() + one - (q_rev_ ? uint64_t(0) : part_.to_uint64());
+            part_ = q_kclose_ ? cfg::chord_t(0) : chord;
+        } else {
+            r_y_ = 0;
+            part_ = 0;
+        }
         r_inwin_ = q_inwin_;
         r_v_ = q_v_;
 
-        // ---- stage Q: the ROM address s = sum |Dn_i|^2 from stage A's squares ----
-        q_s_ = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
+        // ---- stage Q: the flags of the ROM word read above (its address from stage A's squares) ----
         q_rev_ = a_rev_;
         q_kclose_ = a_kclose_;
         q_pulse_ = a_pulse_;
@@ -485,6 +492,13 @@ public:
         return o;
     }
 
+    // the host's side (C simulation and tests, between calls; never reached from the synthesis
+    // top): a word of the chord ROM as stored, and the sticky RAM-rule flags (lx_ram.h)
+    cfg::chord_t chord_word(unsigned s) const { return rom_.peek(s); }
+#ifndef __SYNTHESIS__
+    int ram_violations() const { return rom_.violations(); }
+#endif
+
 private:
     // While the tracking state is in reset: the threshold a run starting in the next call takes
     // (fire_dist in force then, or entry 0 as the RAM stands after the next call's write).
@@ -513,7 +527,6 @@ private:
         a_pulse_ = false;
         a_inwin_ = false;
         a_v_ = false;
-        q_s_ = 0;
         q_rev_ = false;
         q_kclose_ = false;
         q_pulse_ = false;
@@ -579,6 +592,9 @@ private:
         o.ps_count = ps_cnt_;
     }
 
+    // chord ROM (block RAM, RAM_1P read-only: one read per call, its output register is stage R's
+    // chord)
+    pso_chord_rom_t rom_;
     // array RAM and its "entry below the minimum distance" bitmap (the map after the write
     // presented in the last call: one call ahead of the RAM)
     cfg::dist_t arr_[cfg::ARR_DEPTH];
@@ -591,7 +607,6 @@ private:
     bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;
     cfg::sq_t a_sq_[cfg::N_AXES];  // |Dn_i|^2 of this call's travel (the terms of the ROM address)
     // stage Q
-    cfg::s_t q_s_;                 // ROM address (the block RAM's address register)
     bool q_rev_, q_kclose_, q_pulse_, q_inwin_, q_v_;
     cfg::inc_t ph_;
     pos_t ps_cnt_;
