@@ -17,10 +17,11 @@
 //   stage R  (Q of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32), the estimate step
 //                                  Y = chord + one - (the open chord, unless a reversal closed it).
 //   stage B1 (R of the last call)  Y - thr for two candidate thresholds of the fire after the
-//                                  next (next, next^2 of the index before the move of the
-//                                  decision being taken in B2).
+//                                  next (entries next, next^2 of the index of the last call,
+//                                  before its move: the prefetch, below).
 //   stage P  (B1 of the last call) the loop operands: Y, and the difference for the index after
-//                                  the move B2 decided in the last call, picked by that move.
+//                                  the moves B2 decided up to the last call, picked by "the index
+//                                  moved in one of the last two calls" (at most one can).
 //   stage B2 (P of the last call)  the loop on u = value - thr: decide the entry in u (fire when
 //                                  u >= 0 and the last call did not fire) and add the next
 //                                  entry's operand, picked by that decision (u + Y - thr' after a
@@ -30,6 +31,14 @@
 //                                  the last call and one candidate per stage is enough.
 //   stage B3 (B2 of the last call) apply the decision: fire / emit outputs, pulse timer, flags,
 //                                  counters, dist = u (+ thr without a fire), index outputs.
+//
+// Threshold prefetch (every call, as rtl_ref): the firing-distance array is three copies of
+// a 64 x 56 block RAM (RAM_S2P: one read and the shared write port per call each), read at
+// next, next^2, next^3 of the call's index. In the next call the three words (with the write
+// presented in the read call forwarded: the RAM reads first) are shifted by the read call's
+// index move, the write presented in this call is forwarded, and entries next(idx), next^2(idx)
+// of this call (or fire_dist) are registered for B1 of the next call: the RAM data land in
+// registers only. Entry 0 has a register copy (the start threshold of a run).
 //
 // With K = 1 every step closes its window and the increment is the per-call magnitude
 // 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
@@ -56,7 +65,7 @@ struct pso_cfg {
     static constexpr int D_FRAC = 32;       // fraction bits of every distance (2^-32 count)
     static constexpr int D_INT = 24;        // distance registers: < 2^24 counts (1.31 m)
     static constexpr int K_MAX = 16;        // longest tracking window, counts on one axis (ROM: 10 BRAMs)
-    static constexpr int ARR_DEPTH = 64;    // firing-distance array (distributed RAM)
+    static constexpr int ARR_DEPTH = 64;    // firing-distance array (three block-RAM copies)
     static constexpr int W_PW = 16;         // pulse width register, clocks
     static constexpr int W_GAP = 16;        // laser minimum pulse period register, clocks
     static constexpr int W_INC = 32;        // part-speed rate, Q0.32 counts per clock
@@ -225,39 +234,114 @@ public:
     };
 
     pso() {
-        LX_LOOP(arr_init) for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
-        arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
-        rq_ = pso_regs();           // register stage: the reset values in force
-        ok_q_ = pso_config_ok(rq_, arr_bad_);
+        // registers without a reset in rtl_ref (the prefetch, the thresholds): 0 at power-up
+        th1_ = 0;
+        th2_ = 0;
+        fw1_ = false;
+        fw2_ = false;
+        fw3_ = false;
+        f_data_ = 0;
+        st_ = 0;
+        thr_ = 0;
+        p_th1_ = 0;
+        p_th2_ = 0;
+        b_thF0_ = 0;
         reset();
     }
 
-    // Reset of the state (not of the array RAM).
+    // rtl_ref i_rst: the register stage at the reset values (a legal configuration), every array
+    // entry "not written", the state in reset; the RAM contents are kept (no RAM reset).
     void reset() {
-        reset_track();
-        run_q_ = false;
-        fire_cnt_ = 0;
-        ovl_cnt_ = 0;
-        overlap_st_ = false;
-        rate_over_st_ = false;
-        spacing_st_ = false;
-        freq_st_ = false;
+        arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
+        entry0_ = 0;
+        rq_ = pso_regs();           // register stage: the reset values in force
+        ok_q_ = pso_config_ok(rq_, arr_bad_);
+        reset_track(rq_);
+        reset_counts();
     }
 
     // rp: the register values presented in this call; they are in force in the next call
     // (register stage, docs/PSO_COUNTERS.md §2.2), with their configuration check formed now.
     out_t step(const pso_in& in, const pso_regs& rp) {
 #pragma HLS BIND_STORAGE variable = rom_.m_.w type = rom_1p impl = bram
+#pragma HLS BIND_STORAGE variable = arr1_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = arr2_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = arr3_.m_.w type = ram_s2p impl = bram
         rom_.next_call();
+        arr1_.next_call();
+        arr2_.next_call();
+        arr3_.next_call();
         const pso_regs r = rq_;    // the values in force (presented in the last call)
         const bool cfg_ok = ok_q_; // their check, formed in the last call
-        // chord ROM (every call, as rtl_ref: the port has no enable): stage R's chord is the word
-        // read in the last call; stage Q's address s = sum |Dn_i|^2 of stage A's squares goes into
-        // the ROM's address register now (its word is stage R's chord in the next call)
+        const bool run = run_q_;   // the last call ran (this one continues the run)
+        // ---- every call, as rtl_ref (no reset, no enable): the RAM ports, the threshold
+        // prefetch, the threshold registers. The stages below read these registers as they were
+        // before the call:
+        const cfg::dist_t th1 = th1_, th2 = th2_;    // B1's thresholds (prefetched in the last call)
+        const cfg::dist_t thr = thr_;                // the threshold of the next fire
+        const cfg::dist_t thr_now = run ? thr : st_; // the same in a run's first call (spacing sample)
+        const bool mv = mv_;                         // P's pick: the index moved in one of the last two calls
+        // chord ROM: stage R's chord is the word read in the last call; stage Q's address
+        // s = sum |Dn_i|^2 of stage A's squares goes into the ROM's address register now (its
+        // word is stage R's chord in the next call)
         const cfg::chord_t chord = rom_.q<0>();
         const cfg::s_t s = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
         rom_.read<0>(s.to_uint());
-        if (r.arr_we) arr_[r.arr_addr.to_uint()] = r.arr_data;
+        // the array index of this call (after the decisions up to the last call): the index
+        // registers hold the index before the last call's move and next .. next^4 of it, adv_ is
+        // that move (a decision goes into the one register adv_)
+        const cfg::len_t idx_l = adv_ ? nx_p_ : idx_p_;
+        const cfg::len_t nx_l = adv_ ? nx2_p_ : nx_p_;
+        const cfg::len_t nx2_l = adv_ ? nx3_p_ : nx2_p_;
+        const cfg::len_t nx3_l = adv_ ? nx4_p_ : nx3_p_;
+        const cfg::len_t nx4_l = adv_ ? next_idx(nx4_p_, arr_len_q_) : nx4_p_;
+        // threshold prefetch for the next call's B1: the words the three array copies returned
+        // (entries next .. next^3 of the last call's index) with the write presented in the last
+        // call forwarded (made after the read: read-first), shifted by the last call's move:
+        // entries next(idx), next^2(idx) of this call, as the RAM stands in this call; then the
+        // write presented now (in force in the next call) forwarded into them, or fire_dist
+        // presented now outside array mode. The first operands of a run take the start
+        // threshold thr (nf: the next call's B1 makes them).
+        const cfg::dist_t e1 = fw1_ ? f_data_ : arr1_.q<0>();
+        const cfg::dist_t e2 = fw2_ ? f_data_ : arr2_.q<0>();
+        const cfg::dist_t e3 = fw3_ ? f_data_ : arr3_.q<0>();
+        const bool arr_en_e = run ? arr_en_q_ : r.arr_en;  // array mode of this call (latched in a run)
+        const bool nf = q_v_ && !r_v_;
+        const bool pw1 = rp.arr_we && arr_en_e && !nf && rp.arr_addr == cfg::addr_t(nx_l);
+        const bool pw2 = rp.arr_we && arr_en_e && rp.arr_addr == cfg::addr_t(nx2_l);
+        const cfg::dist_t q1 = nf ? thr : arr_en_e ? (adv_ ? e2 : e1) : rp.fire_dist;
+        const cfg::dist_t q2 = arr_en_e ? (adv_ ? e3 : e2) : rp.fire_dist;
+        th1_ = pw1 ? rp.arr_data : q1;
+        th2_ = pw2 ? rp.arr_data : q2;
+        // the array: one read per copy (next, next^2, next^3 of this call's index), then the write
+        // presented now into all three (after the reads: read-first, so a read of the written
+        // address returns the old word; fwk_ marks it for the forward above in the next call)
+        arr1_.read<0>(cfg::addr_t(nx_l).to_uint());
+        arr2_.read<0>(cfg::addr_t(nx2_l).to_uint());
+        arr3_.read<0>(cfg::addr_t(nx3_l).to_uint());
+        fw1_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx_l);
+        fw2_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx2_l);
+        fw3_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx3_l);
+        f_data_ = rp.arr_data;
+        if (rp.arr_we) {
+            arr1_.write(rp.arr_addr.to_uint(), rp.arr_data);
+            arr2_.write(rp.arr_addr.to_uint(), rp.arr_data);
+            arr3_.write(rp.arr_addr.to_uint(), rp.arr_data);
+        }
+        // the threshold of the next fire: in every call without a run the start threshold st_
+        // (so thr_ holds it from a run's call 1 on), in a run the threshold of a take, decided
+        // from the B2 registers (u >= 0, operands held, no fire in the last call, not done, the
+        // fire would not end the array: a fire or the run start takes the next threshold)
+        const bool take = u_ >= 0 && b_v_ && !c_fire_ && !done_ && !stop0_;
+        if (!run) {
+            thr_ = st_;
+        } else if (take) {
+            thr_ = b_thF0_;
+        }
+        // the start threshold of a run beginning in the next call: fire_dist presented now, or
+        // entry 0 after the write presented now (entry0_, a register copy of entry 0)
+        st_ = start_thr(rp);
+        if (rp.arr_we && rp.arr_addr == 0) entry0_ = rp.arr_data;
         // register stage: the bad-entry map after the presented write (one call ahead of the
         // RAM), the check of the presented values against it
         if (rp.arr_we) {
@@ -267,9 +351,9 @@ public:
         ok_q_ = pso_config_ok(rp, arr_bad_);
         rq_ = rp;
         out_t o;  // every field 0 / false (default member initialisers)
-        if (!cfg_ok) {
-            reset();
-            thr_ = start_thr(rp);
+        if (!cfg_ok) {  // everything but the RAMs, the register stage and the bad-entry map
+            reset_track(rp);
+            reset_counts();
             o.cfg_err = true;
             return o;
         }
@@ -281,8 +365,7 @@ public:
             ovl_cnt_ = 0;
         }
         if (!r.enable) {
-            reset_track();
-            thr_ = start_thr(rp);
+            reset_track(rp);
             fill_status(o);
             return o;
         }
@@ -294,21 +377,6 @@ public:
             arr_wrap_q_ = r.arr_wrap;
             run_q_ = true;
         }
-        // ---- stage B1 thresholds (read before B2 moves the index) ----
-        // the candidate thresholds of the fire after the next: entries next(idx), next^2(idx)
-        // of the index before this call's B2 move (P picks one of them in the next call, by that
-        // move); fire_dist in force otherwise. The RAM is read after this call's write. The
-        // first operands of a run take the start threshold thr_.
-        cfg::len_t nx = idx_ + 1;
-        if (nx >= arr_len_q_) nx = 0;
-        cfg::len_t nx2 = nx + 1;
-        if (nx2 >= arr_len_q_) nx2 = 0;
-        const bool first = r_v_ && !p_v_;
-        const cfg::dist_t th1 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
-        const cfg::dist_t th2 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
-        const cfg::dist_t thr_in = thr_;  // the threshold of the next fire (spacing sample)
-        const bool adv_last = adv_;       // the last call's move (P's pick; B2 overwrites adv_)
-
         // ---- stage B3 (from the B2 registers): apply the decision of the last call ----
         const bool fire = c_fire_;
         const bool emit = fire && c_inwin_;
@@ -330,64 +398,62 @@ public:
         const bool in_win_used = c_inwin_;
         // c_u_ is u of the last decision, c_tm_ its threshold if it did not fire (else 0)
         if (c_live_) dist_ = c_u_ + cfg::rem_t(c_tm_.to_uint64());
-        idx_o_ = idx_;
+        idx_o_ = idx_l;
         done_o_ = done_;
 
-        // ---- stage B2 (from the B1 registers): the loop on u, decision, array index ----
+        // ---- stage B2 (from the P registers): the loop on u, decision, array index ----
         // (no fire in the call after a fire: `fire` is the last call's decision. With thresholds
         // >= MIN_DIST it never acts, u < 0 after a fire; so a fire never follows a move of the
-        // last call, and b_opF0_ is the operand for the index as it stands)
+        // last call: b_opF0_ is the operand for the index as it stands, and stop0_, formed in
+        // the last call for the index without its move, says whether this decision ends the
+        // array. The take of the next threshold is above, with the threshold register.)
         const bool pos = u_ >= 0 && !fire;
         const bool dec = u_v_ && !done_ && pos;  // value - thr >= 0
-        const bool last_stop = arr_en_q_ && idx_ + 1 >= arr_len_q_ && !arr_wrap_q_;
-        const bool take = b_v_ && pos && !done_ && !last_stop;  // a fire (or the run start) takes thr
-        const cfg::rem_t opF = b_opF0_;
-        const cfg::dist_t thF = b_thF0_;
+        const bool moved = dec && arr_en_q_ && !stop0_;
         c_fire_ = dec;
         c_inwin_ = u_inwin_;
         c_live_ = u_v_ && !done_;
         c_u_ = u_;
-        c_tm_ = pos ? cfg::dist_t(0) : thr_;
-        u_ = pos ? cfg::rem_t(u_.to_int64() + opF.to_int64()) : cfg::rem_t(u_.to_int64() + static_cast<int64_t>(b_y_.to_uint64()));
-        if (take) thr_ = thF;
-        bool moved = false;
-        if (dec && arr_en_q_) {
-            if (idx_ + 1 >= arr_len_q_) {
-                if (arr_wrap_q_) {
-                    idx_ = 0;
-                    moved = true;
-                } else {
-                    done_ = true;
-                }
-            } else {
-                idx_ = idx_ + 1;
-                moved = true;
-            }
-        }
+        c_tm_ = pos ? cfg::dist_t(0) : thr;
+        u_ = pos ? cfg::rem_t(u_.to_int64() + b_opF0_.to_int64()) : cfg::rem_t(u_.to_int64() + static_cast<int64_t>(b_y_.to_uint64()));
+        if (dec && stop0_) done_ = true;
+        // the index registers: this call's index and next .. next^4 of it; the move goes into
+        // adv_ alone; "a fire here ends the array" for the next call (its index without a move)
+        idx_p_ = idx_l;
+        nx_p_ = nx_l;
+        nx2_p_ = nx2_l;
+        nx3_p_ = nx3_l;
+        nx4_p_ = nx4_l;
+        stop0_ = arr_en_q_ && !arr_wrap_q_ && nx_l == 0;
+        mv_ = moved || adv_;
         adv_ = moved;
         u_v_ = b_v_;
         u_inwin_ = b_inwin_;
 
-        // ---- stage P (from the B1 registers): the loop operands, picked by the last call's move
-        // (B1's candidates are for the index before it) ----
+        // ---- stage P (from the B1 registers): the loop operands, picked by the index moves of
+        // the last two calls (at most one of them moved: no fire in two calls in a row; B1's
+        // candidates are for the index before both) ----
         b_y_ = p_y_;
-        b_opF0_ = adv_last ? p_d2_ : p_d1_;
-        b_thF0_ = adv_last ? p_th2_ : p_th1_;
+        b_opF0_ = mv ? p_d2_ : p_d1_;
+        b_thF0_ = mv ? p_th2_ : p_th1_;
         b_inwin_ = p_inwin_;
         b_v_ = p_v_;
 
-        // ---- stage B1 (from the R registers): Y - th for the two candidates (0 until R holds
-        // data) ----
+        // ---- stage B1 (from the R registers and the prefetch): Y - th for the two prefetched
+        // thresholds (entries next, next^2 of the last call's index before its move, or
+        // fire_dist; 0 until R holds data) ----
         if (r_v_) {
             const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
             p_y_ = r_y_;
             p_d1_ = y_v - static_cast<int64_t>(th1.to_uint64());
             p_d2_ = y_v - static_cast<int64_t>(th2.to_uint64());
-            p_th1_ = th1;
-            p_th2_ = th2;
         } else {
-            clear_p_operands();
+            p_y_ = 0;
+            p_d1_ = 0;
+            p_d2_ = 0;
         }
+        p_th1_ = th1;
+        p_th2_ = th2;
         p_inwin_ = r_v_ && r_inwin_;
         p_v_ = r_v_;
 
@@ -433,7 +499,7 @@ public:
                 sp_full_ = true;
                 sp_inc_ = inc;
                 sp_min_ = r.min_period;
-                sp_thr_ = thr_in;
+                sp_thr_ = thr_now;
                 sp_hi_ = 0;
                 sp_lo_ = 0;
                 sp_k_ = 1;
@@ -496,27 +562,39 @@ public:
     // top): a word of the chord ROM as stored, and the sticky RAM-rule flags (lx_ram.h)
     cfg::chord_t chord_word(unsigned s) const { return rom_.peek(s); }
 #ifndef __SYNTHESIS__
-    int ram_violations() const { return rom_.violations(); }
+    int ram_violations() const {
+        return rom_.violations() | arr1_.violations() | arr2_.violations() | arr3_.violations();
+    }
 #endif
 
 private:
-    // While the tracking state is in reset: the threshold a run starting in the next call takes
-    // (fire_dist in force then, or entry 0 as the RAM stands after the next call's write).
+    // The threshold a run starting in the next call takes: fire_dist presented now, or entry 0
+    // after the write presented now (entry0_ holds entry 0 as the RAM stands in this call).
     cfg::dist_t start_thr(const pso_regs& rp) const {
         if (!rp.arr_en) return rp.fire_dist;
-        return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : arr_[0];
+        return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : entry0_;
     }
 
-    // stage P's operand registers (B1's results) at 0: while R holds no data, and in reset_track()
-    void clear_p_operands() {
-        p_y_ = 0;
-        p_d1_ = 0;
-        p_d2_ = 0;
-        p_th1_ = 0;
-        p_th2_ = 0;
+    // the array index after i: i + 1, or 0 after the last entry of an array of len entries
+    static cfg::len_t next_idx(const cfg::len_t& i, const cfg::len_t& len) {
+        const unsigned n = i.to_uint() + 1u;
+        return n >= len.to_uint() ? cfg::len_t(0) : cfg::len_t(n);
     }
 
-    void reset_track() {
+    // the counters and sticky flags (reset by an invalid configuration, kept while disabled)
+    void reset_counts() {
+        fire_cnt_ = 0;
+        ovl_cnt_ = 0;
+        overlap_st_ = false;
+        rate_over_st_ = false;
+        spacing_st_ = false;
+        freq_st_ = false;
+    }
+
+    // The tracking state in reset (enable = 0, an invalid configuration, i_rst), with the index
+    // registers at index 0 and next .. next^4 of it for the array length presented now (in
+    // force in the next call, which may start a run and latch it).
+    void reset_track(const pso_regs& rp) {
         LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             trav_[i] = 0;
@@ -536,20 +614,26 @@ private:
         r_inwin_ = false;
         r_v_ = false;
         part_ = 0;
-        clear_p_operands();
+        p_y_ = 0;
+        p_d1_ = 0;
+        p_d2_ = 0;
         p_inwin_ = false;
         p_v_ = false;
         b_y_ = 0;
         b_opF0_ = 0;
-        b_thF0_ = 0;
         b_inwin_ = false;
         b_v_ = false;
         u_ = 0;
         u_v_ = false;
         u_inwin_ = false;
-        thr_ = 0;
         adv_ = false;
-        idx_ = 0;
+        mv_ = false;
+        idx_p_ = 0;
+        nx_p_ = next_idx(0, rp.arr_len);
+        nx2_p_ = next_idx(nx_p_, rp.arr_len);
+        nx3_p_ = next_idx(nx2_p_, rp.arr_len);
+        nx4_p_ = next_idx(nx3_p_, rp.arr_len);
+        stop0_ = rp.arr_en && !rp.arr_wrap && nx_p_ == 0;
         done_ = false;
         c_fire_ = false;
         c_inwin_ = false;
@@ -595,9 +679,18 @@ private:
     // chord ROM (block RAM, RAM_1P read-only: one read per call, its output register is stage R's
     // chord)
     pso_chord_rom_t rom_;
-    // array RAM and its "entry below the minimum distance" bitmap (the map after the write
-    // presented in the last call: one call ahead of the RAM)
-    cfg::dist_t arr_[cfg::ARR_DEPTH];
+    // firing-distance array: three copies (block RAM, RAM_S2P: one read and the shared write per
+    // call each), read at next, next^2, next^3 of the index; their power-up contents are zero
+    // ("not written": arr_bad_)
+    using arr_ram_t = ram<cfg::dist_t, cfg::ARR_DEPTH, RAM_S2P>;
+    arr_ram_t arr1_, arr2_, arr3_;
+    bool fw1_, fw2_, fw3_;     // the write presented with the read hit its address
+    cfg::dist_t f_data_;       // the data of that write
+    cfg::dist_t th1_, th2_;    // B1's thresholds: entries next(idx), next^2(idx) of the last call
+                               //   (before its move), or fire_dist (rtl_ref holds them inverted)
+    cfg::dist_t entry0_;       // copy of entry 0 (the start threshold in array mode)
+    // "entry below the minimum distance" bitmap (the map after the write presented in the last
+    // call: one call ahead of the RAM)
     cfg::bad_t arr_bad_;
     // register stage: the register values in force and their configuration check
     pso_regs rq_;
@@ -637,8 +730,13 @@ private:
     cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
     bool u_v_, u_inwin_;
     cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
-    bool adv_;           // the last call's decision moved the index (P's pick)
-    cfg::len_t idx_;
+    cfg::dist_t st_;     // the start threshold of a run beginning in this call
+    bool adv_;           // the last call's decision moved the index
+    bool mv_;            // the index moved in one of the last two calls (P's pick)
+    cfg::len_t idx_p_;   // the index before the last call's move, and next .. next^4 of it
+    cfg::len_t nx_p_, nx2_p_, nx3_p_, nx4_p_;
+    bool stop0_;         // a fire ends the array (arr_en, no wrap, the last entry) at this call's
+                         //   index without the last call's move
     bool done_;
     bool c_fire_, c_inwin_, c_live_;
     cfg::rem_t c_u_;     // u of the decision
