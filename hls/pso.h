@@ -181,21 +181,19 @@ struct pso_regs {
     bool clear = false;             // clears the sticky flags and the overlap counter
 };
 
-struct pso_in {
-    step_t step[pso_cfg::N_AXES];  // tracked axis steps (-1, 0, +1)
-    pos_t pos[pso_cfg::N_AXES];    // axis positions after the step (window comparison)
-    pso_cfg::inc_t ps_inc;         // part-speed commanded vector rate, Q0.32 counts per clock
+// Per-axis arrays are listed element by element: neither vendor integer type zeroes itself, so
+// an array member needs an initialiser for each element.
+static_assert(pso_cfg::N_AXES == 3, "the per-axis initialisers below list three axes");
 
-    pso_in() : ps_inc(0) {
-        LX_LOOP(pso_in_init) for (int i = 0; i < pso_cfg::N_AXES; ++i) {
-            step[i] = 0;
-            pos[i] = 0;
-        }
-    }
+struct pso_in {
+    step_t step[pso_cfg::N_AXES] = {0, 0, 0};  // tracked axis steps (-1, 0, +1)
+    pos_t pos[pso_cfg::N_AXES] = {0, 0, 0};    // axis positions after the step (window comparison)
+    pso_cfg::inc_t ps_inc = 0;                 // part-speed commanded vector rate, Q0.32 counts per clock
 };
 
-// Configuration check (combinational, every call).
-inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
+// Configuration check (combinational, every call; a constant expression with the own integer
+// types, so that the register stage's initial check is a constant).
+inline LX_CONSTEXPR bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
     const bool k_ok = r.win_k >= 1 && r.win_k <= pso_cfg::K_MAX;
     const bool axes_ok = r.part_speed || r.axis_mask != 0;
     bool thr_ok = false;
@@ -211,7 +209,89 @@ inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
     return k_ok && axes_ok && thr_ok && win_ok && r.pulse_w >= 1;
 }
 
-class pso {
+// The registers of lx::pso, grouped by their reset as the always blocks of rtl_ref/pso.v. The
+// default member initialisers are the reset values (the power-up state: no constructor, CTest
+// hls_const_init); a reset of a group assigns its initialisers:
+//   pso_track_regs  the tracking state: reset by enable = 0, an invalid configuration and i_rst
+//                   (rtl_ref rst_trk; there the index registers take the array length presented)
+//   pso_count_regs  counters and sticky flags: reset by an invalid configuration and i_rst
+//                   (rtl_ref rst_cfg; kept while disabled)
+//   pso_stage_regs  the register stage, its check, the bad-entry map and the copy of entry 0:
+//                   reset by i_rst only
+// The RAMs and the registers without a reset (the threshold prefetch, the thresholds) are members
+// of lx::pso itself.
+struct pso_track_regs {
+    using cfg = pso_cfg;
+    // stage A
+    cfg::win_t trav_[cfg::N_AXES] = {0, 0, 0};
+    bool a_rev_ = false, a_kclose_ = false, a_pulse_ = false, a_inwin_ = false, a_v_ = false;
+    cfg::sq_t a_sq_[cfg::N_AXES] = {0, 0, 0};  // |Dn_i|^2 of this call's travel (the ROM address's terms)
+    cfg::inc_t ph_ = 0;
+    pos_t ps_cnt_ = 0;
+    // minimum-spacing product (sequenced)
+    cfg::spk_t sp_k_ = 0;
+    bool sp_full_ = false;
+    cfg::inc_t sp_inc_ = 0;
+    cfg::gap_t sp_min_ = 0;
+    cfg::dist_t sp_thr_ = 0;
+    cfg::sphi_t sp_hi_ = 0;
+    cfg::gap_t sp_lo_ = 0;
+    // stage Q (the ROM address itself is in the ROM's block RAM)
+    bool q_rev_ = false, q_kclose_ = false, q_pulse_ = false, q_inwin_ = false, q_v_ = false;
+    // stage R
+    cfg::incr_t r_y_ = 0;    // Y: the estimate step of the entry
+    cfg::chord_t part_ = 0;  // chord of the open window
+    bool r_inwin_ = false, r_v_ = false;
+    // stage B1 (the differences for the two prefetched thresholds)
+    cfg::incr_t p_y_ = 0;
+    cfg::rem_t p_d1_ = 0, p_d2_ = 0;  // Y - th1, Y - th2
+    bool p_inwin_ = false, p_v_ = false;
+    // stage P (the loop operands)
+    cfg::incr_t b_y_ = 0;
+    cfg::rem_t b_opF0_ = 0;  // Y - thF0
+    bool b_inwin_ = false, b_v_ = false;
+    // stage B2 (the loop, the decision and the state it moves)
+    cfg::rem_t u_ = 0;       // value - thr of the entry held (the next to be decided)
+    bool u_v_ = false, u_inwin_ = false;
+    bool adv_ = false;       // the last call's decision moved the index
+    bool mv_ = false;        // the index moved in one of the last two calls (P's pick)
+    cfg::len_t idx_p_ = 0;   // the index before the last call's move, and next .. next^4 of it
+    cfg::len_t nx_p_ = 0, nx2_p_ = 0, nx3_p_ = 0, nx4_p_ = 0;
+    bool stop0_ = false;     // a fire ends the array (arr_en, no wrap, the last entry) at this
+                             //   call's index without the last call's move
+    bool done_ = false;
+    bool c_fire_ = false, c_inwin_ = false, c_live_ = false;
+    cfg::rem_t c_u_ = 0;     // u of the decision
+    cfg::dist_t c_tm_ = 0;   // its threshold if it did not fire, else 0
+    // stage B3 (outputs)
+    cfg::rem_t dist_ = 0;
+    cfg::len_t idx_o_ = 0;
+    bool done_o_ = false;
+    cfg::pw_t timer_ = 0;
+    cfg::gap_t since_ = cfg::GAP_MAX;  // (the first emit is never early)
+    // run state and latched mode registers
+    bool run_q_ = false, ps_q_ = false, arr_en_q_ = false, arr_wrap_q_ = false;
+    cfg::mask_t mask_q_ = 0;
+    cfg::len_t arr_len_q_ = 1;
+};
+
+struct pso_count_regs {
+    pso_cfg::fcnt_t fire_cnt_ = 0;
+    pso_cfg::ovl_t ovl_cnt_ = 0;
+    bool overlap_st_ = false, rate_over_st_ = false, spacing_st_ = false, freq_st_ = false;
+};
+
+struct pso_stage_regs {
+    // the register values in force (presented in the last call) and their configuration check
+    pso_regs rq_;
+    bool ok_q_ = pso_config_ok(pso_regs{}, ~pso_cfg::bad_t(0));  // (true: the reset values are legal)
+    // "entry below the minimum distance" bitmap, after the writes presented so far (one call
+    // ahead of the RAM): every entry at power-up (the RAM content is not a legal distance)
+    pso_cfg::bad_t arr_bad_ = ~pso_cfg::bad_t(0);
+    pso_cfg::dist_t entry0_ = 0;  // copy of entry 0 as the RAM stands (the start threshold in array mode)
+};
+
+class pso : private pso_track_regs, private pso_count_regs, private pso_stage_regs {
 public:
     using cfg = pso_cfg;
     struct out_t {
@@ -233,31 +313,14 @@ public:
         bool cfg_err = false;
     };
 
-    pso() {
-        // registers without a reset in rtl_ref (the prefetch, the thresholds): 0 at power-up
-        th1_ = 0;
-        th2_ = 0;
-        fw1_ = false;
-        fw2_ = false;
-        fw3_ = false;
-        f_data_ = 0;
-        st_ = 0;
-        thr_ = 0;
-        p_th1_ = 0;
-        p_th2_ = 0;
-        b_thF0_ = 0;
-        reset();
-    }
-
     // rtl_ref i_rst: the register stage at the reset values (a legal configuration), every array
-    // entry "not written", the state in reset; the RAM contents are kept (no RAM reset).
+    // entry "not written", the tracking state, counters and flags in reset. The RAM contents are
+    // kept (no RAM reset), and so are the registers rtl_ref does not reset (the prefetch and the
+    // thresholds: nothing reads them before they are loaded again).
     void reset() {
-        arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
-        entry0_ = 0;
-        rq_ = pso_regs();           // register stage: the reset values in force
-        ok_q_ = pso_config_ok(rq_, arr_bad_);
-        reset_track(rq_);
-        reset_counts();
+        static_cast<pso_stage_regs&>(*this) = pso_stage_regs{};
+        static_cast<pso_track_regs&>(*this) = pso_track_regs{};
+        static_cast<pso_count_regs&>(*this) = pso_count_regs{};
     }
 
     // rp: the register values presented in this call; they are in force in the next call
@@ -582,84 +645,18 @@ private:
     }
 
     // the counters and sticky flags (reset by an invalid configuration, kept while disabled)
-    void reset_counts() {
-        fire_cnt_ = 0;
-        ovl_cnt_ = 0;
-        overlap_st_ = false;
-        rate_over_st_ = false;
-        spacing_st_ = false;
-        freq_st_ = false;
-    }
+    void reset_counts() { static_cast<pso_count_regs&>(*this) = pso_count_regs{}; }
 
-    // The tracking state in reset (enable = 0, an invalid configuration, i_rst), with the index
-    // registers at index 0 and next .. next^4 of it for the array length presented now (in
-    // force in the next call, which may start a run and latch it).
+    // The tracking state in reset (enable = 0, an invalid configuration), with the index
+    // registers at index 0 and next .. next^4 of it for the array length presented now (in force
+    // in the next call, which may start a run and latch it).
     void reset_track(const pso_regs& rp) {
-        LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) {
-#pragma HLS UNROLL
-            trav_[i] = 0;
-            a_sq_[i] = 0;
-        }
-        a_rev_ = false;
-        a_kclose_ = false;
-        a_pulse_ = false;
-        a_inwin_ = false;
-        a_v_ = false;
-        q_rev_ = false;
-        q_kclose_ = false;
-        q_pulse_ = false;
-        q_inwin_ = false;
-        q_v_ = false;
-        r_y_ = 0;
-        r_inwin_ = false;
-        r_v_ = false;
-        part_ = 0;
-        p_y_ = 0;
-        p_d1_ = 0;
-        p_d2_ = 0;
-        p_inwin_ = false;
-        p_v_ = false;
-        b_y_ = 0;
-        b_opF0_ = 0;
-        b_inwin_ = false;
-        b_v_ = false;
-        u_ = 0;
-        u_v_ = false;
-        u_inwin_ = false;
-        adv_ = false;
-        mv_ = false;
-        idx_p_ = 0;
+        static_cast<pso_track_regs&>(*this) = pso_track_regs{};
         nx_p_ = next_idx(0, rp.arr_len);
         nx2_p_ = next_idx(nx_p_, rp.arr_len);
         nx3_p_ = next_idx(nx2_p_, rp.arr_len);
         nx4_p_ = next_idx(nx3_p_, rp.arr_len);
         stop0_ = rp.arr_en && !rp.arr_wrap && nx_p_ == 0;
-        done_ = false;
-        c_fire_ = false;
-        c_inwin_ = false;
-        c_live_ = false;
-        c_u_ = 0;
-        c_tm_ = 0;
-        dist_ = 0;
-        idx_o_ = 0;
-        done_o_ = false;
-        timer_ = 0;
-        since_ = cfg::GAP_MAX;
-        ph_ = 0;
-        ps_cnt_ = 0;
-        sp_k_ = 0;
-        sp_full_ = false;
-        sp_inc_ = 0;
-        sp_min_ = 0;
-        sp_thr_ = 0;
-        sp_hi_ = 0;
-        sp_lo_ = 0;
-        run_q_ = false;
-        ps_q_ = false;
-        mask_q_ = 0;
-        arr_en_q_ = false;
-        arr_len_q_ = 1;
-        arr_wrap_q_ = false;
     }
 
     void fill_status(out_t& o) const {
@@ -684,76 +681,15 @@ private:
     // ("not written": arr_bad_)
     using arr_ram_t = ram<cfg::dist_t, cfg::ARR_DEPTH, RAM_S2P>;
     arr_ram_t arr1_, arr2_, arr3_;
-    bool fw1_, fw2_, fw3_;     // the write presented with the read hit its address
-    cfg::dist_t f_data_;       // the data of that write
-    cfg::dist_t th1_, th2_;    // B1's thresholds: entries next(idx), next^2(idx) of the last call
-                               //   (before its move), or fire_dist (rtl_ref holds them inverted)
-    cfg::dist_t entry0_;       // copy of entry 0 (the start threshold in array mode)
-    // "entry below the minimum distance" bitmap (the map after the write presented in the last
-    // call: one call ahead of the RAM)
-    cfg::bad_t arr_bad_;
-    // register stage: the register values in force and their configuration check
-    pso_regs rq_;
-    bool ok_q_;
-    // stage A
-    cfg::win_t trav_[cfg::N_AXES];
-    bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;
-    cfg::sq_t a_sq_[cfg::N_AXES];  // |Dn_i|^2 of this call's travel (the terms of the ROM address)
-    // stage Q
-    bool q_rev_, q_kclose_, q_pulse_, q_inwin_, q_v_;
-    cfg::inc_t ph_;
-    pos_t ps_cnt_;
-    // minimum-spacing product (sequenced)
-    cfg::spk_t sp_k_;
-    bool sp_full_;
-    cfg::inc_t sp_inc_;
-    cfg::gap_t sp_min_;
-    cfg::dist_t sp_thr_;
-    cfg::sphi_t sp_hi_;
-    cfg::gap_t sp_lo_;
-    // stage R
-    cfg::incr_t r_y_;    // Y: the estimate step of the entry
-    cfg::chord_t part_;  // chord of the open window
-    bool r_inwin_, r_v_;
-    // stage B1 (the differences for two candidate thresholds)
-    cfg::incr_t p_y_;
-    cfg::rem_t p_d1_, p_d2_;      // Y - th1, Y - th2
-    cfg::dist_t p_th1_, p_th2_;   // entries next, next^2 of the index before the move decided in
-                                  //   the same call (or fire_dist)
-    bool p_inwin_, p_v_;
-    // stage P (the loop operands)
-    cfg::incr_t b_y_;
-    cfg::rem_t b_opF0_;   // Y - thF0
-    cfg::dist_t b_thF0_;  // the threshold after a fire (for the index after the last decision)
-    bool b_inwin_, b_v_;
-    // stage B2 (the loop, the decision and the state it moves)
-    cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
-    bool u_v_, u_inwin_;
-    cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
-    cfg::dist_t st_;     // the start threshold of a run beginning in this call
-    bool adv_;           // the last call's decision moved the index
-    bool mv_;            // the index moved in one of the last two calls (P's pick)
-    cfg::len_t idx_p_;   // the index before the last call's move, and next .. next^4 of it
-    cfg::len_t nx_p_, nx2_p_, nx3_p_, nx4_p_;
-    bool stop0_;         // a fire ends the array (arr_en, no wrap, the last entry) at this call's
-                         //   index without the last call's move
-    bool done_;
-    bool c_fire_, c_inwin_, c_live_;
-    cfg::rem_t c_u_;     // u of the decision
-    cfg::dist_t c_tm_;   // its threshold if it did not fire, else 0
-    // stage B3 (outputs)
-    cfg::rem_t dist_;
-    cfg::len_t idx_o_;
-    bool done_o_;
-    cfg::pw_t timer_;
-    cfg::gap_t since_;
-    cfg::fcnt_t fire_cnt_;
-    cfg::ovl_t ovl_cnt_;
-    bool overlap_st_, rate_over_st_, spacing_st_, freq_st_;
-    // run state and latched mode registers
-    bool run_q_, ps_q_, arr_en_q_, arr_wrap_q_;
-    cfg::mask_t mask_q_;
-    cfg::len_t arr_len_q_;
+    // registers without a reset in rtl_ref (0 at power-up)
+    bool fw1_ = false, fw2_ = false, fw3_ = false;  // the write presented with the read hit its address
+    cfg::dist_t f_data_ = 0;         // the data of that write
+    cfg::dist_t th1_ = 0, th2_ = 0;  // B1's thresholds: entries next(idx), next^2(idx) of the last
+                                     //   call (before its move), or fire_dist (rtl_ref: inverted)
+    cfg::dist_t p_th1_ = 0, p_th2_ = 0;  // B1's copy of them (used by a take only: valid operands)
+    cfg::dist_t b_thF0_ = 0;         // P's pick: the threshold after a fire
+    cfg::dist_t thr_ = 0;            // threshold of the next fire (taken at a fire, st_ without a run)
+    cfg::dist_t st_ = 0;             // the start threshold of a run beginning in this call
 };
 
 }  // namespace lx

@@ -15,7 +15,8 @@
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
-//            distances, array entries rewritten next to the index while running, window gating, pulse width and overlap (no fire lost: fire_cnt counts
+//            distances, array entries rewritten next to the index while running (and again after
+//            reset(): the block equals a fresh one), window gating, pulse width and overlap (no fire lost: fire_cnt counts
 //            every emit), laser frequency flag, part-speed 24 MHz clamp and its flag, minimum
 //            spacing flag, every bad configuration flagged with no pulse; the threshold of a fire
 //            is taken at the previous fire (a live distance change acts from the next fire: taken
@@ -456,38 +457,49 @@ void test_directed(tbu::result& res) {
     // and 1 entries with wrap, x alone or 3D diagonal steps (up to sqrt3 counts per call), and in
     // every call a write of a legal entry (4 .. 8 counts) at the index shown plus 0 .. 3 (the
     // entry decided next, the ones after it: every read address of the prefetch), entry 0 in the
-    // calls around each run start (the start threshold); bit-exact on every call
+    // calls around each run start (the start threshold); bit-exact on every call. Then the same
+    // again after lx::pso::reset() (rtl_ref i_rst: the register groups to their initialisers, the
+    // RAM words kept) against a fresh golden model: the reset block is a fresh one.
     {
         pair_run p{{}, {}, &res, "array rewritten while running"};
-        std::mt19937_64 wr(11);
-        golden::pso_regs r;
-        r.axis_mask = 7;
-        r.pulse_w = 1;
-        for (int j = 0; j < 4; ++j) {
-            golden::pso_regs w = r;
-            w.arr_we = true;
-            w.arr_addr = j;
-            w.arr_data = 5 * kQ;
-            p.step(golden::pso_in{}, w);
-        }
-        r.arr_en = true;
-        r.arr_wrap = true;
-        const int lens[3] = {4, 2, 1};
-        int idx = 0;
-        long fires = 0;
-        for (int t = 0; t < 3000; ++t) {
-            const int seg = t % 1000;
-            golden::pso_regs w = r;
-            w.arr_len = lens[t / 1000];
-            w.enable = seg >= 3;
-            w.arr_we = true;
-            w.arr_addr = seg < 6 ? 0 : (idx + static_cast<int>(wr() % 4)) % w.arr_len;
-            w.arr_data = (4 + wr() % 4) * kQ + (wr() & (kQ - 1));
-            const golden::pso::out o = p.step(wr() % 2 ? steps(1, 1, 1) : steps(1, 0, 0), w);
-            idx = o.idx;
-            fires += o.fire ? 1 : 0;
-        }
-        res.check(fires > 600, "array rewritten while running: " + std::to_string(fires) + " fires (want > 600)");
+        const auto rewrite_run = [&](pair_run& q) {
+            std::mt19937_64 wr(11);
+            golden::pso_regs r;
+            r.axis_mask = 7;
+            r.pulse_w = 1;
+            r.arr_en = true;  // (while loading: cfg_err until every used entry is written)
+            r.arr_len = 4;
+            r.arr_wrap = true;
+            for (int j = 0; j < 4; ++j) {
+                golden::pso_regs w = r;
+                w.arr_we = true;
+                w.arr_addr = j;
+                w.arr_data = 5 * kQ;
+                q.step(golden::pso_in{}, w);
+            }
+            const int lens[3] = {4, 2, 1};
+            int idx = 0;
+            long fires = 0;
+            for (int t = 0; t < 3000; ++t) {
+                const int seg = t % 1000;
+                golden::pso_regs w = r;
+                w.arr_len = lens[t / 1000];
+                w.enable = seg >= 3;
+                w.arr_we = true;
+                w.arr_addr = seg < 6 ? 0 : (idx + static_cast<int>(wr() % 4)) % w.arr_len;
+                w.arr_data = (4 + wr() % 4) * kQ + (wr() & (kQ - 1));
+                const golden::pso::out o = q.step(wr() % 2 ? steps(1, 1, 1) : steps(1, 0, 0), w);
+                idx = o.idx;
+                fires += o.fire ? 1 : 0;
+            }
+            res.check(fires > 600, q.tag + ": " + std::to_string(fires) + " fires (want > 600)");
+        };
+        rewrite_run(p);
+        p.h.reset();
+        p.g = golden::pso();
+        p.tag = "array rewritten while running, after reset()";
+        p.t = 0;
+        rewrite_run(p);
     }
     // no fire in the call after a fire (docs/PSO_COUNTERS.md §2.7): legal thresholds (>= 4 counts)
     // never need it; a run's latched array can still hold smaller entries when arr_en is turned

@@ -8,6 +8,7 @@
 // initialiser). hls/ itself stays C++14; only this check uses C++20.
 #include "hls/encoder_counter.h"
 #include "hls/laserax_top.h"
+#include "hls/pso.h"
 
 #if __cplusplus < 202002L
 #error "const_init.cpp needs C++20 (constinit)"
@@ -23,3 +24,4 @@ constinit lx::error_map g_error_map;
 constinit lx::laserax_top g_laserax_top;
 // the blocks built beside the chain (docs/PSO_COUNTERS.md)
 constinit lx::encoder_counter g_encoder_counter;
+constinit lx::pso g_pso;
