@@ -105,7 +105,9 @@ struct encoder_counter_in {
 
 inline bool encoder_counter_config_ok(const encoder_counter_regs& r) {
     bool ok = r.corr_period >= encoder_counter_cfg::CORR_LAT;
+#pragma hls_unroll yes
     LX_LOOP(check_ch) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+#pragma HLS UNROLL
         ok = ok && r.src[c] <= 1;
         ok = ok && (r.src[c] != 1 || r.sim_inc[c] <= encoder_counter_cfg::SIM_INC_MAX);
     }
@@ -142,6 +144,7 @@ public:
         // half, then shifts {hi, lo} right. hi starts at 2^(S_FRAC-1): after W_CNT shifts
         // {hi, lo} = scale * cnt + 2^(S_FRAC-1).
         const bool done = k_ == cfg::CORR_LAT;
+#pragma hls_unroll yes
         LX_LOOP(corr_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             if (done) {
@@ -159,6 +162,7 @@ public:
         // a sample while a product is in flight (only after corr_period was lowered live) is
         // dropped: the running product finishes
         if (sample && k_ == 0) {
+#pragma hls_unroll yes
             LX_LOOP(sample_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
                 hi_[c] = cfg::acc_t(cfg::HALF);
@@ -182,6 +186,7 @@ public:
             f_pos_ = diff > 0;
             f_ok_ = !r.wait_arm;  // an arm in this call changes the value: these flags are stale
         }
+#pragma hls_unroll yes
         LX_LOOP(count_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             // simulation: the carry of the phase accumulator counts in the next call (sc_)
@@ -217,7 +222,9 @@ public:
             w_val_ = r.wait_val;
             w_down_ = r.wait_down;
         }
+#pragma hls_unroll yes
         LX_LOOP(out_ch) for (int c = 0; c < cfg::N_CH; ++c) {
+#pragma HLS UNROLL
             o.cnt[c] = cnt_[c];
             o.rst_pending[c] = pending_[c];
             o.corr[c] = corr_[c];

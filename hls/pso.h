@@ -579,6 +579,7 @@ public:
 
         bool rev = false;
         cfg::win_t d[cfg::N_AXES];
+#pragma hls_unroll yes
         LX_LOOP(axis_step) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             const bool tracked = !ps_q_ && ((mask_q_ >> i) & 1) != 0;
@@ -587,6 +588,7 @@ public:
         }
         bool kclose = false;
         cfg::win_t dn[cfg::N_AXES];
+#pragma hls_unroll yes
         LX_LOOP(axis_travel) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             dn[i] = (rev ? cfg::win_t(0) : trav_[i]) + d[i];
@@ -594,6 +596,7 @@ public:
             if (mag >= r.win_k) kclose = true;
             a_sq_[i] = cfg::sq_t(uint<2 * cfg::W_K>(mag) * mag);  // a 5-bit square: a table
         }
+#pragma hls_unroll yes
         LX_LOOP(axis_close) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             trav_[i] = kclose ? cfg::win_t(0) : dn[i];
