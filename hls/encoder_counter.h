@@ -75,51 +75,39 @@ struct encoder_counter_cfg {
     using src_t = uint<W_SRC>;  // 0 quadrature step, 1 simulation (2, 3 illegal)
 };
 
-struct encoder_counter_regs {
-    encoder_counter_cfg::src_t src[encoder_counter_cfg::N_CH];
-    encoder_counter_cfg::inc_t sim_inc[encoder_counter_cfg::N_CH];
-    bool sim_down[encoder_counter_cfg::N_CH];
-    encoder_counter_cfg::scale_t scale[encoder_counter_cfg::N_CH];
-    bool rst_req[encoder_counter_cfg::N_CH];   // pulse: reset request
-    bool load[encoder_counter_cfg::N_CH];      // pulse: preset the counter to load_val
-    encoder_counter_cfg::cnt_t load_val[encoder_counter_cfg::N_CH];
-    bool rst_on_trig;                          // reset at the next start trigger instead of now
-    encoder_counter_cfg::per_t corr_period;
-    bool wait_arm;                             // pulse
-    bool wait_ch;                              // false: counter 0, true: counter 1
-    encoder_counter_cfg::cnt_t wait_val;
-    bool wait_down;                            // false: wait to overstep, true: to understep
+// Per-channel arrays are listed element by element: neither vendor integer type zeroes itself, so
+// an array member needs an initialiser for each element (a shorter list would leave the rest to
+// the vendor's default constructor).
+static_assert(encoder_counter_cfg::N_CH == 2, "the per-channel initialisers below list two channels");
 
-    encoder_counter_regs() : rst_on_trig(false), corr_period(encoder_counter_cfg::PERIOD_DEFAULT), wait_arm(false),
-                             wait_ch(false), wait_val(0), wait_down(false) {
-        LX_LOOP(in_src_init) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
-            src[c] = 0;
-            sim_inc[c] = encoder_counter_cfg::SIM_INC_DEFAULT;
-            sim_down[c] = false;
-            scale[c] = 0;
-            rst_req[c] = false;
-            load[c] = false;
-            load_val[c] = 0;
-        }
-    }
+struct encoder_counter_regs {
+    encoder_counter_cfg::src_t src[encoder_counter_cfg::N_CH] = {0, 0};
+    encoder_counter_cfg::inc_t sim_inc[encoder_counter_cfg::N_CH] = {encoder_counter_cfg::SIM_INC_DEFAULT,
+                                                                     encoder_counter_cfg::SIM_INC_DEFAULT};
+    bool sim_down[encoder_counter_cfg::N_CH] = {false, false};
+    encoder_counter_cfg::scale_t scale[encoder_counter_cfg::N_CH] = {0, 0};
+    bool rst_req[encoder_counter_cfg::N_CH] = {false, false};  // pulse: reset request
+    bool load[encoder_counter_cfg::N_CH] = {false, false};     // pulse: preset the counter to load_val
+    encoder_counter_cfg::cnt_t load_val[encoder_counter_cfg::N_CH] = {0, 0};
+    bool rst_on_trig = false;                  // reset at the next start trigger instead of now
+    encoder_counter_cfg::per_t corr_period = encoder_counter_cfg::PERIOD_DEFAULT;
+    bool wait_arm = false;                     // pulse
+    bool wait_ch = false;                      // false: counter 0, true: counter 1
+    encoder_counter_cfg::cnt_t wait_val = 0;
+    bool wait_down = false;                    // false: wait to overstep, true: to understep
 };
 
 struct encoder_counter_in {
-    step_t qstep[encoder_counter_cfg::N_CH];          // from the quadrature decoders
-    bool trig;                                        // start trigger (pulse)
-    encoder_counter_cfg::posin_t pos[encoder_counter_cfg::N_CH];  // nominal output position, bits
-
-    encoder_counter_in() : trig(false) {
-        LX_LOOP(in_qstep_init) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
-            qstep[c] = 0;
-            pos[c] = 0;
-        }
-    }
+    step_t qstep[encoder_counter_cfg::N_CH] = {0, 0};                 // from the quadrature decoders
+    bool trig = false;                                                // start trigger (pulse)
+    encoder_counter_cfg::posin_t pos[encoder_counter_cfg::N_CH] = {0, 0};  // nominal output position, bits
 };
 
 inline bool encoder_counter_config_ok(const encoder_counter_regs& r) {
     bool ok = r.corr_period >= encoder_counter_cfg::CORR_LAT;
+#pragma hls_unroll yes
     LX_LOOP(check_ch) for (int c = 0; c < encoder_counter_cfg::N_CH; ++c) {
+#pragma HLS UNROLL
         ok = ok && r.src[c] <= 1;
         ok = ok && (r.src[c] != 1 || r.sim_inc[c] <= encoder_counter_cfg::SIM_INC_MAX);
     }
@@ -130,54 +118,21 @@ class encoder_counter {
 public:
     using cfg = encoder_counter_cfg;
     struct out_t {
-        cfg::cnt_t cnt[cfg::N_CH];
-        step_t step[cfg::N_CH];        // count applied in this call
-        bool rst_done[cfg::N_CH];      // the counter was reset in this call
-        bool rst_pending[cfg::N_CH];   // waiting for a start trigger
-        cfg::corr_t corr[cfg::N_CH];   // corrected output positions (held between ticks)
-        bool tick;                     // corr updated in this call (CORR_LAT after its sample call)
-        bool waiting;
-        bool reached;                  // pulse: the awaited counter passed the value
-        bool cfg_err;
-
-        out_t() : tick(false), waiting(false), reached(false), cfg_err(false) {
-            LX_LOOP(out_cnt_init) for (int c = 0; c < cfg::N_CH; ++c) {
-                cnt[c] = 0;
-                step[c] = 0;
-                rst_done[c] = false;
-                rst_pending[c] = false;
-                corr[c] = 0;
-            }
-        }
+        cfg::cnt_t cnt[cfg::N_CH] = {0, 0};
+        step_t step[cfg::N_CH] = {0, 0};              // count applied in this call
+        bool rst_done[cfg::N_CH] = {false, false};    // the counter was reset in this call
+        bool rst_pending[cfg::N_CH] = {false, false}; // waiting for a start trigger
+        cfg::corr_t corr[cfg::N_CH] = {0, 0};         // corrected output positions (held between ticks)
+        bool tick = false;                            // corr updated in this call (CORR_LAT after its sample call)
+        bool waiting = false;
+        bool reached = false;                         // pulse: the awaited counter passed the value
+        bool cfg_err = false;
     };
 
-    encoder_counter() { reset(); }
-
-    void reset() {
-        LX_LOOP(reset_ch) for (int c = 0; c < cfg::N_CH; ++c) {
-            cnt_[c] = 0;
-            ph_[c] = 0;
-            sc_[c] = false;
-            pending_[c] = false;
-            corr_[c] = 0;
-            hi_[c] = 0;
-            lo_[c] = 0;
-            m_[c] = 0;
-            p_[c] = 0;
-        }
-        k_ = 0;
-        timer_ = 0;
-        waiting_ = false;
-        f_neg_ = false;
-        f_pos_ = false;
-        f_ok_ = false;
-        w_ch_ = false;
-        w_val_ = 0;
-        w_down_ = false;
-    }
+    void reset() { *this = encoder_counter{}; }  // every register to its initialiser (the reset value)
 
     out_t step(const encoder_counter_in& in, const encoder_counter_regs& r) {
-        out_t o;  // every field 0 / false (out_t())
+        out_t o;  // every field 0 / false (default member initialisers)
         if (!encoder_counter_config_ok(r)) {
             reset();
             o.cfg_err = true;
@@ -189,6 +144,7 @@ public:
         // half, then shifts {hi, lo} right. hi starts at 2^(S_FRAC-1): after W_CNT shifts
         // {hi, lo} = scale * cnt + 2^(S_FRAC-1).
         const bool done = k_ == cfg::CORR_LAT;
+#pragma hls_unroll yes
         LX_LOOP(corr_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             if (done) {
@@ -206,6 +162,7 @@ public:
         // a sample while a product is in flight (only after corr_period was lowered live) is
         // dropped: the running product finishes
         if (sample && k_ == 0) {
+#pragma hls_unroll yes
             LX_LOOP(sample_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
                 hi_[c] = cfg::acc_t(cfg::HALF);
@@ -229,6 +186,7 @@ public:
             f_pos_ = diff > 0;
             f_ok_ = !r.wait_arm;  // an arm in this call changes the value: these flags are stale
         }
+#pragma hls_unroll yes
         LX_LOOP(count_ch) for (int c = 0; c < cfg::N_CH; ++c) {
 #pragma HLS UNROLL
             // simulation: the carry of the phase accumulator counts in the next call (sc_)
@@ -264,7 +222,9 @@ public:
             w_val_ = r.wait_val;
             w_down_ = r.wait_down;
         }
+#pragma hls_unroll yes
         LX_LOOP(out_ch) for (int c = 0; c < cfg::N_CH; ++c) {
+#pragma HLS UNROLL
             o.cnt[c] = cnt_[c];
             o.rst_pending[c] = pending_[c];
             o.corr[c] = corr_[c];
@@ -286,22 +246,22 @@ private:
         hi_[c] = cfg::acc_t(s >> 1);
     }
 
-    cfg::cnt_t cnt_[cfg::N_CH];
-    cfg::inc_t ph_[cfg::N_CH];
-    bool sc_[cfg::N_CH];           // simulation carry of the previous call (counted in this call)
-    bool pending_[cfg::N_CH];
-    cfg::corr_t corr_[cfg::N_CH];
-    cfg::acc_t hi_[cfg::N_CH];     // sequenced product: upper half (signed)
-    cfg::lo_t lo_[cfg::N_CH];      //   lower half: counter bits not yet used, product bits below
-    cfg::scale_t m_[cfg::N_CH];    //   sampled scale
-    cfg::posin_t p_[cfg::N_CH];    //   sampled position
-    cfg::stepcnt_t k_;             //   0 idle, 1 + i: step i this call, CORR_LAT: add pos
-    cfg::per_t timer_;
-    bool waiting_;
-    bool f_neg_, f_pos_, f_ok_;    // wait flags of the previous call: s32(cnt - val) < 0, > 0, valid
-    bool w_ch_;
-    cfg::cnt_t w_val_;
-    bool w_down_;
+    cfg::cnt_t cnt_[cfg::N_CH] = {0, 0};
+    cfg::inc_t ph_[cfg::N_CH] = {0, 0};
+    bool sc_[cfg::N_CH] = {false, false};       // simulation carry of the previous call (counted in this call)
+    bool pending_[cfg::N_CH] = {false, false};
+    cfg::corr_t corr_[cfg::N_CH] = {0, 0};
+    cfg::acc_t hi_[cfg::N_CH] = {0, 0};         // sequenced product: upper half (signed)
+    cfg::lo_t lo_[cfg::N_CH] = {0, 0};          //   lower half: counter bits not yet used, product bits below
+    cfg::scale_t m_[cfg::N_CH] = {0, 0};        //   sampled scale
+    cfg::posin_t p_[cfg::N_CH] = {0, 0};        //   sampled position
+    cfg::stepcnt_t k_ = 0;                      //   0 idle, 1 + i: step i this call, CORR_LAT: add pos
+    cfg::per_t timer_ = 0;
+    bool waiting_ = false;
+    bool f_neg_ = false, f_pos_ = false, f_ok_ = false;  // wait flags of the previous call: s32(cnt - val) < 0, > 0, valid
+    bool w_ch_ = false;
+    cfg::cnt_t w_val_ = 0;
+    bool w_down_ = false;
 };
 
 }  // namespace lx

@@ -11,15 +11,17 @@
 //                                  Part-speed: phase accumulator (Q0.32 counts/clock, clamped to
 //                                  24 MHz), one distance count per carry; the minimum-spacing
 //                                  check as a sequenced shift-add product (17 calls per sample).
-//   stage Q  (A of the last call)  the chord ROM address s = sum D_i^2 (the BRAM's address
-//                                  register).
+//   stage Q  (A of the last call)  the chord ROM address s = sum D_i^2, into the ROM's block RAM
+//                                  (its address register; the word is in the RAM's output
+//                                  register in the next call).
 //   stage R  (Q of the last call)  chord = ROM[s] = round(sqrt(s) * 2^32), the estimate step
 //                                  Y = chord + one - (the open chord, unless a reversal closed it).
 //   stage B1 (R of the last call)  Y - thr for two candidate thresholds of the fire after the
-//                                  next (next, next^2 of the index before the move of the
-//                                  decision being taken in B2).
+//                                  next (entries next, next^2 of the index of the last call,
+//                                  before its move: the prefetch, below).
 //   stage P  (B1 of the last call) the loop operands: Y, and the difference for the index after
-//                                  the move B2 decided in the last call, picked by that move.
+//                                  the moves B2 decided up to the last call, picked by "the index
+//                                  moved in one of the last two calls" (at most one can).
 //   stage B2 (P of the last call)  the loop on u = value - thr: decide the entry in u (fire when
 //                                  u >= 0 and the last call did not fire) and add the next
 //                                  entry's operand, picked by that decision (u + Y - thr' after a
@@ -29,6 +31,14 @@
 //                                  the last call and one candidate per stage is enough.
 //   stage B3 (B2 of the last call) apply the decision: fire / emit outputs, pulse timer, flags,
 //                                  counters, dist = u (+ thr without a fire), index outputs.
+//
+// Threshold prefetch (every call, as rtl_ref): the firing-distance array is three copies of
+// a 64 x 56 block RAM (RAM_S2P: one read and the shared write port per call each), read at
+// next, next^2, next^3 of the call's index. In the next call the three words (with the write
+// presented in the read call forwarded: the RAM reads first) are shifted by the read call's
+// index move, the write presented in this call is forwarded, and entries next(idx), next^2(idx)
+// of this call (or fire_dist) are registered for B1 of the next call: the RAM data land in
+// registers only. Entry 0 has a register copy (the start threshold of a run).
 //
 // With K = 1 every step closes its window and the increment is the per-call magnitude
 // 0, 1, sqrt2, sqrt3 of the step vector; larger K measures the chord over up to K counts, which
@@ -44,10 +54,8 @@
 #ifndef LASERAX_HLS_PSO_H
 #define LASERAX_HLS_PSO_H
 
-#include <cstddef>
-#include <utility>  // std::index_sequence (compile-time only: the chord ROM initialiser)
-
 #include "hls/axis_config.h"
+#include "hls/lx_ram.h"
 
 namespace lx {
 
@@ -57,7 +65,7 @@ struct pso_cfg {
     static constexpr int D_FRAC = 32;       // fraction bits of every distance (2^-32 count)
     static constexpr int D_INT = 24;        // distance registers: < 2^24 counts (1.31 m)
     static constexpr int K_MAX = 16;        // longest tracking window, counts on one axis (ROM: 10 BRAMs)
-    static constexpr int ARR_DEPTH = 64;    // firing-distance array (distributed RAM)
+    static constexpr int ARR_DEPTH = 64;    // firing-distance array (three block-RAM copies)
     static constexpr int W_PW = 16;         // pulse width register, clocks
     static constexpr int W_GAP = 16;        // laser minimum pulse period register, clocks
     static constexpr int W_INC = 32;        // part-speed rate, Q0.32 counts per clock
@@ -119,7 +127,8 @@ struct pso_cfg {
 // the digit-by-digit integer square root (two radicand bits per iteration, 64-bit arithmetic: the
 // partial remainder stays below 2 * root + 1 < 2^40). Ties cannot occur (sqrt(s) * 2^32 is an
 // integer or irrational), so "round to nearest" needs no tie rule: root + 1 when the remainder
-// x - root^2 exceeds root.
+// x - root^2 exceeds root. The words are the INIT of the ROM's block RAM (lx::ram_list: count,
+// word(s)); the ROM is pso_chord_rom_t, 769 words of W_CHORD = 37 bits, read-only, one port.
 struct pso_chord_rom {
     static constexpr uint64_t round_sqrt(uint64_t s) {
         constexpr int s_pairs = (pso_cfg::W_S + 1) / 2;
@@ -138,20 +147,15 @@ struct pso_chord_rom {
         }
         return rem > root ? root + 1 : root;
     }
-
-    // The ROM is the array `rom` itself (a function-local static with a constant initialiser,
-    // one element per s), so BIND_STORAGE names the array where it is declared.
-    template <std::size_t... S>
-    static pso_cfg::chord_t lookup(pso_cfg::s_t s, std::index_sequence<S...>) {
-        static const uint64_t rom[sizeof...(S)] = {round_sqrt(S)...};
-#pragma HLS BIND_STORAGE variable = rom type = rom_1p impl = bram
-        return rom[s.to_uint()];
-    }
+    static constexpr int count = pso_cfg::S_MAX + 1;
+    static constexpr uint64_t word(int s) { return round_sqrt(static_cast<uint64_t>(s)); }
 };
-
-inline pso_cfg::chord_t pso_chord(pso_cfg::s_t s) {
-    return pso_chord_rom::lookup(s, std::make_index_sequence<pso_cfg::S_MAX + 1>());
-}
+// W_CHORD is the real width of the words: the largest word needs all of its bits
+static_assert(pso_chord_rom::round_sqrt(pso_cfg::S_MAX) < (1ULL << pso_cfg::W_CHORD) &&
+                  pso_chord_rom::round_sqrt(pso_cfg::S_MAX) >= (1ULL << (pso_cfg::W_CHORD - 1)),
+              "chord ROM: the largest word is W_CHORD bits wide");
+using pso_chord_rom_t = ram<pso_cfg::chord_t, pso_chord_rom::count, RAM_1P,
+                            ram_list<pso_cfg::chord_t, pso_chord_rom::count, pso_chord_rom>>;
 
 // Register block (s_axilite). part_speed, arr_en, arr_len, arr_wrap and axis_mask are latched
 // at the rising edge of the run state (enable with a valid configuration); the others act live.
@@ -177,21 +181,19 @@ struct pso_regs {
     bool clear = false;             // clears the sticky flags and the overlap counter
 };
 
-struct pso_in {
-    step_t step[pso_cfg::N_AXES];  // tracked axis steps (-1, 0, +1)
-    pos_t pos[pso_cfg::N_AXES];    // axis positions after the step (window comparison)
-    pso_cfg::inc_t ps_inc;         // part-speed commanded vector rate, Q0.32 counts per clock
+// Per-axis arrays are listed element by element: neither vendor integer type zeroes itself, so
+// an array member needs an initialiser for each element.
+static_assert(pso_cfg::N_AXES == 3, "the per-axis initialisers below list three axes");
 
-    pso_in() : ps_inc(0) {
-        LX_LOOP(pso_in_init) for (int i = 0; i < pso_cfg::N_AXES; ++i) {
-            step[i] = 0;
-            pos[i] = 0;
-        }
-    }
+struct pso_in {
+    step_t step[pso_cfg::N_AXES] = {0, 0, 0};  // tracked axis steps (-1, 0, +1)
+    pos_t pos[pso_cfg::N_AXES] = {0, 0, 0};    // axis positions after the step (window comparison)
+    pso_cfg::inc_t ps_inc = 0;                 // part-speed commanded vector rate, Q0.32 counts per clock
 };
 
-// Configuration check (combinational, every call).
-inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
+// Configuration check (combinational, every call; a constant expression with the own integer
+// types, so that the register stage's initial check is a constant).
+inline LX_CONSTEXPR bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
     const bool k_ok = r.win_k >= 1 && r.win_k <= pso_cfg::K_MAX;
     const bool axes_ok = r.part_speed || r.axis_mask != 0;
     bool thr_ok = false;
@@ -207,7 +209,89 @@ inline bool pso_config_ok(const pso_regs& r, pso_cfg::bad_t arr_bad) {
     return k_ok && axes_ok && thr_ok && win_ok && r.pulse_w >= 1;
 }
 
-class pso {
+// The registers of lx::pso, grouped by their reset as the always blocks of rtl_ref/pso.v. The
+// default member initialisers are the reset values (the power-up state: no constructor, CTest
+// hls_const_init); a reset of a group assigns its initialisers:
+//   pso_track_regs  the tracking state: reset by enable = 0, an invalid configuration and i_rst
+//                   (rtl_ref rst_trk; there the index registers take the array length presented)
+//   pso_count_regs  counters and sticky flags: reset by an invalid configuration and i_rst
+//                   (rtl_ref rst_cfg; kept while disabled)
+//   pso_stage_regs  the register stage, its check, the bad-entry map and the copy of entry 0:
+//                   reset by i_rst only
+// The RAMs and the registers without a reset (the threshold prefetch, the thresholds) are members
+// of lx::pso itself.
+struct pso_track_regs {
+    using cfg = pso_cfg;
+    // stage A
+    cfg::win_t trav_[cfg::N_AXES] = {0, 0, 0};
+    bool a_rev_ = false, a_kclose_ = false, a_pulse_ = false, a_inwin_ = false, a_v_ = false;
+    cfg::sq_t a_sq_[cfg::N_AXES] = {0, 0, 0};  // |Dn_i|^2 of this call's travel (the ROM address's terms)
+    cfg::inc_t ph_ = 0;
+    pos_t ps_cnt_ = 0;
+    // minimum-spacing product (sequenced)
+    cfg::spk_t sp_k_ = 0;
+    bool sp_full_ = false;
+    cfg::inc_t sp_inc_ = 0;
+    cfg::gap_t sp_min_ = 0;
+    cfg::dist_t sp_thr_ = 0;
+    cfg::sphi_t sp_hi_ = 0;
+    cfg::gap_t sp_lo_ = 0;
+    // stage Q (the ROM address itself is in the ROM's block RAM)
+    bool q_rev_ = false, q_kclose_ = false, q_pulse_ = false, q_inwin_ = false, q_v_ = false;
+    // stage R
+    cfg::incr_t r_y_ = 0;    // Y: the estimate step of the entry
+    cfg::chord_t part_ = 0;  // chord of the open window
+    bool r_inwin_ = false, r_v_ = false;
+    // stage B1 (the differences for the two prefetched thresholds)
+    cfg::incr_t p_y_ = 0;
+    cfg::rem_t p_d1_ = 0, p_d2_ = 0;  // Y - th1, Y - th2
+    bool p_inwin_ = false, p_v_ = false;
+    // stage P (the loop operands)
+    cfg::incr_t b_y_ = 0;
+    cfg::rem_t b_opF0_ = 0;  // Y - thF0
+    bool b_inwin_ = false, b_v_ = false;
+    // stage B2 (the loop, the decision and the state it moves)
+    cfg::rem_t u_ = 0;       // value - thr of the entry held (the next to be decided)
+    bool u_v_ = false, u_inwin_ = false;
+    bool adv_ = false;       // the last call's decision moved the index
+    bool mv_ = false;        // the index moved in one of the last two calls (P's pick)
+    cfg::len_t idx_p_ = 0;   // the index before the last call's move, and next .. next^4 of it
+    cfg::len_t nx_p_ = 0, nx2_p_ = 0, nx3_p_ = 0, nx4_p_ = 0;
+    bool stop0_ = false;     // a fire ends the array (arr_en, no wrap, the last entry) at this
+                             //   call's index without the last call's move
+    bool done_ = false;
+    bool c_fire_ = false, c_inwin_ = false, c_live_ = false;
+    cfg::rem_t c_u_ = 0;     // u of the decision
+    cfg::dist_t c_tm_ = 0;   // its threshold if it did not fire, else 0
+    // stage B3 (outputs)
+    cfg::rem_t dist_ = 0;
+    cfg::len_t idx_o_ = 0;
+    bool done_o_ = false;
+    cfg::pw_t timer_ = 0;
+    cfg::gap_t since_ = cfg::GAP_MAX;  // (the first emit is never early)
+    // run state and latched mode registers
+    bool run_q_ = false, ps_q_ = false, arr_en_q_ = false, arr_wrap_q_ = false;
+    cfg::mask_t mask_q_ = 0;
+    cfg::len_t arr_len_q_ = 1;
+};
+
+struct pso_count_regs {
+    pso_cfg::fcnt_t fire_cnt_ = 0;
+    pso_cfg::ovl_t ovl_cnt_ = 0;
+    bool overlap_st_ = false, rate_over_st_ = false, spacing_st_ = false, freq_st_ = false;
+};
+
+struct pso_stage_regs {
+    // the register values in force (presented in the last call) and their configuration check
+    pso_regs rq_;
+    bool ok_q_ = pso_config_ok(pso_regs{}, ~pso_cfg::bad_t(0));  // (true: the reset values are legal)
+    // "entry below the minimum distance" bitmap, after the writes presented so far (one call
+    // ahead of the RAM): every entry at power-up (the RAM content is not a legal distance)
+    pso_cfg::bad_t arr_bad_ = ~pso_cfg::bad_t(0);
+    pso_cfg::dist_t entry0_ = 0;  // copy of entry 0 as the RAM stands (the start threshold in array mode)
+};
+
+class pso : private pso_track_regs, private pso_count_regs, private pso_stage_regs {
 public:
     using cfg = pso_cfg;
     struct out_t {
@@ -229,32 +313,98 @@ public:
         bool cfg_err = false;
     };
 
-    pso() {
-        LX_LOOP(arr_init) for (int i = 0; i < cfg::ARR_DEPTH; ++i) arr_[i] = 0;
-        arr_bad_ = ~cfg::bad_t(0);  // power-up RAM content is not a legal distance
-        rq_ = pso_regs();           // register stage: the reset values in force
-        ok_q_ = pso_config_ok(rq_, arr_bad_);
-        reset();
-    }
-
-    // Reset of the state (not of the array RAM).
+    // rtl_ref i_rst: the register stage at the reset values (a legal configuration), every array
+    // entry "not written", the tracking state, counters and flags in reset. The RAM contents are
+    // kept (no RAM reset), and so are the registers rtl_ref does not reset (the prefetch and the
+    // thresholds: nothing reads them before they are loaded again).
     void reset() {
-        reset_track();
-        run_q_ = false;
-        fire_cnt_ = 0;
-        ovl_cnt_ = 0;
-        overlap_st_ = false;
-        rate_over_st_ = false;
-        spacing_st_ = false;
-        freq_st_ = false;
+        static_cast<pso_stage_regs&>(*this) = pso_stage_regs{};
+        static_cast<pso_track_regs&>(*this) = pso_track_regs{};
+        static_cast<pso_count_regs&>(*this) = pso_count_regs{};
     }
 
     // rp: the register values presented in this call; they are in force in the next call
     // (register stage, docs/PSO_COUNTERS.md §2.2), with their configuration check formed now.
     out_t step(const pso_in& in, const pso_regs& rp) {
+#pragma HLS BIND_STORAGE variable = rom_.m_.w type = rom_1p impl = bram
+#pragma HLS BIND_STORAGE variable = arr1_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = arr2_.m_.w type = ram_s2p impl = bram
+#pragma HLS BIND_STORAGE variable = arr3_.m_.w type = ram_s2p impl = bram
+        rom_.next_call();
+        arr1_.next_call();
+        arr2_.next_call();
+        arr3_.next_call();
         const pso_regs r = rq_;    // the values in force (presented in the last call)
         const bool cfg_ok = ok_q_; // their check, formed in the last call
-        if (r.arr_we) arr_[r.arr_addr.to_uint()] = r.arr_data;
+        const bool run = run_q_;   // the last call ran (this one continues the run)
+        // ---- every call, as rtl_ref (no reset, no enable): the RAM ports, the threshold
+        // prefetch, the threshold registers. The stages below read these registers as they were
+        // before the call:
+        const cfg::dist_t th1 = th1_, th2 = th2_;    // B1's thresholds (prefetched in the last call)
+        const cfg::dist_t thr = thr_;                // the threshold of the next fire
+        const cfg::dist_t thr_now = run ? thr : st_; // the same in a run's first call (spacing sample)
+        const bool mv = mv_;                         // P's pick: the index moved in one of the last two calls
+        // chord ROM: stage R's chord is the word read in the last call; stage Q's address
+        // s = sum |Dn_i|^2 of stage A's squares goes into the ROM's address register now (its
+        // word is stage R's chord in the next call)
+        const cfg::chord_t chord = rom_.q<0>();
+        const cfg::s_t s = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
+        rom_.read<0>(s.to_uint());
+        // the array index of this call (after the decisions up to the last call): the index
+        // registers hold the index before the last call's move and next .. next^4 of it, adv_ is
+        // that move (a decision goes into the one register adv_)
+        const cfg::len_t idx_l = adv_ ? nx_p_ : idx_p_;
+        const cfg::len_t nx_l = adv_ ? nx2_p_ : nx_p_;
+        const cfg::len_t nx2_l = adv_ ? nx3_p_ : nx2_p_;
+        const cfg::len_t nx3_l = adv_ ? nx4_p_ : nx3_p_;
+        const cfg::len_t nx4_l = adv_ ? next_idx(nx4_p_, arr_len_q_) : nx4_p_;
+        // threshold prefetch for the next call's B1: the words the three array copies returned
+        // (entries next .. next^3 of the last call's index) with the write presented in the last
+        // call forwarded (made after the read: read-first), shifted by the last call's move:
+        // entries next(idx), next^2(idx) of this call, as the RAM stands in this call; then the
+        // write presented now (in force in the next call) forwarded into them, or fire_dist
+        // presented now outside array mode. The first operands of a run take the start
+        // threshold thr (nf: the next call's B1 makes them).
+        const cfg::dist_t e1 = fw1_ ? f_data_ : arr1_.q<0>();
+        const cfg::dist_t e2 = fw2_ ? f_data_ : arr2_.q<0>();
+        const cfg::dist_t e3 = fw3_ ? f_data_ : arr3_.q<0>();
+        const bool arr_en_e = run ? arr_en_q_ : r.arr_en;  // array mode of this call (latched in a run)
+        const bool nf = q_v_ && !r_v_;
+        const bool pw1 = rp.arr_we && arr_en_e && !nf && rp.arr_addr == cfg::addr_t(nx_l);
+        const bool pw2 = rp.arr_we && arr_en_e && rp.arr_addr == cfg::addr_t(nx2_l);
+        const cfg::dist_t q1 = nf ? thr : arr_en_e ? (adv_ ? e2 : e1) : rp.fire_dist;
+        const cfg::dist_t q2 = arr_en_e ? (adv_ ? e3 : e2) : rp.fire_dist;
+        th1_ = pw1 ? rp.arr_data : q1;
+        th2_ = pw2 ? rp.arr_data : q2;
+        // the array: one read per copy (next, next^2, next^3 of this call's index), then the write
+        // presented now into all three (after the reads: read-first, so a read of the written
+        // address returns the old word; fwk_ marks it for the forward above in the next call)
+        arr1_.read<0>(cfg::addr_t(nx_l).to_uint());
+        arr2_.read<0>(cfg::addr_t(nx2_l).to_uint());
+        arr3_.read<0>(cfg::addr_t(nx3_l).to_uint());
+        fw1_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx_l);
+        fw2_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx2_l);
+        fw3_ = rp.arr_we && rp.arr_addr == cfg::addr_t(nx3_l);
+        f_data_ = rp.arr_data;
+        if (rp.arr_we) {
+            arr1_.write(rp.arr_addr.to_uint(), rp.arr_data);
+            arr2_.write(rp.arr_addr.to_uint(), rp.arr_data);
+            arr3_.write(rp.arr_addr.to_uint(), rp.arr_data);
+        }
+        // the threshold of the next fire: in every call without a run the start threshold st_
+        // (so thr_ holds it from a run's call 1 on), in a run the threshold of a take, decided
+        // from the B2 registers (u >= 0, operands held, no fire in the last call, not done, the
+        // fire would not end the array: a fire or the run start takes the next threshold)
+        const bool take = u_ >= 0 && b_v_ && !c_fire_ && !done_ && !stop0_;
+        if (!run) {
+            thr_ = st_;
+        } else if (take) {
+            thr_ = b_thF0_;
+        }
+        // the start threshold of a run beginning in the next call: fire_dist presented now, or
+        // entry 0 after the write presented now (entry0_, a register copy of entry 0)
+        st_ = start_thr(rp);
+        if (rp.arr_we && rp.arr_addr == 0) entry0_ = rp.arr_data;
         // register stage: the bad-entry map after the presented write (one call ahead of the
         // RAM), the check of the presented values against it
         if (rp.arr_we) {
@@ -264,9 +414,9 @@ public:
         ok_q_ = pso_config_ok(rp, arr_bad_);
         rq_ = rp;
         out_t o;  // every field 0 / false (default member initialisers)
-        if (!cfg_ok) {
-            reset();
-            thr_ = start_thr(rp);
+        if (!cfg_ok) {  // everything but the RAMs, the register stage and the bad-entry map
+            reset_track(rp);
+            reset_counts();
             o.cfg_err = true;
             return o;
         }
@@ -278,8 +428,7 @@ public:
             ovl_cnt_ = 0;
         }
         if (!r.enable) {
-            reset_track();
-            thr_ = start_thr(rp);
+            reset_track(rp);
             fill_status(o);
             return o;
         }
@@ -291,21 +440,6 @@ public:
             arr_wrap_q_ = r.arr_wrap;
             run_q_ = true;
         }
-        // ---- stage B1 thresholds (read before B2 moves the index) ----
-        // the candidate thresholds of the fire after the next: entries next(idx), next^2(idx)
-        // of the index before this call's B2 move (P picks one of them in the next call, by that
-        // move); fire_dist in force otherwise. The RAM is read after this call's write. The
-        // first operands of a run take the start threshold thr_.
-        cfg::len_t nx = idx_ + 1;
-        if (nx >= arr_len_q_) nx = 0;
-        cfg::len_t nx2 = nx + 1;
-        if (nx2 >= arr_len_q_) nx2 = 0;
-        const bool first = r_v_ && !p_v_;
-        const cfg::dist_t th1 = first ? thr_ : arr_en_q_ ? arr_[nx.to_uint()] : r.fire_dist;
-        const cfg::dist_t th2 = arr_en_q_ ? arr_[nx2.to_uint()] : r.fire_dist;
-        const cfg::dist_t thr_in = thr_;  // the threshold of the next fire (spacing sample)
-        const bool adv_last = adv_;       // the last call's move (P's pick; B2 overwrites adv_)
-
         // ---- stage B3 (from the B2 registers): apply the decision of the last call ----
         const bool fire = c_fire_;
         const bool emit = fire && c_inwin_;
@@ -327,79 +461,81 @@ public:
         const bool in_win_used = c_inwin_;
         // c_u_ is u of the last decision, c_tm_ its threshold if it did not fire (else 0)
         if (c_live_) dist_ = c_u_ + cfg::rem_t(c_tm_.to_uint64());
-        idx_o_ = idx_;
+        idx_o_ = idx_l;
         done_o_ = done_;
 
-        // ---- stage B2 (from the B1 registers): the loop on u, decision, array index ----
+        // ---- stage B2 (from the P registers): the loop on u, decision, array index ----
         // (no fire in the call after a fire: `fire` is the last call's decision. With thresholds
         // >= MIN_DIST it never acts, u < 0 after a fire; so a fire never follows a move of the
-        // last call, and b_opF0_ is the operand for the index as it stands)
+        // last call: b_opF0_ is the operand for the index as it stands, and stop0_, formed in
+        // the last call for the index without its move, says whether this decision ends the
+        // array. The take of the next threshold is above, with the threshold register.)
         const bool pos = u_ >= 0 && !fire;
         const bool dec = u_v_ && !done_ && pos;  // value - thr >= 0
-        const bool last_stop = arr_en_q_ && idx_ + 1 >= arr_len_q_ && !arr_wrap_q_;
-        const bool take = b_v_ && pos && !done_ && !last_stop;  // a fire (or the run start) takes thr
-        const cfg::rem_t opF = b_opF0_;
-        const cfg::dist_t thF = b_thF0_;
+        const bool moved = dec && arr_en_q_ && !stop0_;
         c_fire_ = dec;
         c_inwin_ = u_inwin_;
         c_live_ = u_v_ && !done_;
         c_u_ = u_;
-        c_tm_ = pos ? cfg::dist_t(0) : thr_;
-        u_ = pos ? cfg::rem_t(u_.to_int64() + opF.to_int64()) : cfg::rem_t(u_.to_int64() + static_cast<int64_t>(b_y_.to_uint64()));
-        if (take) thr_ = thF;
-        bool moved = false;
-        if (dec && arr_en_q_) {
-            if (idx_ + 1 >= arr_len_q_) {
-                if (arr_wrap_q_) {
-                    idx_ = 0;
-                    moved = true;
-                } else {
-                    done_ = true;
-                }
-            } else {
-                idx_ = idx_ + 1;
-                moved = true;
-            }
-        }
+        c_tm_ = pos ? cfg::dist_t(0) : thr;
+        u_ = pos ? cfg::rem_t(u_.to_int64() + b_opF0_.to_int64()) : cfg::rem_t(u_.to_int64() + static_cast<int64_t>(b_y_.to_uint64()));
+        if (dec && stop0_) done_ = true;
+        // the index registers: this call's index and next .. next^4 of it; the move goes into
+        // adv_ alone; "a fire here ends the array" for the next call (its index without a move)
+        idx_p_ = idx_l;
+        nx_p_ = nx_l;
+        nx2_p_ = nx2_l;
+        nx3_p_ = nx3_l;
+        nx4_p_ = nx4_l;
+        stop0_ = arr_en_q_ && !arr_wrap_q_ && nx_l == 0;
+        mv_ = moved || adv_;
         adv_ = moved;
         u_v_ = b_v_;
         u_inwin_ = b_inwin_;
 
-        // ---- stage P (from the B1 registers): the loop operands, picked by the last call's move
-        // (B1's candidates are for the index before it) ----
+        // ---- stage P (from the B1 registers): the loop operands, picked by the index moves of
+        // the last two calls (at most one of them moved: no fire in two calls in a row; B1's
+        // candidates are for the index before both) ----
         b_y_ = p_y_;
-        b_opF0_ = adv_last ? p_d2_ : p_d1_;
-        b_thF0_ = adv_last ? p_th2_ : p_th1_;
+        b_opF0_ = mv ? p_d2_ : p_d1_;
+        b_thF0_ = mv ? p_th2_ : p_th1_;
         b_inwin_ = p_inwin_;
         b_v_ = p_v_;
 
-        // ---- stage B1 (from the R registers): Y - th for the two candidates (0 until R holds
-        // data) ----
+        // ---- stage B1 (from the R registers and the prefetch): Y - th for the two prefetched
+        // thresholds (entries next, next^2 of the last call's index before its move, or
+        // fire_dist; 0 until R holds data) ----
         if (r_v_) {
             const int64_t y_v = static_cast<int64_t>(r_y_.to_uint64());
             p_y_ = r_y_;
             p_d1_ = y_v - static_cast<int64_t>(th1.to_uint64());
             p_d2_ = y_v - static_cast<int64_t>(th2.to_uint64());
-            p_th1_ = th1;
-            p_th2_ = th2;
         } else {
-            clear_p_operands();
+            p_y_ = 0;
+            p_d1_ = 0;
+            p_d2_ = 0;
         }
+        p_th1_ = th1;
+        p_th2_ = th2;
         p_inwin_ = r_v_ && r_inwin_;
         p_v_ = r_v_;
 
-        // ---- stage R: chord ROM read at the address stage Q wrote, the estimate step ----
-        const uint64_t chord = pso_chord(q_s_).to_uint64();
-        const uint64_t one = q_pulse_ ? cfg::ONE : 0;
-        // Y = est - est of the previous entry: this entry's chord (plus a generator pulse), less the
-        // open chord it extends (a reversal closed that one, a K close left none); >= 0
-        r_y_ = chord + one - (q_rev_ ? uint64_t(0) : part_.to_uint64());
-        part_ = q_kclose_ ? cfg::chord_t(0) : cfg::chord_t(chord);
+        // ---- stage R: the ROM word of stage Q's address (read in the last call), the estimate
+        // step; 0 while Q holds no data (the ROM's output register is not reset) ----
+        if (q_v_) {
+            const uint64_t one = q_pulse_ ? cfg::ONE : 0;
+            // Y = est - est of the previous entry: this entry's chord (plus a generator pulse),
+            // less the open chord it extends (a reversal closed that one, a K close left none); >= 0
+            r_y_ = chord.to_uint64() + one - (q_rev_ ? uint64_t(0) : part_.to_uint64());
+            part_ = q_kclose_ ? cfg::chord_t(0) : chord;
+        } else {
+            r_y_ = 0;
+            part_ = 0;
+        }
         r_inwin_ = q_inwin_;
         r_v_ = q_v_;
 
-        // ---- stage Q: the ROM address s = sum |Dn_i|^2 from stage A's squares ----
-        q_s_ = cfg::s_t(cfg::s_t(a_sq_[0]) + a_sq_[1]) + a_sq_[2];
+        // ---- stage Q: the flags of the ROM word read above (its address from stage A's squares) ----
         q_rev_ = a_rev_;
         q_kclose_ = a_kclose_;
         q_pulse_ = a_pulse_;
@@ -426,7 +562,7 @@ public:
                 sp_full_ = true;
                 sp_inc_ = inc;
                 sp_min_ = r.min_period;
-                sp_thr_ = thr_in;
+                sp_thr_ = thr_now;
                 sp_hi_ = 0;
                 sp_lo_ = 0;
                 sp_k_ = 1;
@@ -443,6 +579,7 @@ public:
 
         bool rev = false;
         cfg::win_t d[cfg::N_AXES];
+#pragma hls_unroll yes
         LX_LOOP(axis_step) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             const bool tracked = !ps_q_ && ((mask_q_ >> i) & 1) != 0;
@@ -451,6 +588,7 @@ public:
         }
         bool kclose = false;
         cfg::win_t dn[cfg::N_AXES];
+#pragma hls_unroll yes
         LX_LOOP(axis_travel) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             dn[i] = (rev ? cfg::win_t(0) : trav_[i]) + d[i];
@@ -458,6 +596,7 @@ public:
             if (mag >= r.win_k) kclose = true;
             a_sq_[i] = cfg::sq_t(uint<2 * cfg::W_K>(mag) * mag);  // a 5-bit square: a table
         }
+#pragma hls_unroll yes
         LX_LOOP(axis_close) for (int i = 0; i < cfg::N_AXES; ++i) {
 #pragma HLS UNROLL
             trav_[i] = kclose ? cfg::win_t(0) : dn[i];
@@ -485,84 +624,42 @@ public:
         return o;
     }
 
+    // the host's side (C simulation and tests, between calls; never reached from the synthesis
+    // top): a word of the chord ROM as stored, and the sticky RAM-rule flags (lx_ram.h)
+    cfg::chord_t chord_word(unsigned s) const { return rom_.peek(s); }
+#ifndef __SYNTHESIS__
+    int ram_violations() const {
+        return rom_.violations() | arr1_.violations() | arr2_.violations() | arr3_.violations();
+    }
+#endif
+
 private:
-    // While the tracking state is in reset: the threshold a run starting in the next call takes
-    // (fire_dist in force then, or entry 0 as the RAM stands after the next call's write).
+    // The threshold a run starting in the next call takes: fire_dist presented now, or entry 0
+    // after the write presented now (entry0_ holds entry 0 as the RAM stands in this call).
     cfg::dist_t start_thr(const pso_regs& rp) const {
         if (!rp.arr_en) return rp.fire_dist;
-        return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : arr_[0];
+        return (rp.arr_we && rp.arr_addr == 0) ? rp.arr_data : entry0_;
     }
 
-    // stage P's operand registers (B1's results) at 0: while R holds no data, and in reset_track()
-    void clear_p_operands() {
-        p_y_ = 0;
-        p_d1_ = 0;
-        p_d2_ = 0;
-        p_th1_ = 0;
-        p_th2_ = 0;
+    // the array index after i: i + 1, or 0 after the last entry of an array of len entries
+    static cfg::len_t next_idx(const cfg::len_t& i, const cfg::len_t& len) {
+        const unsigned n = i.to_uint() + 1u;
+        return n >= len.to_uint() ? cfg::len_t(0) : cfg::len_t(n);
     }
 
-    void reset_track() {
-        LX_LOOP(axis_reset) for (int i = 0; i < cfg::N_AXES; ++i) {
-#pragma HLS UNROLL
-            trav_[i] = 0;
-            a_sq_[i] = 0;
-        }
-        a_rev_ = false;
-        a_kclose_ = false;
-        a_pulse_ = false;
-        a_inwin_ = false;
-        a_v_ = false;
-        q_s_ = 0;
-        q_rev_ = false;
-        q_kclose_ = false;
-        q_pulse_ = false;
-        q_inwin_ = false;
-        q_v_ = false;
-        r_y_ = 0;
-        r_inwin_ = false;
-        r_v_ = false;
-        part_ = 0;
-        clear_p_operands();
-        p_inwin_ = false;
-        p_v_ = false;
-        b_y_ = 0;
-        b_opF0_ = 0;
-        b_thF0_ = 0;
-        b_inwin_ = false;
-        b_v_ = false;
-        u_ = 0;
-        u_v_ = false;
-        u_inwin_ = false;
-        thr_ = 0;
-        adv_ = false;
-        idx_ = 0;
-        done_ = false;
-        c_fire_ = false;
-        c_inwin_ = false;
-        c_live_ = false;
-        c_u_ = 0;
-        c_tm_ = 0;
-        dist_ = 0;
-        idx_o_ = 0;
-        done_o_ = false;
-        timer_ = 0;
-        since_ = cfg::GAP_MAX;
-        ph_ = 0;
-        ps_cnt_ = 0;
-        sp_k_ = 0;
-        sp_full_ = false;
-        sp_inc_ = 0;
-        sp_min_ = 0;
-        sp_thr_ = 0;
-        sp_hi_ = 0;
-        sp_lo_ = 0;
-        run_q_ = false;
-        ps_q_ = false;
-        mask_q_ = 0;
-        arr_en_q_ = false;
-        arr_len_q_ = 1;
-        arr_wrap_q_ = false;
+    // the counters and sticky flags (reset by an invalid configuration, kept while disabled)
+    void reset_counts() { static_cast<pso_count_regs&>(*this) = pso_count_regs{}; }
+
+    // The tracking state in reset (enable = 0, an invalid configuration), with the index
+    // registers at index 0 and next .. next^4 of it for the array length presented now (in force
+    // in the next call, which may start a run and latch it).
+    void reset_track(const pso_regs& rp) {
+        static_cast<pso_track_regs&>(*this) = pso_track_regs{};
+        nx_p_ = next_idx(0, rp.arr_len);
+        nx2_p_ = next_idx(nx_p_, rp.arr_len);
+        nx3_p_ = next_idx(nx2_p_, rp.arr_len);
+        nx4_p_ = next_idx(nx3_p_, rp.arr_len);
+        stop0_ = rp.arr_en && !rp.arr_wrap && nx_p_ == 0;
     }
 
     void fill_status(out_t& o) const {
@@ -579,68 +676,23 @@ private:
         o.ps_count = ps_cnt_;
     }
 
-    // array RAM and its "entry below the minimum distance" bitmap (the map after the write
-    // presented in the last call: one call ahead of the RAM)
-    cfg::dist_t arr_[cfg::ARR_DEPTH];
-    cfg::bad_t arr_bad_;
-    // register stage: the register values in force and their configuration check
-    pso_regs rq_;
-    bool ok_q_;
-    // stage A
-    cfg::win_t trav_[cfg::N_AXES];
-    bool a_rev_, a_kclose_, a_pulse_, a_inwin_, a_v_;
-    cfg::sq_t a_sq_[cfg::N_AXES];  // |Dn_i|^2 of this call's travel (the terms of the ROM address)
-    // stage Q
-    cfg::s_t q_s_;                 // ROM address (the block RAM's address register)
-    bool q_rev_, q_kclose_, q_pulse_, q_inwin_, q_v_;
-    cfg::inc_t ph_;
-    pos_t ps_cnt_;
-    // minimum-spacing product (sequenced)
-    cfg::spk_t sp_k_;
-    bool sp_full_;
-    cfg::inc_t sp_inc_;
-    cfg::gap_t sp_min_;
-    cfg::dist_t sp_thr_;
-    cfg::sphi_t sp_hi_;
-    cfg::gap_t sp_lo_;
-    // stage R
-    cfg::incr_t r_y_;    // Y: the estimate step of the entry
-    cfg::chord_t part_;  // chord of the open window
-    bool r_inwin_, r_v_;
-    // stage B1 (the differences for two candidate thresholds)
-    cfg::incr_t p_y_;
-    cfg::rem_t p_d1_, p_d2_;      // Y - th1, Y - th2
-    cfg::dist_t p_th1_, p_th2_;   // entries next, next^2 of the index before the move decided in
-                                  //   the same call (or fire_dist)
-    bool p_inwin_, p_v_;
-    // stage P (the loop operands)
-    cfg::incr_t b_y_;
-    cfg::rem_t b_opF0_;   // Y - thF0
-    cfg::dist_t b_thF0_;  // the threshold after a fire (for the index after the last decision)
-    bool b_inwin_, b_v_;
-    // stage B2 (the loop, the decision and the state it moves)
-    cfg::rem_t u_;       // value - thr of the entry held (the next to be decided)
-    bool u_v_, u_inwin_;
-    cfg::dist_t thr_;    // threshold of the next fire (taken at a fire and at the run start)
-    bool adv_;           // the last call's decision moved the index (P's pick)
-    cfg::len_t idx_;
-    bool done_;
-    bool c_fire_, c_inwin_, c_live_;
-    cfg::rem_t c_u_;     // u of the decision
-    cfg::dist_t c_tm_;   // its threshold if it did not fire, else 0
-    // stage B3 (outputs)
-    cfg::rem_t dist_;
-    cfg::len_t idx_o_;
-    bool done_o_;
-    cfg::pw_t timer_;
-    cfg::gap_t since_;
-    cfg::fcnt_t fire_cnt_;
-    cfg::ovl_t ovl_cnt_;
-    bool overlap_st_, rate_over_st_, spacing_st_, freq_st_;
-    // run state and latched mode registers
-    bool run_q_, ps_q_, arr_en_q_, arr_wrap_q_;
-    cfg::mask_t mask_q_;
-    cfg::len_t arr_len_q_;
+    // chord ROM (block RAM, RAM_1P read-only: one read per call, its output register is stage R's
+    // chord)
+    pso_chord_rom_t rom_;
+    // firing-distance array: three copies (block RAM, RAM_S2P: one read and the shared write per
+    // call each), read at next, next^2, next^3 of the index; their power-up contents are zero
+    // ("not written": arr_bad_)
+    using arr_ram_t = ram<cfg::dist_t, cfg::ARR_DEPTH, RAM_S2P>;
+    arr_ram_t arr1_, arr2_, arr3_;
+    // registers without a reset in rtl_ref (0 at power-up)
+    bool fw1_ = false, fw2_ = false, fw3_ = false;  // the write presented with the read hit its address
+    cfg::dist_t f_data_ = 0;         // the data of that write
+    cfg::dist_t th1_ = 0, th2_ = 0;  // B1's thresholds: entries next(idx), next^2(idx) of the last
+                                     //   call (before its move), or fire_dist (rtl_ref: inverted)
+    cfg::dist_t p_th1_ = 0, p_th2_ = 0;  // B1's copy of them (used by a take only: valid operands)
+    cfg::dist_t b_thF0_ = 0;         // P's pick: the threshold after a fire
+    cfg::dist_t thr_ = 0;            // threshold of the next fire (taken at a fire, st_ without a run)
+    cfg::dist_t st_ = 0;             // the start threshold of a run beginning in this call
 };
 
 }  // namespace lx

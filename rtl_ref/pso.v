@@ -24,7 +24,7 @@
 //       part-speed phase accumulator (clamped to INC_MAX), pulse count; window operands;
 //       minimum-spacing shift-add (sample every 17 calls).
 //   Q   the ROM address s = sum D_i^2 from A's squares (a carry-save layer and one chain; the
-//       address register of the ROM's block RAM: hls q_s); the window position (source 3: the
+//       address register of the ROM's block RAM: hls rom_.read); the window position (source 3: the
 //       pulse count after the pulse of A's call) and edges registered.
 //   R   chord ROM (769 x 37 bits, filled at elaboration by the same digit-by-digit square root
 //       as hls/pso.h): its data output feeds Y = chord (+1.0 for a generator pulse) - (q_rev ?
@@ -819,7 +819,7 @@ module pso (
 
     // ---- stage R: the growth of the estimate from the ROM data -----------------------------------
     // rom_q is ROM[s] of the last call's stage Q while q_v = 1 (the call before ran); while q_v = 0
-    // (a run's first call, or no run) Y and part are stored as 0, as hls (q_s = 0 there).
+    // (a run's first call, or no run) Y and part are stored as 0, as hls (stage R masked by q_v).
     // Y = chord + one - (q_rev ? 0 : part) = cp + ~pm + 1 (a generator pulse, 1.0 = bit 32, only
     // comes with chord 0 and part 0, so chord + one = chord | one)
     wire [W_INCR-1:0]  cp  = {1'b0, rom_q | {q_pulse_q, {D_FRAC{1'b0}}}};

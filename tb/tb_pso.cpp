@@ -15,12 +15,16 @@
 //            with 5 reversals, 14 on polylines).
 // directed:  remainder carry (1D, fractional distance: fire k at ceil(k * D)), per-clock
 //            magnitudes for K = 1 (1, sqrt2, sqrt3), array fires at the listed absolute
-//            distances, window gating, pulse width and overlap (no fire lost: fire_cnt counts
+//            distances, array entries rewritten next to the index while running (and again after
+//            reset(): the block equals a fresh one), window gating, pulse width and overlap (no fire lost: fire_cnt counts
 //            every emit), laser frequency flag, part-speed 24 MHz clamp and its flag, minimum
 //            spacing flag, every bad configuration flagged with no pulse; the threshold of a fire
 //            is taken at the previous fire (a live distance change acts from the next fire: taken
 //            when in force 3 calls before that fire, not 2 calls before).
 // command:   `laserax pso` (cmd_pso) on its demo path returns 0 (bit-exact) into the build dir.
+// RAMs:      with every compared call, the block's chord ROM and array RAMs keep the lx::ram rules
+//            (no violation flag, hls/lx_ram.h); the ROM words as the block holds them (37 bits)
+//            equal the golden chord at every address.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -34,6 +38,19 @@
 #include "tools/laserax/pso_cmd.h"
 
 namespace {
+
+// The block's RAMs (chord ROM, firing-distance array) keep the rules of lx::ram in C simulation
+// (hls/lx_ram.h: ports per call, read data used in the call of its read, read after a write of
+// the same call, address range): "" or the sticky flags. Checked with every compared call. The
+// synthesis view has no flags.
+std::string ram_rules(const lx::pso& h) {
+#ifndef __SYNTHESIS__
+    if (h.ram_violations() != 0) return " RAM rule flags " + std::to_string(h.ram_violations());
+#else
+    (void)h;
+#endif
+    return "";
+}
 
 constexpr double kNm = 78.125;
 constexpr double kPi = 3.14159265358979323846;
@@ -149,7 +166,8 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long long* to
             const golden::pso_in in0;
             const lx::pso::out_t ho = h.step(lxt::pso_to_hls(in0), lxt::pso_to_hls(w));
             const golden::pso::out go = g.step(in0, w);
-            res.expect(lxt::pso_compare(ho, go).empty(), [&] { return "array load: " + lxt::pso_compare(ho, go); });
+            const std::string m = lxt::pso_compare(ho, go) + ram_rules(h);
+            res.expect(m.empty(), [&] { return "array load: " + m; });
         }
         r.enable = true;
         lxt::pso_sampler smp;
@@ -183,7 +201,7 @@ void test_random(tbu::result& res, std::mt19937_64& rng, int runs, long long* to
             }
             const lx::pso::out_t ho = h.step(lxt::pso_to_hls(in), lxt::pso_to_hls(rr));
             const golden::pso::out go = g.step(in, rr);
-            const std::string m = lxt::pso_compare(ho, go);
+            const std::string m = lxt::pso_compare(ho, go) + ram_rules(h);
             ok = res.expect(m.empty(), [&] {
                 return "random run " + std::to_string(run) + (three_d ? " (3D" : " (2D") + (ps ? ", part-speed" : "") +
                        (r.arr_en ? ", array" : "") + (r.win_en ? ", window" : "") + ", K " + std::to_string(r.win_k) +
@@ -220,14 +238,14 @@ err_stats run_ideal(const lxt::pso_path& path, const double off[3], int k, uint6
     {   // the registers are presented one call before the motion (REG_LAT: in force from its
         // first call)
         const golden::pso_in idle;
-        st.exact = lxt::pso_compare(h.step(lxt::pso_to_hls(idle), hr), g.step(idle, r)).empty();
+        st.exact = (lxt::pso_compare(h.step(lxt::pso_to_hls(idle), hr), g.step(idle, r)) + ram_rules(h)).empty();
     }
     for (long long t = 0; t < calls; ++t) {
         golden::pso_in in;
         smp.advance(static_cast<double>(t + 1), in.step);
         const lx::pso::out_t ho = h.step(lxt::pso_to_hls(in), hr);
         const golden::pso::out go = g.step(in, r);
-        if (!lxt::pso_compare(ho, go).empty()) st.exact = false;
+        if (!(lxt::pso_compare(ho, go) + ram_rules(h)).empty()) st.exact = false;
         if (!ho.fire) continue;
         ++st.fires;
         double x[3], s = 0, ideal[3];
@@ -328,7 +346,7 @@ void test_accuracy(tbu::result& res, std::mt19937_64& rng) {
             const double nf = static_cast<double>(std::max(1L, tot.fires));
             std::printf("  %-13s %3d %6ld %9.1f %8.1f %8.1f %9.1f %12.1f\n", sh.name, k, tot.fires, tot.max_nm,
                         tot.sum_nm / nf, std::sqrt(tot.sum_sq / nf), tot.along_sum / nf, tot.max_excess_nm);
-            res.check(tot.exact, std::string("accuracy runs not bit-exact: ") + sh.name + " K " + std::to_string(k));
+            res.check(tot.exact, std::string("accuracy runs not bit-exact (or a RAM rule broken): ") + sh.name + " K " + std::to_string(k));
             if (k == 16)
                 res.check(tot.max_excess_nm <= sh.bound_counts * kNm,
                           std::string(sh.name) + " K 16: firing error " + std::to_string(tot.max_excess_nm) +
@@ -347,7 +365,7 @@ struct pair_run {
     golden::pso::out step(const golden::pso_in& in, const golden::pso_regs& r) {
         const lx::pso::out_t ho = h.step(lxt::pso_to_hls(in), lxt::pso_to_hls(r));
         const golden::pso::out go = g.step(in, r);
-        const std::string m = lxt::pso_compare(ho, go);
+        const std::string m = lxt::pso_compare(ho, go) + ram_rules(h);
         res->expect(m.empty(), [&] { return tag + " call " + std::to_string(t) + ": " + m; });
         ++t;
         return go;
@@ -433,6 +451,55 @@ void test_directed(tbu::result& res) {
         const std::vector<long long> want = {5 + L, 10 + L, 15 + L, 40 + L};
         res.check(fires == want && last.arr_done, "array: fires at listed distances wrong (" +
                                                       std::to_string(fires.size()) + " fires)");
+    }
+    // array entries rewritten while a run uses them (the threshold prefetch of hls/pso.h reads
+    // the array RAM copies a call ahead and forwards the writes presented since): arrays of 4, 2
+    // and 1 entries with wrap, x alone or 3D diagonal steps (up to sqrt3 counts per call), and in
+    // every call a write of a legal entry (4 .. 8 counts) at the index shown plus 0 .. 3 (the
+    // entry decided next, the ones after it: every read address of the prefetch), entry 0 in the
+    // calls around each run start (the start threshold); bit-exact on every call. Then the same
+    // again after lx::pso::reset() (rtl_ref i_rst: the register groups to their initialisers, the
+    // RAM words kept) against a fresh golden model: the reset block is a fresh one.
+    {
+        pair_run p{{}, {}, &res, "array rewritten while running"};
+        const auto rewrite_run = [&](pair_run& q) {
+            std::mt19937_64 wr(11);
+            golden::pso_regs r;
+            r.axis_mask = 7;
+            r.pulse_w = 1;
+            r.arr_en = true;  // (while loading: cfg_err until every used entry is written)
+            r.arr_len = 4;
+            r.arr_wrap = true;
+            for (int j = 0; j < 4; ++j) {
+                golden::pso_regs w = r;
+                w.arr_we = true;
+                w.arr_addr = j;
+                w.arr_data = 5 * kQ;
+                q.step(golden::pso_in{}, w);
+            }
+            const int lens[3] = {4, 2, 1};
+            int idx = 0;
+            long fires = 0;
+            for (int t = 0; t < 3000; ++t) {
+                const int seg = t % 1000;
+                golden::pso_regs w = r;
+                w.arr_len = lens[t / 1000];
+                w.enable = seg >= 3;
+                w.arr_we = true;
+                w.arr_addr = seg < 6 ? 0 : (idx + static_cast<int>(wr() % 4)) % w.arr_len;
+                w.arr_data = (4 + wr() % 4) * kQ + (wr() & (kQ - 1));
+                const golden::pso::out o = q.step(wr() % 2 ? steps(1, 1, 1) : steps(1, 0, 0), w);
+                idx = o.idx;
+                fires += o.fire ? 1 : 0;
+            }
+            res.check(fires > 600, q.tag + ": " + std::to_string(fires) + " fires (want > 600)");
+        };
+        rewrite_run(p);
+        p.h.reset();
+        p.g = golden::pso();
+        p.tag = "array rewritten while running, after reset()";
+        p.t = 0;
+        rewrite_run(p);
     }
     // no fire in the call after a fire (docs/PSO_COUNTERS.md §2.7): legal thresholds (>= 4 counts)
     // never need it; a run's latched array can still hold smaller entries when arr_en is turned
@@ -706,10 +773,14 @@ int main(int argc, char** argv) {
     const int runs = static_cast<int>(tbu::arg_ll(argc, argv, "--runs", 48));
     tbu::result res("tb_pso", seed);
     std::mt19937_64 rng(seed);
-    // the chord ROM against the golden definition, every address
-    for (int s = 0; s <= lx::pso_cfg::S_MAX; ++s)
-        res.expect(lx::pso_chord(s).to_uint64() == golden::pso::chord_q32(s),
-                   [&] { return "chord ROM address " + std::to_string(s); });
+    // the chord ROM against the golden definition, every address: the words as the block's ROM
+    // holds them (W_CHORD bits)
+    {
+        const lx::pso h;
+        for (int s = 0; s <= lx::pso_cfg::S_MAX; ++s)
+            res.expect(h.chord_word(static_cast<unsigned>(s)).to_uint64() == golden::pso::chord_q32(s),
+                       [&] { return "chord ROM address " + std::to_string(s); });
+    }
     res.check(lx::pso_cfg::INC_MAX == golden::pso::inc_max(), "24 MHz increment limit");
     long long calls = 0;
     test_random(res, rng, runs, &calls);

@@ -6,7 +6,9 @@
 // initialisers and constant tables: `constinit` makes the compiler reject this file if any of
 // these objects needed dynamic initialisation (a constructor body, a loop, a non-constant
 // initialiser). hls/ itself stays C++14; only this check uses C++20.
+#include "hls/encoder_counter.h"
 #include "hls/laserax_top.h"
+#include "hls/pso.h"
 
 #if __cplusplus < 202002L
 #error "const_init.cpp needs C++20 (constinit)"
@@ -20,3 +22,6 @@ constinit lx::rephase g_rephase;
 constinit lx::dds_sincos g_dds_sincos;
 constinit lx::error_map g_error_map;
 constinit lx::laserax_top g_laserax_top;
+// the blocks built beside the chain (docs/PSO_COUNTERS.md)
+constinit lx::encoder_counter g_encoder_counter;
+constinit lx::pso g_pso;
