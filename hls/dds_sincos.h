@@ -34,7 +34,7 @@
 // Table write port: write() presents the write of the call (before that call's step() or
 // reset()), which performs it after the call's reads (read-first, as the RAM). With WRITE_BYPASS
 // (dds_sincos, the block's contract as rtl_ref's parameter WRITE_BYPASS = 1) a read stage that
-// takes a word written in its own call or in the previous one takes the new word (the look-ahead
+// takes a word written in its own call or in the previous one takes the written word (the look-ahead
 // read returned the old one): two compares of the registered read address with the write port and
 // its previous write, muxes on the read data. laserax_top writes only in the safe state, with one
 // more safe call after the last write, so no running call needs them: it uses

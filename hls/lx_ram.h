@@ -6,7 +6,7 @@
 //   * read-first: a read and a write of one call both act at the clock edge that ends the call,
 //     so the read returns the word before the write (rtl_ref's RAMs read first). In C++ the
 //     block issues its reads of a call before its writes; a read of an address the same call has
-//     already written would see the new word in C simulation and in the synthesis view, while
+//     already written would see the written word in C simulation and in the synthesis view, while
 //     the RAM returns the old one, so the model flags it (RAM_V_RAW) instead of hiding it;
 //   * ports per call: RAM_1P one access (read or write), RAM_S2P (simple dual port) one read and
 //     one write, RAM_T2P (true dual port) two accesses, each read port once. More is flagged
