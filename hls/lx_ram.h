@@ -26,10 +26,10 @@
 // the member m_.w).
 //
 // Outside the clocked calls, the C simulation also has the host's side of the configuration:
-// load() sets a word as a configuration-time INIT would (no port, not counted; the output
-// registers keep their words: the next read of the address returns it), peek() reads a word.
-// Both exist in the synthesis view too (the synthesis top never calls them), so the testbenches
-// of that view load tables the same way.
+// load() sets a word as a configuration-time INIT would (no port, not counted; a port whose last
+// read was that address returns the loaded word), peek() reads a word. Both exist in the
+// synthesis view too (the synthesis top never calls them; there load() leaves the output
+// registers), so the testbenches of that view load tables the same way.
 #ifndef LASERAX_HLS_LX_RAM_H
 #define LASERAX_HLS_LX_RAM_H
 
@@ -115,6 +115,7 @@ public:
         if ((st_ & bit) != 0 || (K == RAM_1P && st_ != 0) || (K == RAM_T2P && accesses() >= 2)) viol_ |= RAM_V_PORTS;
         if ((st_ & S_W1) != 0 && wa_ == addr) viol_ |= RAM_V_RAW;
         st_ = static_cast<unsigned char>(st_ | bit);
+        (P == 0 ? la0_ : la1_) = addr;
 #endif
         (P == 0 ? q0_ : q1_) = m_.w[addr];
     }
@@ -142,10 +143,20 @@ public:
         m_.w[addr] = d;
     }
 
-    // Host side, between calls (C simulation; never reached from the synthesis top): a
-    // configuration-time word (no port, not counted; the output registers keep their words) and
-    // a read of the contents.
-    void load(unsigned addr, const T& d) { m_.w[addr < unsigned(N) ? addr : 0u] = d; }
+    // Host side, between calls (never reached from the synthesis top): a configuration-time word
+    // (no port, not counted) and a read of the contents. In C simulation a port whose last read
+    // was that address returns the loaded word (the host's load is taken as made before that
+    // read: golden's tables change between two calls, e.g. the system model's table reload after
+    // an amplitude change while the chain runs); the synthesis view has no such host and keeps
+    // the output registers.
+    void load(unsigned addr, const T& d) {
+        addr = addr < unsigned(N) ? addr : 0u;
+        m_.w[addr] = d;
+#ifndef __SYNTHESIS__
+        if (la0_ == addr) q0_ = d;
+        if (la1_ == addr) q1_ = d;
+#endif
+    }
     const T& peek(unsigned addr) const { return m_.w[addr < unsigned(N) ? addr : 0u]; }
 #ifndef __SYNTHESIS__
     int violations() const { return viol_; }
@@ -175,6 +186,7 @@ private:
 #ifndef __SYNTHESIS__
     unsigned char st_ = 0;  // the accesses of this call: S_R0, S_R1 (port read), S_W1, S_W2 (writes)
     unsigned wa_ = 0;       // the address of the call's last write (with S_W1)
+    unsigned la0_ = 0, la1_ = 0;  // the address of each port's last read (load(); power-up: 0)
     int viol_ = 0;
 #endif
 };
