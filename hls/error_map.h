@@ -25,11 +25,12 @@
 // (the RTL runs B, C, R and D in every call; this model evaluates each in its call of the
 // schedule only, which gives the same outputs: M takes D's registers only at ph = PH_LOAD)
 //
-// Two banks, each two RAMs (even and odd words): the table write port always writes the bank that
-// is *not* selected by bank_sel in that call, delayed by W_DLY = 24 calls so that it is performed
-// in the same call as the reads of a sample call (stage R) — into the other bank, so each RAM sees
-// one access per call (a read, or a write) and the reads of sample call t see exactly the writes of
-// the calls before t. Each bank has its own geometry (origin, spacing_log2, n_points); a flip of bank_sel switches
+// Two banks in two RAMs, even and odd words (lx::ram, simple dual port; the bank is the address
+// MSB, as in rtl_ref): the table write port always writes the bank that is *not* selected by
+// bank_sel in that call, delayed by W_DLY = 24 calls so that it is performed in the same call as
+// the reads of a sample call (stage R) — into the other bank, so each RAM sees at most one read
+// and one write per call and the reads of sample call t see exactly the writes of the calls
+// before t. Each bank has its own geometry (origin, spacing_log2, n_points); a flip of bank_sel switches
 // table and geometry together at one call boundary and a reload can never mix tables.
 //
 // Widths (derived in error_map_cfg): table words 24 bits signed Q15.8 counts, offset 39 signed,
