@@ -96,9 +96,10 @@ axis_out laserax_top::run(const axis_pins& pins) {
     // the multiplier delta at the pacer input
     const error_map::out emap_o = emap_.step(mul_past_.at(L::MAP_P).comp, rep_past_.at(L::MAP_HOMED).homed, regs.emap);
     const output_pacer::out pac_o = pac_.step(mul_past_.at(L::PAC_DELTA).delta + emap_past_.at(L::PAC_DELTA).delta,
-                                              regs.pace_m, regs.backlog_thr, regs.clear);
+                                              regs.pace_m, regs.backlog_thr, regs.clear,
+                                              rep_past_.at(L::PAC_WIDE).stage == 2);
     const input_filter::out& sw_in = swf_past_.at(L::REP_SW);
-    const rephase::out rep_o = rep_.step(pac_past_.at(L::REP_PSTEP).pstep, sw_in.f, sw_in.valid, regs.rehome,
+    const rephase::out rep_o = rep_.step(pac_past_.at(L::REP_PSTEP).pstep, pac_past_.at(L::REP_PSTEP).slot, sw_in.f, sw_in.valid, regs.rehome,
                                          dec_past_.at(L::REP_UNHOME).lerr, regs.period, regs.mark_len);
     const dds_sincos::out dds_o = dds_.step(rep_past_.at(L::DDS_OSTEP).ostep, regs.period, regs.amplitude);
 

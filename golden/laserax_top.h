@@ -92,7 +92,8 @@ struct connection_latency {
     static constexpr int MAP_P = 1;       // error_map p                <- pulse_multiplier comp
     static constexpr int MAP_HOMED = 1;   // error_map homed            <- rephase homed
     static constexpr int PAC_DELTA = 1;   // output_pacer delta (both)  <- pulse_multiplier delta, error_map delta
-    static constexpr int REP_PSTEP = 1;   // rephase pstep              <- output_pacer pstep
+    static constexpr int PAC_WIDE = 1;    // output_pacer wide          <- rephase stage == 2
+    static constexpr int REP_PSTEP = 1;   // rephase pstep, slot        <- output_pacer pstep, slot
     static constexpr int REP_SW = 1;      // rephase sw, sw_valid       <- switch filter f, valid
     static constexpr int REP_UNHOME = 1;  // rephase unhome             <- quad_decoder lerr
     static constexpr int DDS_OSTEP = 1;   // dds_sincos ostep           <- rephase ostep
@@ -137,7 +138,7 @@ private:
     past<pulse_multiplier::out, std::max(L::MAP_P, L::PAC_DELTA)> mul_past_;
     past<error_map::out, L::PAC_DELTA> emap_past_;
     past<output_pacer::out, L::REP_PSTEP> pac_past_;
-    past<rephase::out, std::max({L::MAP_HOMED, L::DDS_OSTEP, L::OUT_QUAD})> rep_past_;
+    past<rephase::out, std::max({L::MAP_HOMED, L::PAC_WIDE, L::DDS_OSTEP, L::OUT_QUAD})> rep_past_;
     int64_t last_period_ = 0;    // period register of the previous call
     uint64_t ratio_held_ = default_ratio();  // ratio in force (DESIGN 4.7, comp_sync / comp_commit)
     int64_t offset_held_ = 0;                // comp_offset in force

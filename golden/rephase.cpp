@@ -21,7 +21,7 @@ int sgn(int64_t v) { return (v > 0) - (v < 0); }
 
 void rephase::reset() { *this = rephase{}; }
 
-rephase::out rephase::step(int pstep, bool sw, bool sw_valid, bool rehome, bool unhome,
+rephase::out rephase::step(int pstep, bool slot, bool sw, bool sw_valid, bool rehome, bool unhome,
                            int64_t period, int64_t mark_len) {
     const int64_t P = period;
 
@@ -33,8 +33,8 @@ rephase::out rephase::step(int pstep, bool sw, bool sw_valid, bool rehome, bool 
     int stage_next = stage_;
     if ((unhome || rehome) && stage_ != 1) {
         stage_next = 1;
-        adj0_ = adj_tgt_;  // freeze whatever adjustment is in place (no phase jump);
-                           // adj_tgt' stays = adj_tgt = adj0' (the Stage-1 invariant)
+        adj0_ = adj_;      // freeze the applied adjustment (no phase jump; an extra count still
+        adj_tgt_ = adj0_;  // waiting for its slot is dropped); adj_tgt' = adj0' (Stage-1 invariant)
     } else if (stage_ == 1) {
         // rise uses sw_prev / sw_seen before the call (sw_seen = previous call's sw_valid),
         // so a switch already closed at power-up is not an edge.
@@ -77,11 +77,12 @@ rephase::out rephase::step(int pstep, bool sw, bool sw_valid, bool rehome, bool 
     sw_seen_ = sw_valid;
     stage_ = stage_next;
 
-    // 3. output step: a real count passes as is; otherwise move adj one count toward adj_tgt'
+    // 3. output step: a real count passes as is; in the pacer's slot move adj one count toward
+    //    adj_tgt'; otherwise no count
     int ostep = 0;
     if (pstep != 0) {
         ostep = pstep;
-    } else {
+    } else if (slot) {
         ostep = sgn(adj_tgt_ - adj_);
         adj_ += ostep;
     }

@@ -26,7 +26,7 @@ public:
         bool homed;       // stage == 3
     };
     void reset();
-    out step(int pstep, bool sw, bool sw_valid, bool rehome, bool unhome, int64_t period,
+    out step(int pstep, bool slot, bool sw, bool sw_valid, bool rehome, bool unhome, int64_t period,
              int64_t mark_len);
 
 private:

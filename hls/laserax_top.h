@@ -194,6 +194,7 @@ public:
         // a default member initialiser), and those no output shows
         out_ = axis_out{};
         lerr_q_ = false;
+        slot_q_ = false;
         dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
         dig_q2_ = dig_tap{};
         dig_q3_ = dig_tap{};
@@ -363,8 +364,10 @@ private:
         const error_map::out_t emap = emap_.step(o.comp_pos, o.homed, regs.emap);
         o.map_cfg_err = emap.cfg_err;
         o.corr = emap.corr;
+        // the pacer's wide: rephase was in its window in the previous call (read before its step)
+        const bool wide = o.stage == rephase_cfg::STAGE_WINDOW;
         const rephase::out_t rep =
-            rep_.step(o.pstep, swf_.level(), swf_.valid(), regs.rehome, lerr_q_, regs.period, regs.mark_len);
+            rep_.step(o.pstep, slot_q_, swf_.level(), swf_.valid(), regs.rehome, lerr_q_, regs.period, regs.mark_len);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
         dig_q1_ = dig_levels(rep.out_pos, rep.mark);
@@ -379,7 +382,9 @@ private:
         o.c_pos = rep.c;
         o.z_pos = rep.z;
         o.d = rep.d;
-        const output_pacer::out_t pac = pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear);
+        const output_pacer::out_t pac =
+            pac_.step(o.delta, o.map_delta, regs.pace_m, regs.backlog_thr, regs.clear, wide);
+        slot_q_ = pac.slot;
         o.ovs_backlog_st = pac.ovs_st;
         o.backlog = pac.backlog;
         o.pstep = pac.pstep;
@@ -416,6 +421,7 @@ private:
     // delta, rephase ostep / out_pos / mark / homed)
     axis_out out_{};
     bool lerr_q_ = false;  // decoder lerr (the rephase's unhome), not an output
+    bool slot_q_ = false;  // pacer slot (the rephase's slot), not an output
     // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
     // mark twice), in axis_out's order
     struct dig_tap {

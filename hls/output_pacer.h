@@ -5,6 +5,10 @@
 // dropped: the backlog drains at 1/M counts per call once motion stops, and a backlog above the
 // threshold raises an alarm (pulse plus sticky flag, cleared by `clear` once the backlog is below
 // again). The emitted count is decided from the registers before the call (registered output).
+// Events (an emitted count or a slot) are at least max(M, 2) calls apart; a count emitted while
+// `wide` (rephase in its window, stage 2) owes a slot, M calls later and before the next count,
+// in which rephase delivers its extra count (DESIGN §4.4, §4.5), so the output of the chain moves
+// at most once per M calls in every stage.
 //
 // Two addends: the multiplier delta and the error-map delta (small, W_ADD bits) enter separately,
 // so no adder precedes the backlog's own (the sum is formed in the carry-save layer of the lower
@@ -20,7 +24,8 @@
 //
 // Widths: lo 20 unsigned, hi 20 signed, cq 3 signed, add 18 signed, timer 16, paced tap 19 + 19
 // bits, backlog tap 20 + 20 bits. Latency: delta in at call t, the first count leaves at call
-// t+1; taps paced, backlog: 2 calls; ovs: 4 calls (threshold of the previous call).
+// t+1; its slot (if owed) M calls later; taps paced, backlog: 2 calls; ovs: 4 calls (threshold of
+// the previous call).
 #ifndef LASERAX_HLS_OUTPUT_PACER_H
 #define LASERAX_HLS_OUTPUT_PACER_H
 
@@ -61,6 +66,7 @@ public:
     using cfg = output_pacer_cfg;
     struct out_t {
         step_t pstep = 0;
+        bool slot = false;    // the slot owed to the count before it (for rephase's extra count)
         pos_t paced = 0;      // tap: P(t-2)
         backlog_t backlog = 0;  // tap: B(t-2)
         bool ovs = false;     // |B(t-4)| > thr(t-1)
@@ -70,14 +76,17 @@ public:
     void reset() { *this = output_pacer{}; }  // every register to its initialiser (the reset value)
 
     out_t step(const delta_t& delta, const cfg::add_t& add, const cfg::pace_t& pace_m, const cfg::thr_t& thr,
-               bool clear) {
+               bool clear, bool wide) {
         // ---- ovs, second stage: select with the registered lower carry ----
         const bool ovs = o_cl_ ? o_y1_ : o_y0_;
         // ---- ovs, first stage: the backlog tap B(t-3) (register b_) against thr of this call ----
         ovs_stage1(thr);
 
-        // ---- emit decision from the registers of the previous call: sign and zero of X ----
-        const step_t emit = (timer_ == 0 && e_prev_ == 0) ? emit_of_x() : step_t(0);
+        // ---- event decision from the registers of the previous call: an emitted count (sign
+        //      and zero of X) while no slot is owed, or else the slot ----
+        const bool ready = timer_ == 0 && !g_prev_;
+        const step_t emit = (ready && !h_) ? emit_of_x() : step_t(0);
+        const bool slot = ready && h_;
 
         // ---- taps (registers of the previous call; e_prev_ is e(t-1)) ----
         // backlog: stage B (B(t-2) from the stage-A registers), stage A (B(t-1) halves)
@@ -100,12 +109,18 @@ public:
         lo_ = cfg::lo_t(t);
         cq_ = cfg::cq_t(t >> cfg::L);
 
-        // ---- timer ----
-        if (emit != 0) {
+        // ---- timer, slot owed, event flag ----
+        if (emit != 0 || slot) {
             timer_ = pace_m - 1;  // (M = 0 loads 65535)
         } else if (timer_ != 0) {
             timer_ = dec_above_zero(timer_);  // (timer > 0: no wrap)
         }
+        if (emit != 0) {
+            h_ = wide;
+        } else if (slot) {
+            h_ = false;
+        }
+        g_prev_ = emit != 0 || slot;
         e_prev_ = emit;
 
         if (clear) ovs_st_ = false;
@@ -113,6 +128,7 @@ public:
 
         out_t o;
         o.pstep = emit;
+        o.slot = slot;
         o.paced = cat_s<cfg::W_PHI, cfg::LP>(p_hi_, p_lo_d_);  // (exact: no wrap)
         o.backlog = b_;
         o.ovs = ovs;  // (the select of registers: no register of its own)
@@ -173,6 +189,8 @@ private:
     cfg::hi_t hi_ = 0;
     cfg::cq_t cq_ = 0;
     step_t e_prev_ = 0;      // emitted count of the previous call (pstep register)
+    bool g_prev_ = false;    // the previous call had an event (a count or a slot)
+    bool h_ = false;         // a slot is owed (a count was emitted while wide)
     cfg::pace_t timer_ = 0;
     cfg::hi_t a_hi_ = 0;     // backlog tap, stage A: hi + cq, lo - e_prev (with carry)
     cfg::lo_t a_lo_ = 0;

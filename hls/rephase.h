@@ -14,8 +14,9 @@
 //     register, computed the call after A; the first count after A never carries and needs no
 //     k: `fresh`; its (num, t, v) = (d, 2d - P, 0) are loaded in the call after it, from the
 //     register d: `first`);
-//   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else
-//     sgn(lag); no 38-bit adjustment target and no 38-bit compare;
+//   * the pending extra counts are a small signed lag (adj_tgt - adj): ostep = pstep, or else in
+//     the pacer's slot sgn(lag); no 38-bit adjustment target and no 38-bit compare; a call with
+//     unhome or rehome clears lag (the leave drops a pending extra count, DESIGN §4.5 step 2);
 //   * the phase is kept as w = (ph_out + P/8) mod P of the output position (w moves by ostep,
 //     -1..1, with registered wrap flags); at A no extra count is pending, so it is the target
 //     phase there; at A it is registered (wA) with the form of d (a mode from the direction and
@@ -26,15 +27,17 @@
 //   * the homing call is flagged a call ahead (`at_last`: tr == P - 1) and B = A + dir*P is formed
 //     in the calls before it (`bs`, two parts over two calls), so B is copied and C, Z are formed
 //     by a 13-bit add and a select of the high part (bs's, or bs_pm = bs's + dir) in that call.
-// The extra count is delivered in the call after the real count it rides on (the pacer keeps real
-// counts >= 2 calls apart), so the output never moves more than one count per call.
+// The extra count is delivered in the pacer's slot, M calls after the real count it follows and
+// before the next (the pacer owes a slot to every count it emits while the window is open), so
+// consecutive output counts are at least max(M, 2) calls apart in every stage.
 //
 // Widths: positions 38 signed (taps: paced, out_pos, adj, A, B, C, Z; the mark counter u),
 // d/num/w 12 unsigned, t/v/k 14 signed, tr 14 signed, lag 2 signed (-1..1), stage 2.
-// Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
-// Block-level preconditions (laserax_top guarantees both): P is constant while the block runs (a
-// change of P restarts the chain from reset); real counts are >= 2 calls apart, so |lag| <= 1,
-// lag = 0 at A (w is then the target phase) and k is in time for the first carry. A block-level
+// Latency: 1 call (pstep, slot in, ostep/out_pos/mark out); extra counts in the slot.
+// Block-level preconditions (laserax_top guarantees them): P is constant while the block runs (a
+// change of P restarts the chain from reset); real counts are >= 2 calls apart, no slot comes with
+// a real count, and a count that changes lag is followed by a slot before the next count, so
+// |lag| <= 1, lag = 0 at A (w is then the target phase) and k is in time for the first carry. A block-level
 // caller that breaks them gets the same bits here and in rtl_ref/, not necessarily those of the
 // golden model (DESIGN §4.5 "Hardware form").
 #ifndef LASERAX_HLS_REPHASE_H
@@ -86,7 +89,7 @@ public:
     void reset() { *this = rephase{}; }  // every register to its initialiser (the reset value)
 
     // One clock (DESIGN 4.5, Hardware form).
-    out_t step(step_t pstep, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
+    out_t step(step_t pstep, bool slot, bool sw, bool sw_valid, bool rehome, bool unhome, period_t period,
                period_t mark_len) {
         const cfg::p_t pp = period;
         const cfg::ph_t p8 = period >> 3;  // P/8 (P is a multiple of 8)
@@ -115,8 +118,10 @@ public:
         //    the target position there. The wrap flags t1 (w == P - 1) and z0 (w == 0) are
         //    registers, formed for the next value from w by equality with P - 2, P, 1, all ones.
         // (the sign of pstep: -2, outside the pacer's -1..1, counts -1 here as in rtl_ref/)
+        // (an extra count only in the pacer's slot, and none in a call with unhome or rehome)
+        const bool lv = unhome || rehome;
         step_t ostep = pstep > 0 ? step_t(1) : pstep < 0 ? step_t(-1) : step_t(0);
-        if (pstep == 0) {
+        if (pstep == 0 && slot && !lv) {
             if (lag_ > 0) ostep = 1;
             if (lag_ < 0) ostep = -1;
         }
@@ -217,13 +222,16 @@ public:
         sw_prev_ = sw;
         sw_seen_ = sw_valid;
 
-        // 5. output step (ostep above): the real count, or else one pending extra count
-        if (pstep != 0) {
+        // 5. output step (ostep above): the real count, or else in a slot one pending extra
+        //    count; unhome or rehome drops a pending one (the leave, DESIGN §4.5 step 2)
+        if (lv) {
+            lag_ = 0;
+        } else if (pstep != 0) {
             lag_ = lag_ + dadj;
         } else {
             lag_ = lag_ - ostep;
-            adj_ = adj_ + ostep;
         }
+        if (pstep == 0) adj_ = adj_ + ostep;
         out_pos_ = out_pos_ + ostep;
 
         // 6. reference mark: u = dir * (paced - B) from homing on, mark = u in [0, L]

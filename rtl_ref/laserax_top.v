@@ -380,20 +380,24 @@ module laserax_top #(
 
     // pacer: consumes the multiplier delta and the map delta of the previous call as two addends
     // (their sum is formed in the pacer's carry-save layer, so no adder precedes it)
+    // (wide: rephase was in its window in the previous call, so every count owes a slot there)
     wire signed [1:0]  pac_pstep, pac_pstep_nx;
+    wire               pac_slot, pac_slot_nx;
     wire signed [37:0] pac_paced;
     wire signed [39:0] pac_backlog;
     wire               pac_ovs, pac_ovs_st;
     output_pacer u_pac (
         .i_clk(i_clk), .i_rst(blk_rst), .i_delta(mul_delta), .i_add(map_delta), .i_pace_m(r_pace_m),
-        .i_thr(r_backlog_thr), .i_clear(r_clear),
-        .o_pstep(pac_pstep), .o_pstep_nx(pac_pstep_nx), .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
+        .i_thr(r_backlog_thr), .i_clear(r_clear), .i_wide(rep_stage == 2'd2),
+        .o_pstep(pac_pstep), .o_pstep_nx(pac_pstep_nx), .o_slot(pac_slot), .o_slot_nx(pac_slot_nx),
+        .o_paced(pac_paced), .o_backlog(pac_backlog), .o_ovs(pac_ovs),
         .o_ovs_st(pac_ovs_st));
 
-    // rephase: pacer step, debounced switch and laser error of the previous call; the pacer's
-    // look-ahead (its next pstep) for the registered count decode (DESIGN 4.5)
+    // rephase: pacer step and slot, debounced switch and laser error of the previous call; the
+    // pacer's look-ahead (its next pstep and slot) for the registered count decode (DESIGN 4.5)
     rephase u_rep (
-        .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_pstep_nx(pac_pstep_nx), .i_sw(swf_f), .i_sw_valid(swf_valid),
+        .i_clk(i_clk), .i_rst(blk_rst), .i_pstep(pac_pstep), .i_pstep_nx(pac_pstep_nx),
+        .i_slot(pac_slot), .i_slot_nx(pac_slot_nx), .i_sw(swf_f), .i_sw_valid(swf_valid),
         .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_unhome_nx(dec_lerr_nx), .i_rehome_nx(i_rehome),
         .i_period(r_period), .i_period_m1(r_period_m1),
         .i_period_m2(r_period_m2), .i_mark_len(r_mark_len), .i_mark_len_n(r_mark_len_n),

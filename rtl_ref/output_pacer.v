@@ -4,11 +4,13 @@
 // output_pacer::step(); every output is a register holding the out_t of that call.
 // Synchronous active-high reset = output_pacer::reset() (all zero).
 //
-//   emit     = (timer == 0 && e_prev == 0 && B != 0) ? sgn(B) : 0   (registers before the edge)
+//   emit     = (timer == 0 && g_prev == 0 && h == 0 && B != 0) ? sgn(B) : 0  (registers before the edge)
+//   slot     = timer == 0 && g_prev == 0 && h == 1   (the slot owed to a count emitted while wide)
 //   B'       = B + delta + add - emit   (add: the error-map delta, a second addend, so that no
 //              adder precedes the pacer in the top: the sum is formed in the carry-save layer)
-//   timer'   = emit != 0 ? M - 1 : max(timer - 1, 0);  e_prev' = emit  (the register holds
-//              timer + 1: an emitted count loads M, no decrement of M before the register)
+//   timer'   = (emit != 0 || slot) ? M - 1 : max(timer - 1, 0);  e_prev' = emit;
+//              g_prev' = emit != 0 || slot;  h' = emit != 0 ? wide : (slot ? 0 : h)
+//              (the register holds timer + 1: an event loads M, no decrement of M before it)
 //   taps: paced = P(t-2), backlog = B(t-2); ovs = |B(t-4)| > thr(t-1) (pulse); ovs_st cleared by
 //   clear, set by ovs (event wins)
 // Hardware form (no carry chain over 23 bits): X = B + e_prev = (hi + cq) * 2^20 + lo with a
@@ -28,9 +30,12 @@ module output_pacer (
     input  wire [`LX_OP_W_PACE-1:0]        i_pace_m,   // M: at least max(M, 2) calls between two emitted counts
     input  wire [`LX_OP_W_THR-1:0]         i_thr,      // backlog alarm threshold
     input  wire                            i_clear,    // register pulse: clears ovs_st (unless ovs)
+    input  wire                            i_wide,     // rephase is in its window: a count owes a slot
     output wire signed [`LX_W_STEP-1:0]    o_pstep,    // emitted count: -1, 0, +1
     output wire signed [`LX_W_STEP-1:0]    o_pstep_nx, // look-ahead: the o_pstep of the next call (emit, 0 in a
                                                        // reset call), for rephase's registered decode (DESIGN 4.4)
+    output wire                            o_slot,     // the slot owed to the count before it (rephase's extra count)
+    output wire                            o_slot_nx,  // look-ahead: the o_slot of the next call (0 in a reset call)
     output wire signed [`LX_W_POS-1:0]     o_paced,    // paced position P(t-2) (tap)
     output wire signed [`LX_W_BACKLOG-1:0] o_backlog,  // counts still to emit, B(t-2) (tap)
     output wire                            o_ovs,      // pulse: |B(t-4)| > thr(t-1)
@@ -87,7 +92,10 @@ module output_pacer (
     reg           h1_q;                            // hi[3:0] == 1
     reg           he_q;                            // hi[3:0] == 0xe (hi == -2 with ho_q)
     reg [NL-1:0]  lz_q;                            // piece of lo all 0
-    reg           tz_q;                            // timer == 0 and e_prev == 0 (see tz_d)
+    reg           tz_q;                            // timer == 0, g_prev == 0, h == 0: a count may leave (tz_d)
+    reg           sl_q;                            // timer == 0, g_prev == 0, h == 1: the slot (sl_d)
+    reg           h_q;                             // a slot is owed (a count was emitted while wide)
+    reg           so_q;                            // o_slot: the slot of this call
     wire hi_neg  = hi_q[W_HI-1];
     wire hi_z    = &hz_q;
     wire hi_m1   = &ho_q;
@@ -139,15 +147,20 @@ module output_pacer (
 `endif
 
     // ---- timer -------------------------------------------------------------------------------
-    // Kept as tm = timer + 1 (mod 2^16, 0 standing for 65536), so an emitted count loads M itself
+    // Kept as tm = timer + 1 (mod 2^16, 0 standing for 65536), so an event loads M itself
     // (M = 0: 65536, timer 65535) and no decrement of M precedes the register:
-    // tm' = emit ? M : max(tm - 1, 1); timer == 0 is tm == 1.
-    // tz' = (timer' == 0 && e_prev' == 0): after an emitted count e_prev' != 0, so 0 (whatever M
-    // loads the timer); otherwise e_prev' = 0 and timer' = max(timer - 1, 0) is 0 iff timer <= 1,
-    // i.e. tm is 1 or 2. So the emit decision needs no test of e_prev (it only mattered for the
-    // illegal M = 1).
-    wire              tz_d = !emit_nz && (tm_q[W_PACE-1:2] == {(W_PACE-2){1'b0}}) && (tm_q[1] ^ tm_q[0]);
-    wire [W_PACE-1:0] tm_d = emit_nz ? i_pace_m
+    // tm' = event ? M : max(tm - 1, 1); timer == 0 is tm == 1.
+    // tz' = (timer' == 0 && g_prev' == 0 && !h'), sl' = (timer' == 0 && g_prev' == 0 && h'):
+    // after an event g_prev' = 1, so both 0 (whatever M loads the timer); otherwise g_prev' = 0,
+    // h' = h and timer' = max(timer - 1, 0) is 0 iff timer <= 1, i.e. tm is 1 or 2. So the
+    // decision needs no test of g_prev (it only mattered for the illegal M = 1), and i_wide
+    // reaches only h.
+    wire              ev   = emit_nz || sl_q;
+    wire              tm12 = (tm_q[W_PACE-1:2] == {(W_PACE-2){1'b0}}) && (tm_q[1] ^ tm_q[0]);
+    wire              tz_d = !ev && tm12 && !h_q;
+    wire              sl_d = !ev && tm12 && h_q;
+    wire              h_d  = emit_nz ? i_wide : (sl_q ? 1'b0 : h_q);
+    wire [W_PACE-1:0] tm_d = ev ? i_pace_m
                            : (tm_q != {{(W_PACE-1){1'b0}}, 1'b1}) ? tm_q - {{(W_PACE-1){1'b0}}, 1'b1}
                            : {{(W_PACE-1){1'b0}}, 1'b1};
 
@@ -212,6 +225,9 @@ module output_pacer (
             he_q     <= 1'b0;
             lz_q     <= {NL{1'b1}};
             tz_q     <= 1'b1;
+            sl_q     <= 1'b0;
+            h_q      <= 1'b0;
+            so_q     <= 1'b0;
             e_pos_q  <= 1'b0;
             lo_q     <= {L{1'b0}};
             hi_q     <= {W_HI{1'b0}};
@@ -256,6 +272,9 @@ module output_pacer (
             he_q     <= h_sum[3:0] == 4'he;
             lz_q     <= lz_d;
             tz_q     <= tz_d;
+            sl_q     <= sl_d;
+            h_q      <= h_d;
+            so_q     <= sl_q;
             e_pos_q  <= emit_nz && !h_neg;
             lo_q     <= t_sum[L-1:0];
             cq_q     <= t_sum[W_T-1:L];
@@ -278,6 +297,8 @@ module output_pacer (
 
     assign o_pstep   = e_prev_q;
     assign o_pstep_nx = i_rst ? 2'sd0 : emit;
+    assign o_slot    = so_q;
+    assign o_slot_nx = !i_rst && sl_q;
     assign o_paced   = {p_hi_q, p_lo_d_q};
     assign o_backlog = {b_hi_q, b_lo_q};
     assign o_ovs     = ovs_q;
@@ -292,8 +313,11 @@ module output_pacer (
     localparam integer FW = 42;
     reg                   f_init, f_rst_p, f_clear_p, f_ovs_st_p;
     reg [W_THR-1:0]       f_thr_p;
-    reg [W_PACE:0]        f_m;      // M in force at the last emitted count (0 read as 2^16)
-    reg [W_PACE+1:0]      f_since;  // calls since the last emitted count, saturating
+    reg [W_PACE:0]        f_m;      // M in force at the last event (0 read as 2^16)
+    reg [W_PACE+1:0]      f_since;  // calls since the last event (count or slot), saturating
+    reg                   f_g1;     // the previous call had an event
+    reg                   f_owe;    // the text's h: a slot is owed
+    reg                   f_snx;    // o_slot_nx of the previous call
     reg [W_BACKLOG:0]     f_bmag_p, f_bmag_p2; // |backlog tap| before the last / last but one edge
     reg [W_THR-1:0]       f_thr_p2;
     reg                   f_rst_p2;
@@ -329,6 +353,7 @@ module output_pacer (
     always @(posedge i_clk) begin
         if (i_rst) f_init <= 1'b1;
         f_nx       <= o_pstep_nx;
+        f_snx      <= o_slot_nx;
         f_rst_p    <= i_rst;
         f_clear_p  <= i_clear;
         f_ovs_st_p <= ovs_st_q;
@@ -346,8 +371,12 @@ module output_pacer (
             f_b2    <= {FW{1'b0}};
             f_pc2   <= {FW{1'b0}};
             f_e1    <= 2'sd0;
+            f_g1    <= 1'b0;
+            f_owe   <= 1'b0;
         end else begin
-            if (emit_nz) begin
+            f_g1    <= ev;
+            f_owe   <= emit_nz ? i_wide : (sl_q ? 1'b0 : f_owe);
+            if (ev) begin
                 f_since <= {{(W_PACE+1){1'b0}}, 1'b1};
                 f_m     <= f_m_now;
             end else if (f_since != F_SINCE_MAX) begin
@@ -377,20 +406,30 @@ module output_pacer (
             // the trees give the zero test and the sign of X
             assert(x_nz == (f_x != {FW{1'b0}}));
             if (x_nz) assert(h_neg == f_x[FW-1]);
-            // at most one count per max(M, 2) calls: a count leaves only M or more calls after
-            // the previous one (M as set at the previous count), never in two consecutive calls
-            if (emit_nz) assert(f_since >= {1'b0, f_m});
-            if (emit_nz) assert(f_since >= 2);
-            // the count has the sign of the backlog, and a count leaves whenever it may
+            // at most one event (count or slot) per max(M, 2) calls: an event comes only M or
+            // more calls after the previous one (M as set at the previous event), never in two
+            // consecutive calls
+            if (ev) assert(f_since >= {1'b0, f_m});
+            if (ev) assert(f_since >= 2);
+            // a count emitted while wide is followed by its slot before the next count, and a
+            // slot comes only when owed (so rephase's extra count has a paced call of its own)
+            assert(h_q == f_owe);
+            if (emit_nz) assert(!f_owe);
+            if (sl_q) assert(f_owe);
+            assert(!(emit_nz && sl_q));
+            // the count has the sign of the backlog, and an event comes whenever it may
             if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
-            if (f_tz && e_prev_q == 2'sd0 && f_bnow != 0) assert(emit_nz);
+            if (f_tz && !f_g1 && !f_owe && f_bnow != 0) assert(emit_nz);
+            if (f_tz && !f_g1 && f_owe) assert(sl_q);
             // helper invariant (induction): the timer (tm - 1) is what is left of the gap
             assert(!f_timer[W_PACE] && tm_q == f_timer[W_PACE-1:0] + 1'b1);
-            if (!f_rst_p) assert(e_prev_q == 2'sd0 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
+            if (!f_rst_p) assert(!f_g1 || f_since == {{(W_PACE+1){1'b0}}, 1'b1});
+            if (e_prev_q != 2'sd0) assert(f_g1);
         end
 `endif
         if (f_init) begin
             assert(o_pstep == f_nx);   // the look-ahead is the next call's pstep
+            assert(o_slot == f_snx);   // and the next call's slot
             if (emit_nz) assert(emit == (f_bnow[FW-1] ? -2'sd1 : 2'sd1) && f_bnow != 0);
             // the carry-save sums equal the plain sums (the conservation proof uses the plain ones)
             assert(t_sum == t_a + t_b + t_m + t_n);
@@ -404,7 +443,8 @@ module output_pacer (
             assert(he_q == (hi_q[3:0] == 4'he));
             assert(lz_q == {lo_q[19:16] == 4'h0, lo_q[15:12] == 4'h0, lo_q[11:8] == 4'h0,
                             lo_q[7:4] == 4'h0, lo_q[3:0] == 4'h0});
-            assert(tz_q == (f_tz && e_prev_q == 2'sd0));
+            assert(tz_q == (f_tz && !f_g1 && !h_q));
+            assert(sl_q == (f_tz && !f_g1 && h_q));
             assert(e_pos_q == (e_prev_q == 2'sd1));
             // counts and tap carries are -1, 0 or +1, the backlog carry -1 .. +2 (helper invariant)
             assert(e_prev_q != -2'sd2 && a_cy_q != -2'sd2 && p_cy_q != -2'sd2 && f_e1 != -2'sd2);

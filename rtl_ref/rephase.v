@@ -15,7 +15,8 @@
 //      stage 2, A = paced', d from w (P - w forward, w -/+ P/2 backward); stage 2: (num, t, v)
 //      step, tr < 0 -> stage 1, tr == P (flagged a call ahead: at_last) -> stage 3, B = bs (A +
 //      dir*P, formed in the calls before), C = B + dir*mark_len, Z = B + dir*P/4.
-//   5. ostep = pstep, or else sgn(lag) (lag = adj_tgt - adj: the pending extra count, 2 bits).
+//   5. ostep = pstep, or else in the pacer's slot sgn(lag) (lag = adj_tgt - adj: the pending extra
+//      count, 2 bits; 0 after a call with unhome or rehome: the leave drops it).
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
 // Every path is one carry chain from registers plus a few LUT levels: 38 bits only for the
@@ -25,7 +26,7 @@
 // registered step) and 14 bits (Bresenham, tr, w, d) elsewhere; no 38-bit compare, no adder in
 // series with another, and the late pstep enters no chain but paced's low half.
 // Widths: positions 38 signed, d/num/w 12 unsigned, t/v/k/tr 14 signed, lag 2 signed, stage 2.
-// Latency: 1 call (pstep in, ostep/out_pos/mark out); extra counts +1 call.
+// Latency: 1 call (pstep, slot in, ostep/out_pos/mark out); extra counts in the slot.
 `timescale 1ns / 1ps
 `default_nettype none
 `include "laserax_widths.vh"
@@ -38,6 +39,10 @@ module rephase (
     // o_pstep_nx. The count's direction relative to the homing direction (s_pos / s_neg) is
     // registered from it, so its decode and fan-out are off the path from the pacer (DESIGN 4.5)
     input  wire signed [`LX_W_STEP-1:0] i_pstep_nx,
+    input  wire                         i_slot,      // the pacer's slot: the call for a pending extra count
+    // look-ahead: the i_slot of the next call (the pacer's o_slot_nx); the block reads its
+    // registered copy (sl_q), i_slot is used only by the formal properties
+    input  wire                         i_slot_nx,
     input  wire                         i_sw,        // debounced reference switch level
     input  wire                         i_sw_valid,  // its input_filter valid flag
     input  wire                         i_rehome,    // register pulse: back to stage 1
@@ -135,6 +140,7 @@ module rephase (
     (* keep *) reg         bw_c_q, bw_z_q;     // !fwd_q, copies for the C and Z adds
     (* keep *) reg         bw_b_q;             // !fwd_q, the copy for A + dir*P (bs)
     reg                    un_q, re_q;         // unhome / rehome of this call, from the look-ahead
+    reg                    sl_q;               // slot of this call, from the look-ahead
     reg                    osu_q, osd_q;       // ostep of this call is +1 / -1, from the look-ahead
     (* keep *) reg         osd_w_q;            // osd_q, the copy for w's step chain (x_s)
     reg                    hom_q;              // this call is the homing count (from the look-ahead)
@@ -194,9 +200,10 @@ module rephase (
     //    value come from equalities of w with P - 2, P, 1 and all ones (beside the candidates)
     // sgn(lag) of the 2-bit lag: -2 (a wrap, only with a broken precondition) has the sign -1
     wire signed [1:0]     lsgn    = {lag_q[1], lag_q[1] | lag_q[0]};
-    // the output step: the sign of pstep, or else sgn(lag); its two decodes (+1, -1) are
-    // registered in the previous call from the look-ahead i_pstep_nx and the next lag (osu_q,
-    // osd_q), so neither the move of w nor the output counter waits for the late pstep
+    // the output step: the sign of pstep, or else in a slot without unhome / rehome sgn(lag); its
+    // two decodes (+1, -1) are registered in the previous call from the look-ahead i_pstep_nx,
+    // i_slot_nx, i_unhome_nx, i_rehome_nx and the next lag (osu_q, osd_q), so neither the move of
+    // w nor the output counter waits for the late pstep
     wire                  eup  = osu_q;
     wire                  edn  = osd_q;
     wire signed [1:0]     ostep_n = {edn, eup || edn};
@@ -361,17 +368,18 @@ module rephase (
     wire        mn_n   = u_hz && u_ge1 && u_le1;                      // u - 1 in [0, L]
     wire        in_rng = s_pos ? mp_q : s_neg ? mn_q : mark_q;
 
-    // 5. the output step (ostep_n above). lag' is lag - sgn(lag) (idle call), lag + 1 / lag - 1
-    // (an extra count with pstep = +1 / -1) or lag, in 2-bit arithmetic (-1..1 under the block
-    // precondition; a broken precondition wraps, as in hls); for each value of pstep the
-    // extra-count test (dq_nz with that pstep) is a function of registers, so the late pstep
-    // only drives the last select
+    // 5. the output step (ostep_n above). lag' is 0 (a call with unhome or rehome: the leave
+    // drops a pending extra count), lag - sgn(lag) (a slot), lag + 1 / lag - 1 (an extra count
+    // with pstep = +1 / -1) or lag, in 2-bit arithmetic (-1..1 under the block precondition; a
+    // broken precondition wraps, as in hls); for each value of pstep the extra-count test
+    // (dq_nz with that pstep) is a function of registers, so the late pstep only drives the
+    // last select
     wire signed [W_LAG-1:0] lag_ml = lag_q - lsgn;
     wire signed [W_LAG-1:0] lag_p1 = lag_q + 2'sd1;
     wire signed [W_LAG-1:0] lag_m1 = lag_q - 2'sd1;
-    // the extra-count test per pstep value without the leave term: a leave call (stage 2 and
-    // unhome or rehome) adds no extra count, which the last select applies (lv), so the late
-    // unhome level (the decoder's register, across the chip) meets lag' only in the last LUT
+    // the extra-count test per pstep value without the leave term: a call with unhome or rehome
+    // clears lag, which the last select applies (lv), so the unhome level meets lag' only in the
+    // last LUT
     wire                    dq_p   = stage_q == ST_WINDOW && (fwd_q ? (!fr && !t_q[W_BR-1])
                                                                : (tr_pos && v_q[W_BR-1]));
     wire                    dq_m   = stage_q == ST_WINDOW && (fwd_q ? (tr_pos && v_q[W_BR-1])
@@ -381,7 +389,9 @@ module rephase (
     (* keep *) wire signed [W_LAG-1:0] lag_cp, lag_cm;   // lag' for pstep = +1 / -1
     assign lag_cp = dq_p ? lag_p1 : lag_q;
     assign lag_cm = dq_m ? lag_m1 : lag_q;
-    wire signed [W_LAG-1:0] lag_n  = pz ? lag_ml : lv ? lag_q : pn_q ? lag_cm : lag_cp;
+    // the next call may pay out an extra count: its slot, without unhome or rehome (look-ahead)
+    wire                    xs_nx  = i_slot_nx && !(i_unhome_nx || i_rehome_nx);
+    wire signed [W_LAG-1:0] lag_n  = lv ? {W_LAG{1'b0}} : pz ? (sl_q ? lag_ml : lag_q) : pn_q ? lag_cm : lag_cp;
     // sign bits and low parts of the Bresenham registers (outside the always block)
     wire              t_neg  = t_q[W_BR-1];
     wire              v_neg  = v_q[W_BR-1];
@@ -613,13 +623,14 @@ module rephase (
         us_q <= {i_pstep_nx != 2'sd0 && (!i_pstep_nx[1] != (i_rst || fwd_d)), i_pstep_nx != 2'sd0};
         pn_q <= i_pstep_nx[1];
         un_q <= i_unhome_nx;
-        // the output step of the next call: its pstep, or else the sign of the next lag (0 after
-        // a reset call)
-        osu_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n == 2'sd1) : (i_pstep_nx == 2'sd1);
-        osd_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n[1]) : i_pstep_nx[1];
-        osd_w_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && lag_n[1]) : i_pstep_nx[1];
-        as_q  <= {i_pstep_nx == 2'sd0 && !i_rst && lag_n[1],
-                  i_pstep_nx == 2'sd0 && !i_rst && lag_n != 2'sd0};
+        // the output step of the next call: its pstep, or else in its slot (without unhome or
+        // rehome) the sign of the next lag (0 after a reset call)
+        osu_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && xs_nx && lag_n == 2'sd1) : (i_pstep_nx == 2'sd1);
+        osd_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && xs_nx && lag_n[1]) : i_pstep_nx[1];
+        osd_w_q <= (i_pstep_nx == 2'sd0) ? (!i_rst && xs_nx && lag_n[1]) : i_pstep_nx[1];
+        as_q  <= {i_pstep_nx == 2'sd0 && !i_rst && xs_nx && lag_n[1],
+                  i_pstep_nx == 2'sd0 && !i_rst && xs_nx && lag_n != 2'sd0};
+        sl_q <= i_slot_nx;
         re_q <= i_rehome_nx;
     end
 
@@ -639,7 +650,10 @@ module rephase (
     // ---- formal properties (read_verilog -formal; see docs/FORMAL.md) --------------------------
     // Assumptions: the block-level preconditions of DESIGN 4.5, which the top guarantees: P is a
     // free constant (f_per) with 8 <= P <= 4096, P % 8 == 0; pstep in {-1, 0, +1}; no real count
-    // in two consecutive calls (pace M >= 2); mark_len in its legal range [P/4, P]. The switch,
+    // in two consecutive calls (pace M >= 2); no slot in the call of a real count, and a real
+    // count that the pacer emitted while wide (rephase's stage two calls before: the pacer sees
+    // the stage one call late and decides a count one call before rephase gets it) is followed
+    // by a slot before the next count; mark_len in its legal range [P/4, P]. The switch,
     // its valid flag, rehome and unhome are free in every call.
     // References (f_*), written from the text of DESIGN 4.5 (not from the hardware form above):
     // the paced position, the stage machine, the travel tr = dir * (paced - A), the adjustment
@@ -652,6 +666,9 @@ module rephase (
     reg               f_pnz;                 // the previous call had a real count
     reg signed [1:0]  f_pnx;                 // i_pstep_nx of the previous call
     reg               f_unx, f_rnx;          // i_unhome_nx / i_rehome_nx of the previous call
+    reg               f_snx;                 // i_slot_nx of the previous call
+    reg [1:0]         f_sgp;                 // f_stage before the previous call (the pacer's wide)
+    reg               f_owe;                 // a count emitted while wide waits for its slot
     reg               f_swp, f_sws;
     reg [1:0]         f_stage;
     reg               f_dlast, f_dir;        // direction of the last count, homing direction
@@ -738,12 +755,16 @@ module rephase (
     wire [W_P-1:0]   len_q    = ~nlen_q;                          // L
     wire [W_POS-1:0] f_lenx   = {{(W_POS-W_P){1'b0}}, len_q};
     wire [W_P-1:0]   f_plag   = f_stp(f_po, lag_q[1:0], f_per);  // (out_pos + lag) mod P
+    wire             f_xs     = i_slot && !(i_unhome || i_rehome);  // a slot that may pay out
 
     always @(posedge i_clk) begin
         f_per <= f_per;
         f_pnx <= i_pstep_nx;
         f_unx <= i_unhome_nx;
         f_rnx <= i_rehome_nx;
+        f_snx <= i_slot_nx;
+        f_sgp <= i_rst ? ST_UNHOMED : f_stage;
+        f_owe <= i_rst ? 1'b0 : !f_pz ? (f_sgp == ST_WINDOW) : i_slot ? 1'b0 : f_owe;
         if (i_rst) begin
             f_init  <= 1'b1;
             f_pnz   <= 1'b0;
@@ -783,6 +804,10 @@ module rephase (
             f_age   <= f_capt ? 2'd0 : (f_age == 2'd3 ? f_age : f_age + 2'd1);
             if (f_leave) begin
                 f_stage <= ST_UNHOMED;
+                // the text: adj0' = adj (the applied adjustment; a pending extra count is
+                // dropped), adj_tgt' = adj0'; its phase with paced' = that of out_pos + pstep
+                f_tgt   <= adj_q;
+                f_pt    <= f_stp(f_po, i_pstep, f_per);
             end else if (f_capt) begin
                 f_stage <= ST_WINDOW;
                 f_dir   <= f_dlastn;
@@ -821,22 +846,28 @@ module rephase (
         assume(i_pstep != -2'sd2);
         assume(!f_init || i_pstep == f_pnx);                  // the look-ahead inputs are exact
         assume(!f_init || (i_unhome == f_unx && i_rehome == f_rnx));
+        assume(!f_init || i_slot == f_snx);
+        assume(!(i_slot && !f_pz));                           // no slot with a real count
+        assume(!(f_owe && !f_pz));                            // a slot before the next count
         assume(!(f_init && f_pnz && !f_pz));                  // real counts >= 2 calls apart
         assume(i_mark_len >= f_p4 && i_mark_len <= f_per);
         assume(i_mark_len_n == ~i_mark_len);
 
         if (f_init) begin
             // the registered level copies are this call's unhome / rehome
-            assert(un_q == i_unhome && re_q == i_rehome);
+            assert(un_q == i_unhome && re_q == i_rehome && sl_q == i_slot);
             // the registered count decode is that of this call's pstep against fwd
             assert(s_pos == (!pz && pfwd == fwd_q) && s_neg == (!pz && pfwd != fwd_q));
             // the other registered decodes: the sign of pstep, the steps of u, w / out_pos, adj
             assert(pp_q == (i_pstep == 2'sd1) && pn_q == (i_pstep == -2'sd1));
             assert(us_q == {s_neg, s_pos || s_neg});
-            assert(osu_q == (i_pstep == 2'sd1 || (i_pstep == 2'sd0 && lag_q == 2'sd1)));
-            assert(osd_q == (i_pstep == -2'sd1 || (i_pstep == 2'sd0 && lag_q[1])));
+            assert(osu_q == (i_pstep == 2'sd1 || (i_pstep == 2'sd0 && f_xs && lag_q == 2'sd1)));
+            assert(osd_q == (i_pstep == -2'sd1 || (i_pstep == 2'sd0 && f_xs && lag_q[1])));
             assert(osd_w_q == osd_q);
-            assert(as_q == {i_pstep == 2'sd0 && lag_q[1], i_pstep == 2'sd0 && lag_q != 2'sd0});
+            assert(as_q == {i_pstep == 2'sd0 && f_xs && lag_q[1], i_pstep == 2'sd0 && f_xs && lag_q != 2'sd0});
+            // the output moves only in the call of a real count or of a slot (so consecutive
+            // output counts are as far apart as the pacer's events: max(M, 2) calls)
+            if (ostep_n != 2'sd0) assert(!f_pz || i_slot);
             // the paced stream, the stage machine and its inputs follow the text
             assert(paced_q == f_paced);
             assert(stage_q == f_stage && f_stage != 2'd0);
@@ -858,7 +889,12 @@ module rephase (
                    pa_one_q == (paced_q[W_LO-1:0] == {{(W_LO-1){1'b0}}, 1'b1}));
             assert(paced_nx == pos_step(paced_q, i_pstep));
             assert(ostep_q != -2'sd2);
-            assert(lag_q == {W_LAG{1'b0}} || (f_pnz && (lag_q == 1 || lag_q == -1)));
+            assert(lag_q == {W_LAG{1'b0}} || (f_owe && (lag_q == 1 || lag_q == -1)));
+            if (f_stage == ST_UNHOMED) assert(lag_q == {W_LAG{1'b0}});
+            // the pacer's wide (the stage before the previous call) is on in stage 2 from the
+            // call after A on (helper invariant: the only count without it, the first after A,
+            // changes no lag)
+            if (f_stage == ST_WINDOW && !f_anew) assert(f_sgp == ST_WINDOW);
             // the per-pstep forms of the extra-count test are the test itself
             if (i_pstep == 2'sd1)  assert((dq_p && !lv) == dq_nz);
             if (i_pstep == -2'sd1) assert((dq_m && !lv) == dq_nz);

@@ -184,13 +184,15 @@ BLOCKS = [
             IN("pace_m", 16),
             IN("thr", 32),
             IN("clear", 1),
+            IN("wide", 1),
             OUT("pstep", 2, S),
+            OUT("slot", 1),
             OUT("paced", 38, S),
             OUT("backlog", 40, S),
             OUT("ovs", 1),
             OUT("ovs_st", 1),
         ],
-        unused=[IN("add", 18, S), OUT("pstep_nx", 2, S)],
+        unused=[IN("add", 18, S), OUT("pstep_nx", 2, S), OUT("slot_nx", 1)],
         extra=dict(
             decls="""\
     // the second addend (i_add, the error-map delta in the top): the vector's delta is split into
@@ -219,6 +221,7 @@ BLOCKS = [
         dut="rephase.",
         fields=[
             IN("pstep", 2, S),
+            IN("slot", 1),
             IN("sw", 1),
             IN("sw_valid", 1),
             IN("rehome", 1),
@@ -241,10 +244,10 @@ BLOCKS = [
         # them in its register stage)
         unused=[IN("period_m1", 14, S, idle=-1), IN("period_m2", 14, S, idle=-2),
                 IN("mark_len_n", 13, idle=8191),
-                IN("pstep_nx", 2, S), IN("unhome_nx", 1), IN("rehome_nx", 1)],
+                IN("pstep_nx", 2, S), IN("slot_nx", 1), IN("unhome_nx", 1), IN("rehome_nx", 1)],
         extra=dict(
             decls="""\
-    // the look-ahead inputs pstep_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
+    // the look-ahead inputs pstep_nx, slot_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
     // 4.5): the next row's (row 0's during reset, 0 after the last row)
     reg [ROW_BITS-1:0] row_nx;
 """,
@@ -254,12 +257,14 @@ BLOCKS = [
             i_mark_len_n = ~i_mark_len;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
             i_pstep_nx = @next.pstep@;
+            i_slot_nx = @next.slot@;
             i_unhome_nx = @next.unhome@;
             i_rehome_nx = @next.rehome@;
 """,
             idle="""\
             row_nx = vec[0];
             i_pstep_nx = @next.pstep@;
+            i_slot_nx = @next.slot@;
             i_unhome_nx = @next.unhome@;
             i_rehome_nx = @next.rehome@;
 """),

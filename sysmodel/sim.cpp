@@ -265,6 +265,32 @@ std::string dual_axis::step(const lx::axis_pins& p) {
     return m;
 }
 
+std::string dual_axis::pin_spacing(bool qa, bool qb) {
+    const int64_t pm = static_cast<int64_t>(f_.pace_m);
+    const int64_t gap_now = pm == 0 ? 65536 : (pm < 2 ? 2 : pm);  // the pacer's gap (DESIGN 4.4)
+    int64_t ring_min = gap_now;
+    for (int i = 0; i < 8; ++i) {
+        if (m_ring_[i] != 0 && m_ring_[i] < ring_min) ring_min = m_ring_[i];
+    }
+    for (int i = 7; i > 0; --i) m_ring_[i] = m_ring_[i - 1];
+    m_ring_[0] = gap_now;
+    if (gap_now < m_min_) m_min_ = gap_now;
+    std::string m;
+    if (q_have_ && (qa != q_a_ || qb != q_b_)) {
+        const uint64_t gap = calls_ - q_last_;
+        if (q_changed_ && static_cast<int64_t>(gap) < m_min_)
+            m = "integrity: qa/qb changed " + std::to_string(gap) + " calls after the previous change (pace_m gap " +
+                std::to_string(m_min_) + ", DESIGN 4.4/4.5: every output count at least max(M, 2) calls apart)";
+        q_changed_ = true;
+        q_last_ = calls_;
+        m_min_ = ring_min;
+    }
+    q_have_ = true;
+    q_a_ = qa;
+    q_b_ = qb;
+    return m;
+}
+
 void dual_axis::write_map(int addr, int32_t data) {
     s_.emap.we = true;
     s_.emap.addr = addr;
@@ -281,6 +307,8 @@ std::string dual_axis::integrity() {
         // (re)start: the chain is in reset; the controller re-synchronises at position 0
         dec_.reset(static_cast<int>(s_.period), 0);
         hist_n_ = 0;
+        q_have_ = false;
+        q_changed_ = false;
         cc_hist_[0] = cc_hist_[1] = cc_hist_[2] = 0;
         settled_ = 0;
     } else {
@@ -303,6 +331,8 @@ std::string dual_axis::integrity() {
         const lx::axis_out& h = core_.out();
         const bool ok = dec_.feed(use_sc ? h.sin.to_int64() : 0, use_sc ? h.cos.to_int64() : 1, h.qa, h.qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
+        const std::string sp = pin_spacing(h.qa, h.qb);
+        if (m.empty()) m = sp;
         if (m.empty() && hist_n_ >= kOutLag) {
             const int64_t want = out_hist_[kOutLag - 1];
             if ((use_sc && dec_.sincos_pos() != want) || dec_.quad_pos() != want)

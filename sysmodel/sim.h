@@ -160,6 +160,16 @@ private:
     int64_t raw_hist_[L_MUL + 1] = {};  // golden raw_count of calls t-1 .. t-1-L_MUL
     long long settled_ = 0;             // calls since the pair in force last changed (or restart)
     bool prev_use_sc_ = false;          // sin/cos decoded on the previous call
+    // pin spacing (DESIGN 4.4, 4.5): two changes of the qa/qb state are at least max(M, 2) calls
+    // apart in every stage, M the least pace_m in force from 8 calls before the first change on
+    // (the count reaches the pins 4 calls after the pacer decides it)
+    bool q_have_ = false;               // a running call's qa/qb seen since the last restart
+    bool q_changed_ = false;            // a change seen since then
+    bool q_a_ = false, q_b_ = false;    // qa/qb of the previous call
+    uint64_t q_last_ = 0;               // call of the last change
+    int64_t m_min_ = 0;                 // least pace_m (as a gap) since 8 calls before it
+    int64_t m_ring_[8] = {};            // the gaps of the last 8 calls
+    std::string pin_spacing(bool qa, bool qb);
     // register stage (DESIGN 4.7): the settings presented in a call are in force in the next one
     axis_settings f_{};          // settings in force in the current call (presented in the previous)
     bool have_f_ = false;        // false in the power-up call (no settings in force)

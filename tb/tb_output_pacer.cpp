@@ -2,7 +2,8 @@
 // direct checks of the behaviour the block promises (split from tb_blocks, issue 14).
 //
 // output_pacer: random deltas including huge jumps, random M and threshold: every output equal;
-//   consecutive counts are >= max(M, 2) calls apart; paced + backlog (taps, two calls late) ==
+//   consecutive events (counts and slots) are >= max(M, 2) calls apart, a count emitted while
+//   `wide` is followed by a slot before the next count, and a slot comes only then; paced + backlog (taps, two calls late) ==
 //   sum of the deltas up to two calls earlier; ovs == |backlog of four calls earlier| > thr;
 //   drains fully; every fifth run with jumps up to 2^37 and thresholds over all 32 bits; a
 //   directed carry of +2 from the lower half.
@@ -29,8 +30,12 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
         int64_t bl_hist[2] = {0, 0};  // backlog tap of calls t-1, t-2 (0 before the first call)
         int64_t sum = 0;
         int64_t sum_1 = 0, sum_2 = 0;  // sum of the deltas up to one / two calls earlier
-        long last_emit = -1000000;
+        long last_event = -1000000;
+        bool wide = false, owed = false;
         for (long t = 0; t < 60000; ++t) {
+            // rephase's window: on and off in stretches (off for the drain below)
+            if (rng() % 700 == 0) wide = !wide;
+            if (t >= 50000) wide = false;
             int64_t delta = 0;
             if (t < 50000) {
                 const uint64_t k = rng() % 1000;
@@ -62,9 +67,9 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
             case 2: add = rng() % 2 ? -(1 << 17) : (1 << 17) - 1; break;
             default: break;
             }
-            const lx::output_pacer::out_t ho = h.step(delta - add, add, m, thr, clear);
-            const golden::output_pacer::out go = g.step(delta, m, thr, clear);
-            const bool same = ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog &&
+            const lx::output_pacer::out_t ho = h.step(delta - add, add, m, thr, clear, wide);
+            const golden::output_pacer::out go = g.step(delta, m, thr, clear, wide);
+            const bool same = ho.pstep == go.pstep && ho.slot == go.slot && ho.paced == go.paced && ho.backlog == go.backlog &&
                               ho.ovs == go.ovs && ho.ovs_st == go.ovs_st;
             if (!res.expect(same, [&] {
                     return "output_pacer rep " + std::to_string(rep) + " call " + std::to_string(t) + ": pstep " +
@@ -81,21 +86,27 @@ void test_output_pacer(tbu::result& res, std::mt19937_64& rng) {
             }
             bl_hist[1] = bl_hist[0];
             bl_hist[0] = ho.backlog.to_int64();
-            if (ho.pstep != 0) {
-                res.expect(t - last_emit >= (m < 2 ? 2 : m), [&] { return "pacer emitted counts closer than max(M, 2)"; });
-                last_emit = t;
+            if (ho.pstep != 0 || ho.slot) {
+                res.expect(t - last_event >= (m < 2 ? 2 : m),
+                           [&] { return "pacer events closer than max(M, 2) at call " + std::to_string(t); });
+                last_event = t;
             }
+            res.expect(!(ho.pstep != 0 && ho.slot), [&] { return "pacer: a slot with a count"; });
+            res.expect(!(ho.pstep != 0 && owed), [&] { return "pacer: a count while its slot is owed, call " + std::to_string(t); });
+            res.expect(!ho.slot || owed, [&] { return "pacer: a slot nobody is owed, call " + std::to_string(t); });
+            if (ho.pstep != 0) owed = wide;
+            if (ho.slot) owed = false;
             // the taps paced and backlog are two calls late (DESIGN 4.4)
             res.expect(ho.paced.to_int64() + ho.backlog.to_int64() == sum_2,
                        [&] { return "pacer lost counts at call " + std::to_string(t); });
         }
         // after motion stops the backlog drains at one count per M calls, exactly
-        lx::output_pacer::out_t o = h.step(0, 0, m, thr, false);
+        lx::output_pacer::out_t o = h.step(0, 0, m, thr, false, false);
         const int64_t left = o.backlog.to_int64() < 0 ? -o.backlog.to_int64() : o.backlog.to_int64();
         const int64_t limit = left * (m < 2 ? 2 : m) + m + 4;  // + the two calls of tap latency
         int64_t k = 0;
         while (o.backlog != 0 && k < limit) {
-            o = h.step(0, 0, m, thr, false);
+            o = h.step(0, 0, m, thr, false, false);
             ++k;
         }
         res.check(o.backlog == 0 && o.paced.to_int64() == sum, "pacer did not drain within |backlog|*M calls");
@@ -116,8 +127,8 @@ void test_output_pacer_carry2(tbu::result& res) {
     int emitted = 0;  // counts of either sign (a wrong +1 taken back by a -1 still counts twice)
     for (int t = 0; t < 12; ++t) {
         const int64_t delta = t < 3 ? d[t] : 0, add = t < 3 ? a[t] : 0;
-        const lx::output_pacer::out_t ho = h.step(delta, add, 2, 1000, false);
-        const golden::output_pacer::out go = g.step(delta + add, 2, 1000, false);
+        const lx::output_pacer::out_t ho = h.step(delta, add, 2, 1000, false, false);
+        const golden::output_pacer::out go = g.step(delta + add, 2, 1000, false, false);
         res.expect(ho.pstep == go.pstep && ho.paced == go.paced && ho.backlog == go.backlog,
                    [&] { return "output_pacer carry +2: hls != golden at call " + std::to_string(t); });
         if (ho.pstep != 0) ++emitted;

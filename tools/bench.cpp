@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
         const lx::output_pacer_cfg::thr_t thr = opaque(4096);
         const bool no = opaque(false);
         long long acc = 0;
-        for (long long t = 0; t < k; ++t) acc += pc.step((t % 37) == 0 ? 8 : 0, 0, pace, thr, no).pstep.to_int64();
+        for (long long t = 0; t < k; ++t) acc += pc.step((t % 37) == 0 ? 8 : 0, 0, pace, thr, no, no).pstep.to_int64();
         sink = acc;
     });
     report("hls rephase", n, [&](long long k) {
@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
         const lx::period_t period = opaque(256), mark_len = opaque(64);
         long long acc = 0;
         for (long long t = 0; t < k; ++t)
-            acc += r.step((t % 5) == 0 ? 1 : 0, (t / 5) % 100000 > 3000, yes, no, no, period, mark_len).out_pos.to_int64();
+            acc += r.step((t % 5) == 0 ? 1 : 0, (t % 5) == 2, (t / 5) % 100000 > 3000, yes, no, no, period, mark_len).out_pos.to_int64();
         sink = acc;
     });
     report("hls dds_sincos", n, [&](long long k) {

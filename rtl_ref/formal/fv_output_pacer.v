@@ -18,7 +18,8 @@ module fv_output_pacer (
     input wire signed [17:0] i_add,
     input wire [15:0]        i_pace_m,
     input wire [31:0]        i_thr,
-    input wire               i_clear
+    input wire               i_clear,
+    input wire               i_wide
 );
     localparam integer W = 42;
     localparam signed [W-1:0] LIM = 42'sd34359738368;   // 2^35
@@ -32,7 +33,7 @@ module fv_output_pacer (
 
     output_pacer dut (
         .i_clk(i_clk), .i_rst(i_rst), .i_delta(i_delta), .i_add(i_add), .i_pace_m(i_pace_m), .i_thr(i_thr),
-        .i_clear(i_clear), .o_pstep(pstep), .o_paced(paced), .o_backlog(backlog), .o_ovs(ovs),
+        .i_clear(i_clear), .i_wide(i_wide), .o_pstep(pstep), .o_pstep_nx(), .o_slot(), .o_slot_nx(), .o_paced(paced), .o_backlog(backlog), .o_ovs(ovs),
         .o_ovs_st(ovs_st), .f_o_c0(c0), .f_o_c1(c1), .f_o_c2(c2), .f_o_p(pc), .f_o_init(dut_init));
 
     reg f_started;

@@ -419,7 +419,9 @@ vec_table pacer_stress(rng_t& r, long long calls) {
     lx::output_pacer p;
     unsigned m = 3;
     uint64_t thr = 20;
+    bool wide = false;
     for (long long k = 0; k < calls; ++k) {
+        if (r.chance(300)) wide = !wide;  // rephase's window (stage 2): a slot after each count
         int64_t delta = 0;
         if (r.chance(4)) delta = r.range(-1, 1);
         if (r.chance(500)) delta = r.range(-60, 60);
@@ -427,8 +429,9 @@ vec_table pacer_stress(rng_t& r, long long calls) {
         if (r.chance(700)) m = static_cast<unsigned>(r.chance(8) ? r.range(0, 1) : r.range(2, 7));
         if (r.chance(700)) thr = static_cast<uint64_t>(r.chance(10) ? static_cast<int64_t>(r.u() & 0xffffffffULL) : r.range(0, 60));
         const bool clear = r.chance(40);
-        const lx::output_pacer::out_t o = p.step(lx::delta_t(delta), 0, m, static_cast<uint32_t>(thr), clear);
-        t.rows.push_back({delta, m, static_cast<int64_t>(thr), i64(clear), o.pstep.to_int64(), o.paced.to_int64(),
+        const lx::output_pacer::out_t o = p.step(lx::delta_t(delta), 0, m, static_cast<uint32_t>(thr), clear, wide);
+        t.rows.push_back({delta, m, static_cast<int64_t>(thr), i64(clear), i64(wide), o.pstep.to_int64(), i64(o.slot),
+                          o.paced.to_int64(),
                           o.backlog.to_int64(), i64(o.ovs), i64(o.ovs_st)});
     }
     return t;
@@ -439,7 +442,7 @@ vec_table rephase_stress(rng_t& r, long long calls) {
     lx::rephase rp;
     int64_t pos = 0, sw_pos = 40;
     int dir = 1;
-    long long gap = 0;
+    long long gap = 0, slot_in = -1;
     unsigned period = 64, mark_len = 16;
     bool sw_valid = false, unhome = false;
     for (long long k = 0; k < calls; ++k) {
@@ -448,11 +451,16 @@ vec_table rephase_stress(rng_t& r, long long calls) {
         if (pos > sw_pos + 3 * static_cast<int64_t>(period)) dir = -1;
         if (pos < sw_pos - 3 * static_cast<int64_t>(period)) dir = 1;
         int ps = 0;
+        bool slot = false;
         if (gap-- <= 0) {
             ps = dir;
             pos += dir;
             gap = r.range(1, 4);  // real counts >= 2 calls apart, as the pacer guarantees
+            slot_in = r.range(1, gap);  // and a slot after each, before the next count
+        } else if (--slot_in == 0) {
+            slot = true;
         }
+        if (r.chance(2000)) slot = !slot;  // out of contract now and then: hls and rtl_ref alike
         if (r.chance(4000)) {
             period = static_cast<unsigned>(kPresets[r.range(0, 8)]);
             if (period > 1280) period = 1280;  // keep the homing window short enough to finish
@@ -465,8 +473,8 @@ vec_table rephase_stress(rng_t& r, long long calls) {
         bool sw = pos >= sw_pos;
         if (r.chance(700)) sw = !sw;
         const bool rehome = r.chance(3000);
-        const lx::rephase::out_t o = rp.step(lx::step_t(ps), sw, sw_valid, rehome, unhome, period, mark_len);
-        t.rows.push_back({ps, i64(sw), i64(sw_valid), i64(rehome), i64(unhome), period, mark_len, o.ostep.to_int64(),
+        const lx::rephase::out_t o = rp.step(lx::step_t(ps), slot, sw, sw_valid, rehome, unhome, period, mark_len);
+        t.rows.push_back({ps, i64(slot), i64(sw), i64(sw_valid), i64(rehome), i64(unhome), period, mark_len, o.ostep.to_int64(),
                           o.out_pos.to_int64(), i64(o.mark), static_cast<int64_t>(o.stage.to_uint64()), o.a.to_int64(),
                           static_cast<int64_t>(o.d.to_uint64()), o.b.to_int64(), o.c.to_int64(), o.z.to_int64(),
                           o.adj.to_int64(), i64(o.homed)});

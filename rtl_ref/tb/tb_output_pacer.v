@@ -21,7 +21,9 @@
 //   field pace_m in 16 unsigned
 //   field thr in 32 unsigned
 //   field clear in 1 unsigned
+//   field wide in 1 unsigned
 //   field pstep out 2 signed
+//   field slot out 1 unsigned
 //   field paced out 38 signed
 //   field backlog out 40 signed
 //   field ovs out 1 unsigned
@@ -31,7 +33,7 @@
 
 module tb_output_pacer;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 184;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 192;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_output_pacer";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -43,13 +45,16 @@ module tb_output_pacer;
     reg  [15:0] i_pace_m;
     reg  [31:0] i_thr;
     reg  i_clear;
+    reg  i_wide;
     reg  [17:0] i_add;   // idle (not in the vectors)
     wire [1:0] o_pstep;
+    wire o_slot;
     wire [37:0] o_paced;
     wire [39:0] o_backlog;
     wire o_ovs;
     wire o_ovs_st;
     wire [1:0] o_pstep_nx;   // not in the vectors
+    wire o_slot_nx;   // not in the vectors
 
     output_pacer dut (
         .i_clk(i_clk),
@@ -58,13 +63,16 @@ module tb_output_pacer;
         .i_pace_m(i_pace_m),
         .i_thr(i_thr),
         .i_clear(i_clear),
+        .i_wide(i_wide),
         .i_add(i_add),
         .o_pstep(o_pstep),
+        .o_slot(o_slot),
         .o_paced(o_paced),
         .o_backlog(o_backlog),
         .o_ovs(o_ovs),
         .o_ovs_st(o_ovs_st),
-        .o_pstep_nx(o_pstep_nx)
+        .o_pstep_nx(o_pstep_nx),
+        .o_slot_nx(o_slot_nx)
     );
 
     `include "tb_common.vh"
@@ -76,10 +84,11 @@ module tb_output_pacer;
 
     task apply_inputs;
         begin
-            i_delta = row[182:144];
-            i_pace_m = row[143:128];
-            i_thr = row[127:96];
-            i_clear = row[92:92];
+            i_delta = row[190:152];
+            i_pace_m = row[151:136];
+            i_thr = row[135:104];
+            i_clear = row[100:100];
+            i_wide = row[96:96];
             add_lfsr = {add_lfsr[30:0], add_lfsr[31] ^ add_lfsr[21] ^ add_lfsr[1] ^ add_lfsr[0]};
             if (i_delta[38:37] == 2'b00 || i_delta[38:37] == 2'b11) begin
                 case (add_lfsr[31:29])
@@ -101,6 +110,7 @@ module tb_output_pacer;
             i_pace_m = 16'd0;
             i_thr = 32'd0;
             i_clear = 1'd0;
+            i_wide = 1'd0;
             i_add = 18'd0;
         end
     endtask
@@ -111,13 +121,15 @@ module tb_output_pacer;
             i_pace_m = {16{1'b1}};
             i_thr = {32{1'b1}};
             i_clear = {1{1'b1}};
+            i_wide = {1{1'b1}};
             i_add = {18{1'b1}};
         end
     endtask
 
     task check_outputs;
         begin
-            check("pstep", row[89:88], o_pstep, 2, 1);
+            check("pstep", row[93:92], o_pstep, 2, 1);
+            check("slot", row[88:88], o_slot, 1, 0);
             check("paced", row[85:48], o_paced, 38, 1);
             check("backlog", row[47:8], o_backlog, 40, 1);
             check("ovs", row[4:4], o_ovs, 1, 0);

@@ -17,6 +17,7 @@
 //
 // vector fields (must equal the `// field` lines of the .hex file; scripts/rtl_sim.sh checks):
 //   field pstep in 2 signed
+//   field slot in 1 unsigned
 //   field sw in 1 unsigned
 //   field sw_valid in 1 unsigned
 //   field rehome in 1 unsigned
@@ -39,7 +40,7 @@
 
 module tb_rephase;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 320;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 324;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_rephase";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -48,6 +49,7 @@ module tb_rephase;
     // DUT ports
     reg i_clk, i_rst;
     reg  [1:0] i_pstep;
+    reg  i_slot;
     reg  i_sw;
     reg  i_sw_valid;
     reg  i_rehome;
@@ -58,6 +60,7 @@ module tb_rephase;
     reg  [13:0] i_period_m2;   // idle (not in the vectors)
     reg  [12:0] i_mark_len_n;   // idle (not in the vectors)
     reg  [1:0] i_pstep_nx;   // idle (not in the vectors)
+    reg  i_slot_nx;   // idle (not in the vectors)
     reg  i_unhome_nx;   // idle (not in the vectors)
     reg  i_rehome_nx;   // idle (not in the vectors)
     wire [1:0] o_ostep;
@@ -76,6 +79,7 @@ module tb_rephase;
         .i_clk(i_clk),
         .i_rst(i_rst),
         .i_pstep(i_pstep),
+        .i_slot(i_slot),
         .i_sw(i_sw),
         .i_sw_valid(i_sw_valid),
         .i_rehome(i_rehome),
@@ -86,6 +90,7 @@ module tb_rephase;
         .i_period_m2(i_period_m2),
         .i_mark_len_n(i_mark_len_n),
         .i_pstep_nx(i_pstep_nx),
+        .i_slot_nx(i_slot_nx),
         .i_unhome_nx(i_unhome_nx),
         .i_rehome_nx(i_rehome_nx),
         .o_ostep(o_ostep),
@@ -103,13 +108,14 @@ module tb_rephase;
 
     `include "tb_common.vh"
 
-    // the look-ahead inputs pstep_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
+    // the look-ahead inputs pstep_nx, slot_nx, unhome_nx, rehome_nx are those of the next call (DESIGN
     // 4.5): the next row's (row 0's during reset, 0 after the last row)
     reg [ROW_BITS-1:0] row_nx;
 
     task apply_inputs;
         begin
-            i_pstep = row[317:316];
+            i_pstep = row[321:320];
+            i_slot = row[316:316];
             i_sw = row[312:312];
             i_sw_valid = row[308:308];
             i_rehome = row[304:304];
@@ -120,7 +126,8 @@ module tb_rephase;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
             i_mark_len_n = ~i_mark_len;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
-            i_pstep_nx = row_nx[317:316];
+            i_pstep_nx = row_nx[321:320];
+            i_slot_nx = row_nx[316:316];
             i_unhome_nx = row_nx[300:300];
             i_rehome_nx = row_nx[304:304];
         end
@@ -129,6 +136,7 @@ module tb_rephase;
     task idle_inputs;
         begin
             i_pstep = 2'd0;
+            i_slot = 1'd0;
             i_sw = 1'd0;
             i_sw_valid = 1'd0;
             i_rehome = 1'd0;
@@ -139,10 +147,12 @@ module tb_rephase;
             i_period_m2 = 14'd16382;
             i_mark_len_n = 13'd8191;
             i_pstep_nx = 2'd0;
+            i_slot_nx = 1'd0;
             i_unhome_nx = 1'd0;
             i_rehome_nx = 1'd0;
             row_nx = vec[0];
-            i_pstep_nx = row_nx[317:316];
+            i_pstep_nx = row_nx[321:320];
+            i_slot_nx = row_nx[316:316];
             i_unhome_nx = row_nx[300:300];
             i_rehome_nx = row_nx[304:304];
         end
@@ -151,6 +161,7 @@ module tb_rephase;
     task ones_inputs;
         begin
             i_pstep = {2{1'b1}};
+            i_slot = {1{1'b1}};
             i_sw = {1{1'b1}};
             i_sw_valid = {1{1'b1}};
             i_rehome = {1{1'b1}};
@@ -161,6 +172,7 @@ module tb_rephase;
             i_period_m2 = {14{1'b1}};
             i_mark_len_n = {13{1'b1}};
             i_pstep_nx = {2{1'b1}};
+            i_slot_nx = {1{1'b1}};
             i_unhome_nx = {1{1'b1}};
             i_rehome_nx = {1{1'b1}};
         end

@@ -292,10 +292,10 @@ std::vector<vec_column> vec_layout(const std::string& block) {
         return {in("step", 2, true), in("ratio", W::W_RATIO), in("comp_offset", W::W_OFFSET, true), in("preset", 1), in("preset_n", W::W_RAW, true),
                 out("comp", W::W_POS, true), out("delta", W::W_DELTA, true)};
     if (block == "output_pacer")
-        return {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), out("pstep", 2, true),
-                out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true), out("ovs", 1), out("ovs_st", 1)};
+        return {in("delta", W::W_DELTA, true), in("pace_m", 16), in("thr", 32), in("clear", 1), in("wide", 1),
+                out("pstep", 2, true), out("slot", 1), out("paced", W::W_POS, true), out("backlog", W::W_BACKLOG, true), out("ovs", 1), out("ovs_st", 1)};
     if (block == "rephase")
-        return {in("pstep", 2, true), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
+        return {in("pstep", 2, true), in("slot", 1), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
                 in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
                 out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
                 out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
@@ -680,7 +680,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         const std::vector<uint32_t> tbl = dds_table(256, 32767);
         for (size_t k = 0; k < tbl.size(); ++k) h_dds.load(static_cast<unsigned>(k), tbl[k]);
     }
-    int prev_step = 0, prev_pstep = 0, prev_ostep = 0;
+    int prev_step = 0, prev_pstep = 0, prev_ostep = 0, prev_stage = 0;
+    bool prev_slot = false;
     int64_t prev_delta = 0;
     bool prev_lerr = false;
     int64_t prev_comp = 0;
@@ -797,12 +798,14 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         }
         const golden::pulse_multiplier::out mo = g_mul.step(prev_step, mul_ratio, mul_offset);
         const lx::pulse_multiplier::out_t hmo = h_mul.step(prev_step, mul_ratio, mul_offset);
-        const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear);
-        const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, 0, gr.pace_m, gr.backlog_thr, gr.clear);
+        // the pacer's wide: the rephase stage of the previous call (DESIGN 4.7)
+        const bool wide = prev_stage == 2;
+        const golden::output_pacer::out po = g_pac.step(prev_delta, gr.pace_m, gr.backlog_thr, gr.clear, wide);
+        const lx::output_pacer::out_t hpo = h_pac.step(prev_delta, 0, gr.pace_m, gr.backlog_thr, gr.clear, wide);
         const golden::rephase::out ro =
-            g_rep.step(prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
+            g_rep.step(prev_pstep, prev_slot, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
         const lx::rephase::out_t hro =
-            h_rep.step(prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
+            h_rep.step(prev_pstep, prev_slot, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len);
         const golden::dds_sincos::out so = g_dds.step(prev_ostep, gr.period, gr.amplitude);
         const lx::dds_sincos::out_t hso = h_dds.step(prev_ostep, gr.period, gr.amplitude);
         const golden::input_filter::out swo = g_swf.step(p.sw, gr.sw_debounce);
@@ -813,7 +816,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                           dq.err_cnt == hdq.err_cnt.to_int() && dq.illegal_st == hdq.illegal_st &&
                           dq.ovs_st == hdq.ovs_st && dq.lerr == hdq.lerr && dq.lerr_alarm == hdq.lerr_alarm &&
                           mo.comp == hmo.comp.to_int64() && mo.delta == hmo.delta.to_int64() &&
-                          po.pstep == hpo.pstep.to_int() && po.paced == hpo.paced.to_int64() &&
+                          po.pstep == hpo.pstep.to_int() && po.slot == hpo.slot && po.paced == hpo.paced.to_int64() &&
                           po.backlog == hpo.backlog.to_int64() && po.ovs == hpo.ovs && po.ovs_st == hpo.ovs_st &&
                           ro.ostep == hro.ostep.to_int() && ro.out_pos == hro.out_pos.to_int64() && ro.mark == hro.mark &&
                           ro.stage == hro.stage.to_int() && ro.a == hro.a.to_int64() && ro.d == hro.d.to_int64() &&
@@ -828,9 +831,9 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         dec.rows.push_back({p.a, p.b, p.lerr, gr.glitch_n, gr.min_spacing, gr.clear, dq.step, dq.raw_count, dq.illegal,
                             dq.ovs, dq.err_cnt, dq.illegal_st, dq.ovs_st, dq.lerr, dq.lerr_alarm, dq.glitch_st});
         mul.rows.push_back({prev_step, static_cast<int64_t>(mul_ratio), mul_offset, 0, 0, mo.comp, mo.delta});
-        pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, po.pstep, po.paced,
-                            po.backlog, po.ovs, po.ovs_st});
-        rep.rows.push_back({prev_pstep, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
+        pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, wide, po.pstep,
+                            po.slot, po.paced, po.backlog, po.ovs, po.ovs_st});
+        rep.rows.push_back({prev_pstep, prev_slot, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
                             ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
         dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, 0, 0, 0, so.sin, so.cos});
         // the map reads the multiplier's comp and the rephase homed of the previous call (the
@@ -839,6 +842,8 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         prev_step = dq.step;
         prev_delta = mo.delta;
         prev_pstep = po.pstep;
+        prev_slot = po.slot;
+        prev_stage = ro.stage;
         prev_ostep = ro.ostep;
         prev_lerr = dq.lerr;
         prev_sw = swo;
