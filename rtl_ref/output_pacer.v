@@ -154,12 +154,13 @@ module output_pacer (
     // after an event g_prev' = 1, so both 0 (whatever M loads the timer); otherwise g_prev' = 0,
     // h' = h and timer' = max(timer - 1, 0) is 0 iff timer <= 1, i.e. tm is 1 or 2. So the
     // decision needs no test of g_prev (it only mattered for the illegal M = 1), and i_wide
-    // reaches only h.
+    // reaches only h. A count needs !h and a slot needs h, so tz' and h' read emit only where
+    // h = 0 and sl' not at all (no enable on h: the emit decision meets h as a data input).
     wire              ev   = emit_nz || sl_q;
     wire              tm12 = (tm_q[W_PACE-1:2] == {(W_PACE-2){1'b0}}) && (tm_q[1] ^ tm_q[0]);
-    wire              tz_d = !ev && tm12 && !h_q;
-    wire              sl_d = !ev && tm12 && h_q;
-    wire              h_d  = emit_nz ? i_wide : (sl_q ? 1'b0 : h_q);
+    wire              tz_d = !h_q && !emit_nz && tm12;           // = !ev && tm12 && !h
+    wire              sl_d = h_q && !sl_q && tm12;               // = !ev && tm12 && h
+    wire              h_d  = h_q ? !sl_q : (emit_nz && i_wide);  // = emit ? wide : slot ? 0 : h
     wire [W_PACE-1:0] tm_d = ev ? i_pace_m
                            : (tm_q != {{(W_PACE-1){1'b0}}, 1'b1}) ? tm_q - {{(W_PACE-1){1'b0}}, 1'b1}
                            : {{(W_PACE-1){1'b0}}, 1'b1};
