@@ -60,7 +60,7 @@ stream make_stream(int s, long tail, std::mt19937_64& rng) {
     };
     hold(s + static_cast<long>(rng() % static_cast<uint64_t>(3 * s)));
     int dir = 1;
-    while (st.counts < 400) {
+    while (st.counts < 400 || (st.z_rise.size() < 8 && st.counts < 4000)) {
         if (pos > kIndexPos + 9) dir = -1;  // the walk stays around the index
         if (pos < kIndexPos - 9) dir = 1;
         const int len = 1 + static_cast<int>(rng() % 10);
