@@ -113,5 +113,28 @@ expect 2 "compensate: --equation: 'foo' is not allowed \(allowed edlen, ciddor\)
 expect 2 'compensate: --material: empty value'                      compensate --material ''
 expect 2 'compensate: --pressure-pa: needs a value'                 compensate --pressure-pa
 
+# ---- issue 36: pace_m and the controller's counter input (docs/CONTROLLER.md) ------------------
+expect 2 'run: --pace-m: 1 is out of range \(allowed 2\.\.65535\)'   run --pace-m 1
+expect 2 'run: --pace-m: 65536 is out of range \(allowed 2\.\.65535\)' run --pace-m 65536
+expect 2 'run: --pace-m: .4\.5. is not an integer'                  run --pace-m 4.5
+expect 2 'run: --controller-sample-mhz: 0 is out of range \(allowed \(0, 1000\]\)' run --controller-sample-mhz 0
+expect 2 'run: --controller-sample-mhz: 1001 is out of range'       run --controller-sample-mhz 1001
+expect 2 'run: --controller-sample-mhz: .nan. is not a finite number' run --controller-sample-mhz nan
+expect 2 'run: --controller-sample-mhz: needs a value'              run --controller-sample-mhz
+expect 2 'run: --controller-filter: -1 is out of range \(allowed 0\.\.65535\)' run --controller-filter -1
+expect 2 'run: --controller-filter: 65536 is out of range'          run --controller-filter 65536
+expect 2 'run: --controller-sample-mhz: needs --controller-filter as well' run --controller-sample-mhz 25
+expect 2 'run: --controller-filter: needs --controller-sample-mhz as well' run --controller-filter 15 --force-pace
+expect 2 'run: --pace-m 4 is unsafe .* smallest safe pace_m is 61 \(it allows at most 1639344 counts/s = 128\.07 mm/s\)' run --controller-sample-mhz 25 --controller-filter 15
+expect 2 'run: --pace-m 60 is unsafe .* smallest safe pace_m is 61' run --pace-m 60 --controller-sample-mhz 25 --controller-filter 15
+expect 2 'run: --pace-m 30 is unsafe .* smallest safe pace_m is 31' run --pace-m 30 --controller-sample-mhz 50 --controller-filter 15
+expect 2 'run: --pace-m 6 is unsafe .* smallest safe pace_m is 7'   run --pace-m 6 --controller-sample-mhz 50 --controller-filter 3
+expect 2 'run: --controller-filter: .* more than pace_m can hold'   run --controller-sample-mhz 25 --controller-filter 20000
+expect 2 "vectors: the vectors' pace_m 3 is unsafe .* smallest safe pace_m is 5" vectors --calls 100 --controller-sample-mhz 100 --controller-filter 4
+expect 2 'vectors: --controller-filter: needs --controller-sample-mhz as well' vectors --controller-filter 4
+expect 2 'vectors: --controller-sample-mhz: -1 is out of range'     vectors --controller-sample-mhz -1
+expect 0 '--controller-sample-mhz F'                                run --help
+expect 0 '--force-pace'                                             vectors --help
+
 echo "cli_bad_invocations: $cases cases, $fails failed"
 [ "$fails" = 0 ]

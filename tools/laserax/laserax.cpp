@@ -20,6 +20,7 @@
 #include "tools/laserax/counters_cmd.h"
 #include "tools/laserax/gantry_cmd.h"
 #include "sysmodel/homing.h"
+#include "tools/laserax/pacing_cli.h"
 #include "tools/laserax/pso_cmd.h"
 #include "tools/laserax/trace.h"
 #include "tools/laserax/vectors.h"
@@ -28,7 +29,7 @@ namespace {
 
 const char* kUsage =
     "usage: laserax [run] [options]\n"
-    "       laserax vectors [--out DIR] [--seed N] [--calls N]\n"
+    "       laserax vectors [--out DIR] [--seed N] [--calls N] [controller options]   (--help)\n"
     "       laserax compensate [--temp-c T] [--pressure-kpa P] [--rh RH] [--material M] ...  (--help)\n"
     "       laserax pso [options] | laserax counters [options] | laserax gantry [options]   (--help for each)\n"
     "run options:\n"
@@ -48,10 +49,14 @@ const char* kUsage =
     "  --cycles N        stop after N clocks, 1..50000000 (default: when the run is complete;\n"
     "                    a run stops at 50000000 clocks in any case)\n"
     "  --bounce-nm X     switch contact bounce zone, 0..1e6 (default 0)\n"
+    "  --pace-m M        pace_m register: output counts at least M clocks apart, 2..65535\n"
+    "                    (default 4, the register's reset value)\n"
     "  --out DIR         output folder (default out)\n"
     "  --every-clock     trace.csv gets a row for every clock\n"
-    "  --no-plot         do not call the plotting script\n";
+    "  --no-plot         do not call the plotting script\n"
+    "controller options (run and vectors):\n";
 
+std::string usage_text() { return std::string(kUsage) + lxt::kControllerUsage; }
 
 // The run's cycle cap: a homing run stops after at most this many clocks (0.5 s at 100 MHz).
 constexpr long long kMaxCycles = 50000000;
@@ -62,7 +67,8 @@ int cmd_run(const std::vector<std::string>& argv, size_t first, const std::strin
     bool every = false, plot = true;
     lxt::comp_inputs env;
     bool use_env = false;
-    lxt::cli c("laserax run", argv, first, kUsage);
+    lxt::controller_opts ctl;
+    lxt::cli c("laserax run", argv, first, usage_text());
     bool have_period = false, have_ratio = false;
     double pitch_um = 0;
     bool have_pitch = false;
@@ -89,6 +95,8 @@ int cmd_run(const std::vector<std::string>& argv, size_t first, const std::strin
         else if (c.is("--seed")) c.get_u64(0, UINT64_MAX, &p.seed);
         else if (c.is("--cycles")) c.get_int(1, kMaxCycles, &p.max_cycles);
         else if (c.is("--bounce-nm")) c.get_real(0.0, 1e6, &p.bounce_nm);
+        else if (c.is("--pace-m")) c.get_int(2, 65535, &p.pace_m);
+        else if (lxt::parse_controller_option(c, &ctl)) continue;
         else if (c.is("--out")) c.get_text(&out);
         else if (c.is("--every-clock")) every = true;
         else if (c.is("--no-plot")) plot = false;
@@ -134,6 +142,10 @@ int cmd_run(const std::vector<std::string>& argv, size_t first, const std::strin
         std::fprintf(stderr, "laserax: --air-index must be in [1, 1.01)\n");
         return 2;
     }
+    const int pace_rc = lxt::check_controller_pacing("laserax run", ctl, p.pace_m, p.clock_hz / 1e6,
+                                                     "--pace-m " + std::to_string(p.pace_m),
+                                                     "use a larger --pace-m, or --force-pace");
+    if (pace_rc != 0) return pace_rc;
     if (!lxt::make_dirs(out, "laserax")) return 1;
     lxt::trace_writer tw;
     std::string err;
@@ -145,8 +157,8 @@ int cmd_run(const std::vector<std::string>& argv, size_t first, const std::strin
     tw.close();
 
     const double count_um = lxt::kOutputCountNm / 1000.0;
-    std::printf("laserax homing: period %d counts (%.3f um), direction %+d, %.3g mm/s, seed %llu\n", p.period,
-                p.period * count_um, p.dir, p.speed_mm_s, static_cast<unsigned long long>(p.seed));
+    std::printf("laserax homing: period %d counts (%.3f um), direction %+d, %.3g mm/s, pace_m %d, seed %llu\n",
+                p.period, p.period * count_um, p.dir, p.speed_mm_s, p.pace_m, static_cast<unsigned long long>(p.seed));
     std::printf("  raw count %.4f nm (air index %.7f), ratio register %llu (%.9f output counts per raw count)\n",
                 r.lambda_nm, p.air_index, static_cast<unsigned long long>(r.ratio), static_cast<double>(r.ratio) / 4294967296.0);
     if (use_env)
@@ -225,9 +237,9 @@ int main(int argc, char** argv) {
     if (cmd == "counters") return lxt::cmd_counters(a.v, a.i);
     if (cmd == "gantry") return lxt::cmd_gantry(a.v, a.i);
     if (cmd == "help" || cmd == "-h" || cmd == "--help") {
-        std::printf("%s", kUsage);
+        std::printf("%s", usage_text().c_str());
         return 0;
     }
-    std::fprintf(stderr, "laserax: unknown command '%s'\n%s", cmd.c_str(), kUsage);
+    std::fprintf(stderr, "laserax: unknown command '%s'\n%s", cmd.c_str(), usage_text().c_str());
     return 2;
 }

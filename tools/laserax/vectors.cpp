@@ -1,6 +1,7 @@
 #include "tools/laserax/vectors.h"
 
 #include "tools/laserax/cli_util.h"
+#include "tools/laserax/pacing_cli.h"
 
 #include <sys/stat.h>
 
@@ -860,25 +861,47 @@ int cmd_vectors(const std::vector<std::string>& args, size_t first, const std::s
     std::string dir = "out/vectors";
     uint64_t seed = 1;
     long long calls = 40000;
+    controller_opts ctl;
     cli c("laserax vectors", args, first,
-          "usage: laserax vectors [--out DIR] [--seed N] [--calls N]\n"
-          "  --out DIR    output folder, non-empty (default out/vectors)\n"
-          "  --seed N     random seed, 0..2^64-1 (default 1)\n"
-          "  --calls N    calls of the random part of each file, 100..100000000 (default 40000)\n");
+          std::string("usage: laserax vectors [--out DIR] [--seed N] [--calls N] [controller options]\n"
+                      "  --out DIR    output folder, non-empty (default out/vectors)\n"
+                      "  --seed N     random seed, 0..2^64-1 (default 1)\n"
+                      "  --calls N    calls of the random part of each file, 100..100000000 (default 40000)\n"
+                      "controller options (the vectors' pace_m is fixed by the scenario: the smallest value in\n"
+                      "their pace_m columns is checked):\n") +
+              kControllerUsage);
     while (c.next()) {
         if (c.is("--out")) c.get_text(&dir);
         else if (c.is("--seed")) c.get_u64(0, UINT64_MAX, &seed);
         else if (c.is("--calls")) c.get_int(100, 100000000, &calls);
+        else if (parse_controller_option(c, &ctl)) continue;
         else c.unknown();
     }
     if (c.failed()) return c.status();
-    if (!make_dirs(dir, "laserax vectors")) return 1;
+    if (ctl.have_mhz != ctl.have_filter)  // before the scenario runs
+        return check_controller_pacing("laserax vectors", ctl, 0, 100.0, "", "");
     std::vector<vec_table> tables;
     std::string err;
     if (!build_vectors(seed, calls, tables, &err) || !build_motion_vectors(seed, calls, tables, &err)) {
         std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
         return 1;
     }
+    if (ctl.have_mhz) {  // the pace_m the vectors use: the smallest in any pace_m column
+        long long pace_m = -1;
+        for (const vec_table& t : tables) {
+            const int col = t.col("pace_m");
+            if (col < 0) continue;
+            for (const std::vector<int64_t>& row : t.rows)
+                if (pace_m < 0 || row[static_cast<size_t>(col)] < pace_m) pace_m = row[static_cast<size_t>(col)];
+        }
+        if (pace_m >= 0) {
+            const int rc = check_controller_pacing("laserax vectors", ctl, pace_m, kClockHz / 1e6,
+                                                   "the vectors' pace_m " + std::to_string(pace_m),
+                                                   "the vectors' pace_m is fixed; --force-pace writes them anyway");
+            if (rc != 0) return rc;
+        }
+    }
+    if (!make_dirs(dir, "laserax vectors")) return 1;
     for (const vec_table& t : tables) {
         if (!vec_check(t, &err)) {
             std::fprintf(stderr, "laserax vectors: %s\n", err.c_str());
