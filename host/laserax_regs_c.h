@@ -68,7 +68,7 @@
 #define LASERAX_REG_MIN_SPACING_RESET 8LL
 #define LASERAX_REG_MIN_SPACING_MIN 2LL
 #define LASERAX_REG_MIN_SPACING_MAX 65535LL
-/* pace_m: output pacer: consecutive output counts at least M clocks apart. Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count) */
+/* pace_m: output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count) */
 #define LASERAX_REG_PACE_M_OFFSET 0x58u
 #define LASERAX_REG_PACE_M_WIDTH 16
 #define LASERAX_REG_PACE_M_WORDS 1

@@ -139,7 +139,7 @@ LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
     {"min_spacing", 0x50, 16, false, 8LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "> max(glitch_n, 1)", "min_spacing", "min_spacing",
      "minimum spacing of counted A/B edges; closer edges set ovs_edge_st. Every filter-passing pulse shorter than 2 * min_spacing that changes the count is flagged; set it below the shortest real edge spacing (reset 8 = 80 ns at 100 MHz). Bad value: min_spacing <= max(glitch_n, 1) puts the chain in the safe state (cfg_err); too large a value flags real motion with ovs_edge_st"},
     {"pace_m", 0x58, 16, false, 4LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "", "pace_m", "pace_m",
-     "output pacer: consecutive output counts at least M clocks apart. Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count)"},
+     "output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count)"},
     {"backlog_thr", 0x60, 32, false, 4096LL, access::rw, "output counts", true, 0LL, 4294967295LL, 1LL, check::none, "", "backlog_thr", "backlog_thr",
      "pacer backlog alarm threshold (|backlog| > thr sets ovs_backlog_st). Bad value: none; a large threshold delays the backlog alarm, 0 raises it at any backlog"},
     {"mark_len", 0x68, 13, false, 64LL, access::rw, "output counts", false, 2LL, 4096LL, 1LL, check::cfg, "period/4 .. period", "mark_len", "mark_len",
