@@ -3,7 +3,7 @@
 # or prints the apt command to run; `deps` checks everything. `run` and `vectors` build only the
 # laserax program, `bench` only bench; `build` and `test` build every target.
 #
-#   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | formal | clean
+#   make deps | build | run [ARGS=...] | test | soak | fuzz | bench | vectors | plot | synth | synth-sweep | formal | clean
 #
 # Variables: BUILD_DIR (build), ASAN_DIR (build-asan), BUILD_TYPE (Release), JOBS (2),
 #            ARGS (arguments after `laserax run`), ASAN=0 (make test without the sanitizer pass),
@@ -108,6 +108,17 @@ clean:
 SYNTH_DEVICE ?= hx8k
 SYNTH_FREQ   ?= 100
 SYNTH_ARGS   ?=
+# make synth-sweep: the seed sweep of issue 39 (min / median / max fmax over SWEEP_SEEDS per
+# module, SWEEP_MODULES; prints numbers, checks nothing; about 1-2 min per seed and module).
+SWEEP_SEEDS   ?= 1-8
+SWEEP_MODULES ?= laserax_top,pso,encoder_counter
+.PHONY: synth-sweep
+synth-sweep:
+	@bash scripts/setup_deps.sh synth
+	@$(MAKE) build
+	$(PYTHON) scripts/synth_report.py --build $(BUILD_DIR) --out $(OUT)/synth-sweep --device $(SYNTH_DEVICE) \
+	    --freq $(SYNTH_FREQ) --jobs $(JOBS) --no-generic --modules $(SWEEP_MODULES) --seeds $(SWEEP_SEEDS) $(SYNTH_ARGS)
+
 .PHONY: synth
 synth:
 	@bash scripts/setup_deps.sh synth

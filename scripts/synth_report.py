@@ -20,6 +20,11 @@ For every block of rtl_ref/ and for the top (laserax_top):
 
 Usage: synth_report.py --build BUILD_DIR [--out DIR] [--device hx8k|up5k] [--freq MHZ]
                        [--jobs N] [--modules a,b,...] [--no-pnr] [--seed N] [--limits FILE]
+                       [--seeds 1-8]
+With --seeds (make synth-sweep, issue 39): after the table, each module's harness netlist is
+placed and routed again at every seed of the list (the netlist of --seed, synthesised once) and a
+second table gives min / median / max fmax, the number of seeds below the target and each seed's
+figure; it is also written to DIR/synth_sweep.md. Not a check: it prints numbers.
 With --limits (the CTest `synth_check`, label synth): after the table, every module named in FILE
 (rtl_ref/synth_limits.csv) is checked against its limits — synthesis must succeed, SB_LUT4 and
 block RAM at most the limit, and the P&R fmax at least the limit (where one is given) — and the
@@ -213,6 +218,7 @@ def do_module(m, a):
             "--asc", os.path.join(out, f"wrap_{m}.asc"),
             "--report", prep, "--detailed-timing-report", "--write", ppost])
     rc, secs = run(cmd, out, plog)
+    r["wjson"] = wjson
     with open(plog, errors="replace") as f:
         log = f.read()
     util = re.findall(r"ICESTORM_LC:\s+(\d+)/\s*(\d+)", log)
@@ -225,9 +231,8 @@ def do_module(m, a):
         return r
     # the harness clock (nextpnr also lists pseudo-clocks, e.g. the constant clock of a
     # combinational SB_MAC16); the last report is the one after routing
-    fm = [f for c, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s*([0-9.]+) MHz", log)
-          if c.startswith("i_clk")]
-    r["fmax"] = f"{float(fm[-1]):.1f}" if fm else "n/a"
+    fmx = fmax_of_log(log)
+    r["fmax"] = f"{fmx:.1f}" if fmx is not None else "n/a"
     r["pnr_s"] = round(secs)
     # every endpoint's slack (scripts/pnr_endpoints.py) into DIR/<m>.endpoints.txt; the count of
     # endpoints with less than 0.5 ns of slack goes into the table, and the analysis must agree
@@ -252,6 +257,87 @@ def do_module(m, a):
     return r
 
 
+def fmax_of_log(log):
+    """The harness clock's fmax after routing from a nextpnr log, or None."""
+    fm = [f for c, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s*([0-9.]+) MHz", log)
+          if c.startswith("i_clk")]
+    return float(fm[-1]) if fm else None
+
+
+def sweep_seed(m, wjson, seed, a):
+    """(seed, fmax or None): nextpnr of the module's harness netlist at another seed."""
+    dev = DEVICES[a.device]
+    plog = os.path.join(a.out, f"{m}.seed{seed}.nextpnr.log")
+    cmd = (["nextpnr-ice40"] + dev["nextpnr"] +
+           ["--json", wjson, "--pcf-allow-unconstrained", "--timing-allow-fail", "--freq", str(a.freq),
+            "--seed", str(seed)])
+    rc, _ = run(cmd, a.out, plog)
+    with open(plog, errors="replace") as f:
+        log = f.read()
+    return seed, (fmax_of_log(log) if rc == 0 else None)
+
+
+def parse_seeds(text):
+    """'1-8' or '1,3,5' (or a mix) -> sorted list of distinct seeds >= 1."""
+    seeds = set()
+    for part in text.split(","):
+        part = part.strip()
+        if not part:
+            continue
+        if "-" in part:
+            lo, hi = part.split("-", 1)
+            if not (lo.isdigit() and hi.isdigit()) or int(lo) < 1 or int(hi) < int(lo) or int(hi) - int(lo) > 99:
+                raise ValueError(f"bad seed range '{part}'")
+            seeds.update(range(int(lo), int(hi) + 1))
+        elif part.isdigit() and int(part) >= 1:
+            seeds.add(int(part))
+        else:
+            raise ValueError(f"bad seed '{part}'")
+    if not seeds:
+        raise ValueError("no seed")
+    return sorted(seeds)
+
+
+def sweep_table(mods, results, seeds, a):
+    """P&R of every module's harness at each seed (the synthesised netlist of --seed reused):
+    min / median / max fmax per module, and every seed's figure."""
+    jobs = []
+    fm = {m: {} for m in mods}
+    for m in mods:
+        r = results[m]
+        for sd in seeds:
+            if sd == a.seed and isinstance(r.get("fmax"), str) and re.match(r"^[0-9.]+$", r["fmax"]):
+                fm[m][sd] = float(r["fmax"])
+            elif r.get("wjson"):
+                jobs.append((m, sd))
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        futs = {ex.submit(sweep_seed, m, results[m]["wjson"], sd, a): m for m, sd in jobs}
+        for fu in concurrent.futures.as_completed(futs):
+            sd, f = fu.result()
+            fm[futs[fu]][sd] = f
+    head = ["block", "seeds", "min MHz", "median MHz", "max MHz", f"below {a.freq:g} MHz"] + [f"s{sd}" for sd in seeds]
+    rows = []
+    for m in mods:
+        vals = [fm[m].get(sd) for sd in seeds]
+        ok = sorted(v for v in vals if v is not None)
+        if ok:
+            med = ok[len(ok) // 2] if len(ok) % 2 else (ok[len(ok) // 2 - 1] + ok[len(ok) // 2]) / 2
+            stats = [f"{ok[0]:.1f}", f"{med:.1f}", f"{ok[-1]:.1f}", str(sum(1 for v in ok if v < a.freq))]
+        else:
+            stats = ["n/a"] * 4
+        rows.append([m, str(len(seeds))] + stats + [("n/a" if v is None else f"{v:.1f}") for v in vals])
+    widths = [max(len(h), *(len(x[i]) for x in rows)) for i, h in enumerate(head)]
+    lines = ["| " + " | ".join(h.ljust(widths[i]) for i, h in enumerate(head)) + " |",
+             "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
+    for x in rows:
+        lines.append("| " + " | ".join(v.rjust(widths[i]) if i else v.ljust(widths[i])
+                                        for i, v in enumerate(x)) + " |")
+    lines.append("")
+    lines.append(f"Seed sweep: nextpnr-ice40 of each block's harness netlist at seeds {seeds[0]}..{seeds[-1]}"
+                 f" ({len(seeds)} seeds), --freq {a.freq:g}; the netlist is synthesised once.")
+    return "\n".join(lines), fm
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--build", default="build", help="build directory holding lutgen")
@@ -266,9 +352,18 @@ def main():
                     help="extra synth_ice40 options (e.g. '-abc9'); the judge (make synth, synth_check) uses none")
     ap.add_argument("--no-generic", action="store_true", help="skip the generic (technology-free) synthesis")
     ap.add_argument("--limits", help="CSV of limits per module (rtl_ref/synth_limits.csv); exit 1 on a violation")
+    ap.add_argument("--seeds", help="seed sweep after the report: e.g. 1-8 or 1,3,5 (P&R of the same netlist at each)")
     ap.add_argument("--keep-taps", action="store_true",
                     help="laserax_top with DEBUG_TAPS = 1, its debug taps connected to the P&R harness")
     a = ap.parse_args()
+    seeds = None
+    if a.seeds is not None:
+        try:
+            seeds = parse_seeds(a.seeds)
+        except ValueError as e:
+            sys.exit(f"synth_report: --seeds: {e}")
+        if a.no_pnr:
+            sys.exit("synth_report: --seeds needs place and route (not with --no-pnr)")
     a.out = os.path.abspath(a.out)
     os.makedirs(a.out, exist_ok=True)
     lutgen = os.path.join(os.path.abspath(a.build), "lutgen")
@@ -329,6 +424,12 @@ def main():
     print(text)
     with open(os.path.join(a.out, "synth_report.md"), "w") as f:
         f.write(text + "\n")
+    if seeds:
+        stext, _ = sweep_table(mods, results, seeds, a)
+        print()
+        print(stext)
+        with open(os.path.join(a.out, "synth_sweep.md"), "w") as f:
+            f.write(stext + "\n")
     if a.limits:
         sys.exit(check_limits(a.limits, results))
 
