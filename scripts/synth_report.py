@@ -257,6 +257,17 @@ def do_module(m, a):
     return r
 
 
+def md_table(head, rows):
+    """Markdown table lines: the first column left-aligned, the others right-aligned."""
+    widths = [max(len(h), *(len(x[i]) for x in rows)) for i, h in enumerate(head)]
+    lines = ["| " + " | ".join(h.ljust(widths[i]) for i, h in enumerate(head)) + " |",
+             "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
+    for x in rows:
+        lines.append("| " + " | ".join(v.rjust(widths[i]) if i else v.ljust(widths[i])
+                                        for i, v in enumerate(x)) + " |")
+    return lines
+
+
 def fmax_of_log(log):
     """The harness clock's fmax after routing from a nextpnr log, or None."""
     fm = [f for c, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s*([0-9.]+) MHz", log)
@@ -326,12 +337,7 @@ def sweep_table(mods, results, seeds, a):
         else:
             stats = ["n/a"] * 4
         rows.append([m, str(len(seeds))] + stats + [("n/a" if v is None else f"{v:.1f}") for v in vals])
-    widths = [max(len(h), *(len(x[i]) for x in rows)) for i, h in enumerate(head)]
-    lines = ["| " + " | ".join(h.ljust(widths[i]) for i, h in enumerate(head)) + " |",
-             "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
-    for x in rows:
-        lines.append("| " + " | ".join(v.rjust(widths[i]) if i else v.ljust(widths[i])
-                                        for i, v in enumerate(x)) + " |")
+    lines = md_table(head, rows)
     lines.append("")
     lines.append(f"Seed sweep: nextpnr-ice40 of each block's harness netlist at seeds {seeds[0]}..{seeds[-1]}"
                  f" ({len(seeds)} seeds), --freq {a.freq:g}; the netlist is synthesised once.")
@@ -399,12 +405,7 @@ def main():
                      str(r.get("bram", "")), str(r.get("dsp", "")),
                      str(r.get("fmax", "not run" if a.no_pnr else "")), str(r.get("near", "")),
                      str(r.get("lc", ""))])
-    widths = [max(len(h), *(len(x[i]) for x in rows)) for i, h in enumerate(head)]
-    lines = ["| " + " | ".join(h.ljust(widths[i]) for i, h in enumerate(head)) + " |",
-             "|" + "|".join("-" * (w + 2) for w in widths) + "|"]
-    for x in rows:
-        lines.append("| " + " | ".join(v.rjust(widths[i]) if i else v.ljust(widths[i])
-                                        for i, v in enumerate(x)) + " |")
+    lines = md_table(head, rows)
     notes = [
         "",
         f"yosys synth_ice40 / nextpnr-ice40 {' '.join(DEVICES[a.device]['nextpnr'])}, --freq {a.freq:g}, seed {a.seed}.",
