@@ -172,7 +172,7 @@ MUTATIONS=(
   "rep_b_bwd|rephase.v|rephase|s/{1'b0, period_x\[W_CZ-1:0\] ^ {W_CZ{bwd_x}}} + {{W_CZ{1'b0}}, bwd_x};/{1'b0, period_x[W_CZ-1:0] ^ {W_CZ{bwd_x}}};/"
   "rep_bs_carry|rephase.v|rephase|s/{{(W_POS-W_CZ-1){1'b0}}, bs_c_q};/{(W_POS-W_CZ){1'b0}};/"
   "rep_z|rephase.v|rephase|s/z_hom  = b_add(bs_q, bs_pm_q, p4_x/z_hom  = b_add(bs_q, bs_pm_q, mark_len_x/"
-  "rep_osd_lag|rephase.v|rephase|s/(!i_rst \&\& lag_n\[1\]) : i_pstep_nx\[1\];/(!i_rst \&\& lag_q[1]) : i_pstep_nx[1];/"
+  "rep_osd_lag|rephase.v|rephase|s/(!i_rst \&\& xs_nx \&\& lag_n\[1\]) : i_pstep_nx\[1\];/(!i_rst \&\& xs_nx \&\& lag_q[1]) : i_pstep_nx[1];/"
   "rep_h_flag|rephase.v|rephase_adj|s/(h || w0 == p2m1)/(h || w0 == p2)/"
   "rep_dm_mode|rephase.v|rephase_adj|s/fwd_last_d ? z0_n : h_n};/fwd_last_d ? z0_n : h};/"
   "rep_mark_len|rephase.v|rephase|s/wire        mp_n   = u_m1 || (u_hz \&\& u_lt);/wire        mp_n   = u_m1 || (u_hz \&\& u_le1);/"
