@@ -215,7 +215,12 @@ int main(int argc, char** argv) {
     }
     res.check(homed_once, "the axis never homed");
     res.check(flips >= 5, "fewer than 5 bank flips: " + std::to_string(flips));
-    res.check(drained_checks >= 10, "fewer than 10 drained checks: " + std::to_string(drained_checks));
+    // (the scenario is random in its timing: a run of 200000 calls, the -O0 build's, has 2-29
+    // drained dwells over seeds 1-9 (issue 36's slower referencing window moved them), so a
+    // short run must see one, the full run ten)
+    const long long min_drained = cycles >= 1000000 ? 10 : 1;
+    res.check(drained_checks >= min_drained, "fewer than " + std::to_string(min_drained) +
+                                                 " drained checks: " + std::to_string(drained_checks));
     res.check(corr_rows >= cycles / 10, "corr was non-zero in only " + std::to_string(corr_rows) + " calls");
     res.check(cfg_err_rows > 0, "no map_cfg_err window");
     res.check(sensor_updates >= cycles / 40000, "too few sensor updates: " + std::to_string(sensor_updates));
