@@ -268,15 +268,15 @@ std::string dual_axis::step(const lx::axis_pins& p) {
 std::string dual_axis::pin_spacing(bool qa, bool qb) {
     const int64_t pm = static_cast<int64_t>(f_.pace_m);
     const int64_t gap_now = pm == 0 ? 65536 : (pm < 2 ? 2 : pm);  // the pacer's gap (DESIGN 4.4)
-    int64_t ring_min = gap_now;
-    for (int i = 0; i < 8; ++i) {
-        if (m_ring_[i] != 0 && m_ring_[i] < ring_min) ring_min = m_ring_[i];
-    }
-    for (int i = 7; i > 0; --i) m_ring_[i] = m_ring_[i - 1];
-    m_ring_[0] = gap_now;
+    m_ring_[m_pos_] = gap_now;  // (a ring of the last 8 calls; its minimum only at a change)
+    m_pos_ = (m_pos_ + 1) & 7u;
     if (gap_now < m_min_) m_min_ = gap_now;
     std::string m;
     if (q_have_ && (qa != q_a_ || qb != q_b_)) {
+        int64_t ring_min = gap_now;
+        for (const int64_t g : m_ring_) {
+            if (g != 0 && g < ring_min) ring_min = g;
+        }
         const uint64_t gap = calls_ - q_last_;
         if (q_changed_ && static_cast<int64_t>(gap) < m_min_)
             m = "integrity: qa/qb changed " + std::to_string(gap) + " calls after the previous change (pace_m gap " +
@@ -309,6 +309,7 @@ std::string dual_axis::integrity() {
         hist_n_ = 0;
         q_have_ = false;
         q_changed_ = false;
+        for (int64_t& g : m_ring_) g = 0;  // the gaps in force before the restart do not count
         cc_hist_[0] = cc_hist_[1] = cc_hist_[2] = 0;
         settled_ = 0;
     } else {

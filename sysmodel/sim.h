@@ -168,7 +168,8 @@ private:
     bool q_a_ = false, q_b_ = false;    // qa/qb of the previous call
     uint64_t q_last_ = 0;               // call of the last change
     int64_t m_min_ = 0;                 // least pace_m (as a gap) since 8 calls before it
-    int64_t m_ring_[8] = {};            // the gaps of the last 8 calls
+    int64_t m_ring_[8] = {};            // the gaps of the last 8 running calls (0: none yet)
+    unsigned m_pos_ = 0;                // next slot of the ring
     std::string pin_spacing(bool qa, bool qb);
     // register stage (DESIGN 4.7): the settings presented in a call are in force in the next one
     axis_settings f_{};          // settings in force in the current call (presented in the previous)
