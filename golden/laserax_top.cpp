@@ -6,6 +6,25 @@
 
 namespace golden {
 
+namespace {
+
+// DESIGN 4.7, digital pins: qa/qb of (out_pos + ab_rot) mod 4 (true modulo), 0->(0,0), 1->(1,0),
+// 2->(1,1), 3->(0,1); qz the index or, with qz_window, the mark; q_oe = !(hiz_alarm && alarm)
+// (o.alarm already formed)
+void pin_levels(axis_out& o, int64_t out_pos, bool mark, bool index, int64_t pin_cfg) {
+    const bool qz_window = (pin_cfg & 1) != 0;
+    const int64_t ab_rot = (pin_cfg >> 1) & 3;
+    const bool hiz_alarm = (pin_cfg & 8) != 0;
+    const int64_t qi = (((out_pos + ab_rot) % 4) + 4) % 4;
+    o.qa = qi == 1 || qi == 2;
+    o.qb = qi == 2 || qi == 3;
+    o.qz = qz_window ? mark : index;
+    o.ref_mark = mark;
+    o.q_oe = !(hiz_alarm && o.alarm);
+}
+
+}  // namespace
+
 bool config_ok(const axis_regs& r) {
     const int64_t P = r.period;
     // Reading: only the conditions listed in DESIGN 4.7 are checked; register values are taken
@@ -61,6 +80,7 @@ axis_out laserax_top::run(const axis_pins& pins) {
         powered_ = true;
         reset();
         o.stage = 1;
+        o.q_oe = true;  // no alarm (cfg_err = 0 in the power-up call)
         return o;
     }
     // DESIGN 4.7: ratio and comp_offset in force are loaded in every call without comp_sync,
@@ -83,6 +103,7 @@ axis_out laserax_top::run(const axis_pins& pins) {
         o.cfg_err = true;
         o.alarm = true;
         o.stage = 1;
+        pin_levels(o, 0, false, false, regs.pin_cfg);
         return o;
     }
 
@@ -120,11 +141,6 @@ axis_out laserax_top::run(const axis_pins& pins) {
     // digital outputs from the rephase output of call t - 3: index = out_pos mod 4 (true modulo),
     // 0->(0,0), 1->(1,0), 2->(1,1), 3->(0,1)
     const rephase::out& rep_quad = rep_past_.at(L::OUT_QUAD);
-    const int64_t qi = ((rep_quad.out_pos % 4) + 4) % 4;
-    o.qa = qi == 1 || qi == 2;
-    o.qb = qi == 2 || qi == 3;
-    o.qz = rep_quad.mark;
-    o.ref_mark = rep_quad.mark;
 
     o.cfg_err = false;
     o.stage = rep_o.stage;
@@ -138,6 +154,9 @@ axis_out laserax_top::run(const axis_pins& pins) {
     o.map_cfg_err = emap_o.cfg_err;
     o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.ovs_backlog_st || o.cfg_err || o.map_cfg_err ||
               o.dac_clip_st;
+    // the index of rephase has one call more latency than its mark (DESIGN 4.5 step 5), so
+    // qz's index is the rephase index of call t - 2 (the index test of call t - 3)
+    pin_levels(o, rep_quad.out_pos, rep_quad.mark, rep_past_.at(L::OUT_QUAD - 1).index, regs.pin_cfg);
 
     o.raw_count = dec_o.raw_count;
     o.step = dec_o.step;

@@ -50,6 +50,8 @@ struct axis_regs {
     bool tbl_we = false;
     bool rehome = false;
     bool clear = false;
+    // digital pins (DESIGN 4.7): bit 0 qz_window, bits 2:1 ab_rot, bit 3 hiz_alarm
+    int64_t pin_cfg = 8;
     error_map_regs emap;  // map_en, bank_sel, geometries, table write port; reset: disabled
 };
 
@@ -60,6 +62,7 @@ struct axis_pins {
 struct axis_out {
     int64_t sin, cos;
     bool ref_mark, qa, qb, qz;
+    bool q_oe;  // A/B/Z driver enable: !(hiz_alarm && alarm)
     bool cfg_err;
     int stage;
     bool homed, lerr_alarm, illegal_st;

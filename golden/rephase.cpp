@@ -24,6 +24,8 @@ void rephase::reset() { *this = rephase{}; }
 rephase::out rephase::step(int pstep, bool slot, bool sw, bool sw_valid, bool rehome, bool unhome,
                            int64_t period, int64_t mark_len) {
     const int64_t P = period;
+    // 5. index: the test of the previous call's registers (before this call's update)
+    const bool index = stage_ == 3 && paced_ == z_;
 
     // 1. paced stream. Reading: dir_last' = pstep with pstep in {-1, +1} (stored as its sign).
     paced_ += pstep;
@@ -91,7 +93,7 @@ rephase::out rephase::step(int pstep, bool slot, bool sw, bool sw_valid, bool re
     // 4. mark: closed interval between b' and c' (either order)
     const bool mark = stage_ == 3 && paced_ >= std::min(b_, c_) && paced_ <= std::max(b_, c_);
 
-    return out{ostep, out_pos, mark, stage_, a_, d_, b_, c_, z_, adj_, stage_ == 3};
+    return out{ostep, out_pos, mark, index, stage_, a_, d_, b_, c_, z_, adj_, stage_ == 3};
 }
 
 }  // namespace golden

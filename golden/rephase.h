@@ -19,6 +19,7 @@ public:
         int ostep;        // output count of this call: -1, 0, +1
         int64_t out_pos;  // paced' + adj'
         bool mark;        // stage' == 3 && paced' in [b', c'] (closed)
+        bool index;       // stage == 3 && paced == z of the previous call (DESIGN 4.5 step 5)
         int stage;        // 1..3
         int64_t a, d, b, c;  // registers (0 at reset, updated when set)
         int64_t z;        // b + dir*P/4, set at homing (0 before the first homing, then kept)

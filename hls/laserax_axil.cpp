@@ -52,6 +52,7 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::sint<24> map_data,
                  bool comp_sync,
                  bool comp_commit,
+                 lx::uint<4> pin_cfg,
                  lx::axis_out& out) {
 #pragma HLS INTERFACE mode=s_axilite port=return bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=a
@@ -88,6 +89,7 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
 #pragma HLS INTERFACE mode=s_axilite port=map_data offset=0x110 bundle=ctrl
 #pragma HLS INTERFACE mode=s_axilite port=comp_sync offset=0x118 bundle=ctrl
 #pragma HLS INTERFACE mode=s_axilite port=comp_commit offset=0x120 bundle=ctrl
+#pragma HLS INTERFACE mode=s_axilite port=pin_cfg offset=0x128 bundle=ctrl
 #pragma HLS INTERFACE mode=ap_none port=out
 #pragma HLS AGGREGATE variable=out
 #pragma HLS PIPELINE II=1 style=frp
@@ -128,6 +130,7 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
     regs.emap.data = map_data;
     regs.comp_sync = comp_sync;
     regs.comp_commit = comp_commit;
+    regs.pin_cfg = pin_cfg;
     out = core.step(pins, regs);
 #if !LASERAX_HLS_DEBUG_TAPS
     // the debug taps dropped (laserax_axil.h): constant 0, as DEBUG_TAPS = 0 ties them in rtl_ref

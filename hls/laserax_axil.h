@@ -53,6 +53,7 @@ void laserax_axil(bool a, bool b, bool sw, bool lerr,
                  lx::sint<24> map_data,
                  bool comp_sync,
                  bool comp_commit,
+                 lx::uint<4> pin_cfg,
                  lx::axis_out& out);
 
 #endif  // LASERAX_HLS_LASERAX_AXIL_H

@@ -14,8 +14,8 @@ namespace lx {
 namespace regmap {
 
 constexpr unsigned FIRST_OFFSET = 0x10;  // first register
-constexpr unsigned END_OFFSET = 0x128;    // one past the last word (the last reserved word)
-constexpr int N_REGS = 30;
+constexpr unsigned END_OFFSET = 0x130;    // one past the last word (the last reserved word)
+constexpr int N_REGS = 31;
 
 // period: 0x10, 13 bits unsigned, rw, reset 256
 constexpr unsigned PERIOD_OFFSET = 0x10;
@@ -197,6 +197,12 @@ constexpr int COMP_COMMIT_WIDTH = 1;
 constexpr int COMP_COMMIT_WORDS = 1;
 constexpr bool COMP_COMMIT_SIGNED = false;
 constexpr long long COMP_COMMIT_RESET = 0LL;
+// pin_cfg: 0x128, 4 bits unsigned, rw, reset 8
+constexpr unsigned PIN_CFG_OFFSET = 0x128;
+constexpr int PIN_CFG_WIDTH = 4;
+constexpr int PIN_CFG_WORDS = 1;
+constexpr bool PIN_CFG_SIGNED = false;
+constexpr long long PIN_CFG_RESET = 8LL;
 
 // Width and signedness of a member type: lx::sint<W> / lx::uint<W> on both back ends (own classes
 // and ap_int), bool = 1 bit unsigned; is_lx is false for any other type.
@@ -279,6 +285,8 @@ static_assert(member_is<LX_REGMAP_MEMBER(comp_sync)>(COMP_SYNC_WIDTH, COMP_SYNC_
               "lx::axis_regs::comp_sync is not bool (register comp_sync)");
 static_assert(member_is<LX_REGMAP_MEMBER(comp_commit)>(COMP_COMMIT_WIDTH, COMP_COMMIT_SIGNED),
               "lx::axis_regs::comp_commit is not bool (register comp_commit)");
+static_assert(member_is<LX_REGMAP_MEMBER(pin_cfg)>(PIN_CFG_WIDTH, PIN_CFG_SIGNED),
+              "lx::axis_regs::pin_cfg is not lx::uint<4> (register pin_cfg)");
 #undef LX_REGMAP_MEMBER
 
 }  // namespace regmap

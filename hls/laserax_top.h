@@ -34,12 +34,12 @@
 #if !defined(__SYNTHESIS__) && !defined(LASERAX_USE_AP_TYPES) && !defined(LASERAX_USE_AC_TYPES)
 #include <cstring>
 namespace lx {
-// Byte equality of two objects of a size that is a multiple of 16 (GCC / Clang: inline 16-byte
-// compares, b 16-byte aligned; std::memcmp elsewhere).
+// Byte equality of two objects of a size that is a multiple of 8 (GCC / Clang: inline 16-byte
+// compares and one 8-byte compare of an odd tail, b 16-byte aligned; std::memcmp elsewhere).
 template <typename T>
 inline bool same_bytes16(const T& a, const T& b) {
 #if defined(__GNUC__) || defined(__clang__)
-    static_assert(sizeof(T) % 16 == 0, "same_bytes16: size a multiple of 16");
+    static_assert(sizeof(T) % 8 == 0, "same_bytes16: size a multiple of 8");
     typedef signed char v16 __attribute__((vector_size(16)));
     const char* pa = reinterpret_cast<const char*>(&a);
     const v16* pb = static_cast<const v16*>(__builtin_assume_aligned(&b, 16));  // b: 16-byte aligned
@@ -52,7 +52,14 @@ inline bool same_bytes16(const T& a, const T& b) {
     }
     typedef long long v2 __attribute__((vector_size(16)));
     const v2 w = reinterpret_cast<v2>(eq);
-    return (w[0] & w[1]) == -1;
+    bool tail = true;
+    if (sizeof(T) % 16 != 0) {
+        unsigned long long ta, tb;
+        std::memcpy(&ta, pa + 16 * (sizeof(T) / 16), 8);
+        std::memcpy(&tb, reinterpret_cast<const char*>(&b) + 16 * (sizeof(T) / 16), 8);
+        tail = ta == tb;
+    }
+    return (w[0] & w[1]) == -1 && tail;
 #else
     return std::memcmp(&a, &b, sizeof(T)) == 0;
 #endif
@@ -100,6 +107,8 @@ struct axis_regs {
     bool rehome = false;
     bool clear = false;
     bool tbl_we = false;
+    // digital pins (DESIGN §4.7): bit 0 qz_window, bits 2:1 ab_rot, bit 3 hiz_alarm
+    uint<4> pin_cfg = 8;
     tbl_addr_t tbl_addr = 0;
     tbl_word_t tbl_data = 0;
     // position error map (docs/ERROR_MAP.md §8): map_en, bank_sel, the two bank geometries and
@@ -114,6 +123,7 @@ struct axis_pins {
 struct axis_out {
     dac_t sin = 0, cos = 0;
     bool ref_mark = false, qa = false, qb = false, qz = false;
+    bool q_oe = false;  // A/B/Z driver enable: !(hiz_alarm && alarm)
     // status
     bool cfg_err = false;
     rephase_cfg::stage_t stage = 0;
@@ -195,7 +205,7 @@ public:
         out_ = axis_out{};
         lerr_q_ = false;
         slot_q_ = false;
-        dig_q1_ = dig_tap{};  // the levels of out_pos = 0, mark = 0
+        dig_q1_ = dig_tap{};  // out_pos mod 4 = 0, mark = index = 0
         dig_q2_ = dig_tap{};
         dig_q3_ = dig_tap{};
     }
@@ -279,7 +289,7 @@ private:
         if (powered_) {
             run(pins, regs_q_);
         } else {
-            safe_out(false);  // power-up call: no registers in force, every block in reset
+            safe_out(false, axis_regs{}.pin_cfg);  // power-up call: no registers in force, every block in reset
             powered_ = true;
         }
         tblw_q_ = regs_q_.tbl_we;  // the table write in force in this call (false in the power-up call)
@@ -289,10 +299,11 @@ private:
     // outputs of a call in which the chain does not run (out_ holds the inter-block registers of
     // the reset, every field 0 / false): stage 1; cfg_err and alarm set in the safe state
     // (invalid configuration), not in the power-up call
-    void safe_out(bool cfg_err) {
+    void safe_out(bool cfg_err, uint<4> pin_cfg) {
         out_.cfg_err = cfg_err;
         out_.alarm = cfg_err;
         out_.stage = 1;
+        pin_levels(out_, dig_tap{}, pin_cfg);
     }
 
     // one call of the chain on the registers in force; its outputs in out_, whose block outputs
@@ -327,7 +338,7 @@ private:
                 // (the error map's write port runs on through the reset, one write per call at
                 // most: a write already in its delay line lands in its own call, rtl_ref i_rst)
                 emap_.step_reset_port();
-                safe_out(true);
+                safe_out(true, regs.pin_cfg);
                 return;
             }
         }
@@ -350,12 +361,10 @@ private:
         if (regs.clear) o.dac_clip_st = false;
         o.sin = clamp_dac(dds.sin, chk_q_.dac_hi, chk_q_.dac_lo);
         o.cos = clamp_dac(dds.cos, chk_q_.dac_hi, chk_q_.dac_lo);
-        // digital outputs from the rephase outputs of call t-3 (their levels, formed in the call
-        // that produced them and shifted through two taps)
-        o.ref_mark = dig_q3_.ref_mark;
-        o.qa = dig_q3_.qa;
-        o.qb = dig_q3_.qb;
-        o.qz = dig_q3_.qz;
+        // digital outputs from the rephase outputs of call t-3 (out_pos mod 4 and mark; the index,
+        // one call later in rephase, of call t-2), shifted through two taps: pin_levels below,
+        // once the alarm of the call is formed
+        const dig_tap dig = dig_q3_;
         // error map: indexed by the uncorrected comp of the previous call, active only while the
         // rephase of the previous call was homed; its delta is the pacer's second addend, summed
         // in the pacer's carry-save layer, so no adder precedes the pacer (L_MAP = 50 calls of map
@@ -370,7 +379,9 @@ private:
             rep_.step(o.pstep, slot_q_, swf_.level(), swf_.valid(), regs.rehome, lerr_q_, regs.period, regs.mark_len);
         dig_q3_ = dig_q2_;
         dig_q2_ = dig_q1_;
-        dig_q1_ = dig_levels(rep.out_pos, rep.mark);
+        dig_q2_.index = rep.index;  // (rtl_ref: rep_idx3_q, one stage fewer than out_pos, mark)
+        dig_q1_.pos = rep.out_pos;
+        dig_q1_.mark = rep.mark;
         o.ostep = rep.ostep;
         o.out_pos = rep.out_pos;
         o.rep_mark = rep.mark;
@@ -406,6 +417,7 @@ private:
         swf_.step(pins.sw, regs.sw_debounce);  // (its outputs f, valid: the registers level(), valid())
         // alarm: every alarm flag of the call (cfg_err is false in a call that runs the blocks)
         o.alarm = o.lerr_alarm || o.illegal_st || o.ovs_edge_st || o.map_cfg_err || o.dac_clip_st || o.ovs_backlog_st;
+        pin_levels(o, dig, regs.pin_cfg);
     }
 
 private:
@@ -422,17 +434,19 @@ private:
     axis_out out_{};
     bool lerr_q_ = false;  // decoder lerr (the rephase's unhome), not an output
     bool slot_q_ = false;  // pacer slot (the rephase's slot), not an output
-    // the digital outputs of the rephase outputs out_pos, mark of a call (quad_levels of out_pos,
-    // mark twice), in axis_out's order
+    // the rephase outputs behind the digital pins: out_pos mod 4, mark, index
     struct dig_tap {
-        bool ref_mark = false, qa = false, qb = false, qz = false;
+        uint<2> pos = 0;
+        bool mark = false, index = false;
     };
-    static dig_tap dig_levels(pos_t out_pos, bool mark) {
-        dig_tap d;
-        quad_levels(out_pos, d.qa, d.qb);
-        d.ref_mark = mark;
-        d.qz = mark;
-        return d;
+    // the digital pins of a call (DESIGN §4.7): qa/qb of (pos + ab_rot) mod 4, qz the index or
+    // (qz_window) the mark, ref_mark the mark, q_oe = !(hiz_alarm && alarm) (o.alarm formed)
+    static void pin_levels(axis_out& o, const dig_tap& d, uint<4> pin_cfg) {
+        const uint<2> rot = pin_cfg >> 1;
+        quad_levels(pos_t(uint<2>(d.pos + rot)), o.qa, o.qb);
+        o.qz = (pin_cfg & 1) != 0 ? d.mark : d.index;
+        o.ref_mark = d.mark;
+        o.q_oe = !((pin_cfg & 8) != 0 && o.alarm);
     }
     // of the rephase outputs in out_ (call t-1), and of calls t-2, t-3
     dig_tap dig_q1_, dig_q2_, dig_q3_;

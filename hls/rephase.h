@@ -80,6 +80,7 @@ public:
         step_t ostep = 0;
         pos_t out_pos = 0;
         bool mark = false;
+        bool index = false;  // mark && w == P/4 of the previous call (DESIGN 4.5 step 5)
         cfg::stage_t stage = 0;
         pos_t a = 0, b = 0, c = 0, z = 0, adj = 0;
         cfg::ph_t d = 0;
@@ -98,6 +99,9 @@ public:
         const bool in3 = stage_ == cfg::STAGE_HOMED && !leave;
         const cfg::p_t len_prev = len_;
         const step_t s = fwd_ ? pstep : step_t(-pstep);  // step in the homing direction
+        // 7. index: the register of the mark and the output phase of the previous call, w == P/4
+        //    at Z only inside [B, C] (DESIGN 4.5, Hardware form)
+        idx_ = mark_ && w_ == cfg::ph_t(pp >> 2);
 
         // 1. taps: real position, direction of the last real count
         paced_ = paced_ + pstep;
@@ -254,6 +258,7 @@ private:
         o.ostep = ostep;
         o.out_pos = out_pos_;
         o.mark = mark;
+        o.index = idx_;
         o.stage = cfg::stage_t(static_cast<unsigned>(stage_));
         o.a = a_;
         o.b = b_;
@@ -376,6 +381,7 @@ private:
     pos_t u_ = 0;
     cfg::p_t len_ = 0;
     bool mark_ = false;        // the mark
+    bool idx_ = false;         // the index (mark && w == P/4 of the call before)
     bool mp_ = false;     // the mark tests of a forward / backward count in the next call
     bool mn_ = false;
     pos_t b_ = 0;

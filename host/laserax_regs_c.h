@@ -11,8 +11,8 @@
 #define LASERAX_REGS_C_H
 
 #define LASERAX_REG_FIRST_OFFSET 0x10u
-#define LASERAX_REG_END_OFFSET 0x128u
-#define LASERAX_REG_COUNT 30
+#define LASERAX_REG_END_OFFSET 0x130u
+#define LASERAX_REG_COUNT 31
 
 /* period: sin/cos period P (20 um = 256 counts); a change while running restarts the chain (one safe-state call). Bad value: outside 8..4096, not a multiple of 8, != tbl_period or mark_len outside period/4..period -> cfg_err (safe state) */
 #define LASERAX_REG_PERIOD_OFFSET 0x10u
@@ -224,6 +224,12 @@
 #define LASERAX_REG_COMP_COMMIT_WORDS 1
 #define LASERAX_REG_COMP_COMMIT_SIGNED 0
 #define LASERAX_REG_COMP_COMMIT_RESET 0LL
+/* pin_cfg: digital output pins (DESIGN 4.7, docs/CONTROLLER.md): bit 0 qz_window (0: qz is the index, one quadrature state at the home point Z; 1: qz is the reference window B..C, as ref_mark); bits 2:1 ab_rot (qa/qb encode out_pos + ab_rot: the A/B levels of the index state are those of (P/8 + ab_rot) mod 4, (0,0) at 0 and (1,1) at 2 for P a multiple of 32); bit 3 hiz_alarm (1: q_oe, the A/B/Z driver enable, is low while alarm is set). Reset 8: index at Z, no rotation, drivers off on alarm. Bad value: none (every value legal); a wrong ab_rot moves the A/B state of the index, so a gated counter misses it (its rising edge ungated still homes at Z) */
+#define LASERAX_REG_PIN_CFG_OFFSET 0x128u
+#define LASERAX_REG_PIN_CFG_WIDTH 4
+#define LASERAX_REG_PIN_CFG_WORDS 1
+#define LASERAX_REG_PIN_CFG_SIGNED 0
+#define LASERAX_REG_PIN_CFG_RESET 8LL
 
 /* X-macro over every register: X(NAME, OFFSET, WIDTH, SIGNED, RESET) */
 #define LASERAX_REGS(X) \
@@ -256,6 +262,7 @@
     X(MAP_ADDR, 0x108u, 10, 0, 0LL) \
     X(MAP_DATA, 0x110u, 24, 1, 0LL) \
     X(COMP_SYNC, 0x118u, 1, 0, 0LL) \
-    X(COMP_COMMIT, 0x120u, 1, 0, 0LL)
+    X(COMP_COMMIT, 0x120u, 1, 0, 0LL) \
+    X(PIN_CFG, 0x128u, 4, 0, 8LL)
 
 #endif /* LASERAX_REGS_C_H */

@@ -54,6 +54,7 @@ int64_t get(const axis_settings& s, int i) {
         case idx::map_data: return static_cast<int64_t>(s.emap.data);
         case idx::comp_sync: return s.comp_sync ? 1 : 0;
         case idx::comp_commit: return s.comp_commit ? 1 : 0;
+        case idx::pin_cfg: return static_cast<int64_t>(s.pin_cfg);
         default: return 0;
     }
 }
@@ -91,6 +92,7 @@ bool set(axis_settings& s, int i, int64_t value) {
         case idx::map_data: assign(s.emap.data, value); return true;
         case idx::comp_sync: assign(s.comp_sync, value); return true;
         case idx::comp_commit: assign(s.comp_commit, value); return true;
+        case idx::pin_cfg: assign(s.pin_cfg, value); return true;
         default: return false;
     }
 }

@@ -51,6 +51,7 @@ struct axis_settings {
     } emap;
     bool comp_sync = false;  // comp_sync
     bool comp_commit = false;  // comp_commit
+    int64_t pin_cfg = 8LL;  // pin_cfg
 };
 
 namespace regmap {
@@ -77,9 +78,9 @@ struct reg_info {
     constexpr int words() const { return (width + 31) / 32; }
 };
 
-constexpr int kNumRegs = 30;
+constexpr int kNumRegs = 31;
 constexpr uint32_t kFirstOffset = 0x10;
-constexpr uint32_t kEndOffset = 0x128;  // one past the last word (the last reserved word)
+constexpr uint32_t kEndOffset = 0x130;  // one past the last word (the last reserved word)
 
 // Register indices (offset order).
 namespace idx {
@@ -113,6 +114,7 @@ constexpr int map_addr = 26;
 constexpr int map_data = 27;
 constexpr int comp_sync = 28;
 constexpr int comp_commit = 29;
+constexpr int pin_cfg = 30;
 }  // namespace idx
 
 // One table for the program in C++17 (an inline variable); a C++14 translation unit (the Vitis
@@ -184,6 +186,8 @@ LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
      "1: ratio and comp_offset take effect only in a clock with comp_commit = 1 (a bus host writes their words, then pulses comp_commit: no half-written value ever reaches the multiplier); 0: from the clock after they are written (register stage). Bad value: 1 without comp_commit pulses keeps the old ratio / comp_offset in force"},
     {"comp_commit", 0x120, 1, false, 0LL, access::pulse, "-", true, 0LL, 1LL, 1LL, check::none, "", "comp_commit", "comp_commit",
      "with comp_sync = 1: loads ratio and comp_offset into the multiplier in this clock (both together). Bad value: a commit between the words of a wide register loads a half-written value (host side: words first, then commit)"},
+    {"pin_cfg", 0x128, 4, false, 8LL, access::rw, "-", true, 0LL, 15LL, 1LL, check::none, "", "pin_cfg", "pin_cfg",
+     "digital output pins (DESIGN 4.7, docs/CONTROLLER.md): bit 0 qz_window (0: qz is the index, one quadrature state at the home point Z; 1: qz is the reference window B..C, as ref_mark); bits 2:1 ab_rot (qa/qb encode out_pos + ab_rot: the A/B levels of the index state are those of (P/8 + ab_rot) mod 4, (0,0) at 0 and (1,1) at 2 for P a multiple of 32); bit 3 hiz_alarm (1: q_oe, the A/B/Z driver enable, is low while alarm is set). Reset 8: index at Z, no rotation, drivers off on alarm. Bad value: none (every value legal); a wrong ab_rot moves the A/B state of the index, so a gated counter misses it (its rising edge ungated still homes at Z)"},
 };
 #undef LXT_REGMAP_INLINE_VAR
 

@@ -55,6 +55,7 @@ module laserax_axil #(
     output wire                              o_qa,
     output wire                              o_qb,
     output wire                              o_qz,
+    output wire                              o_q_oe,       // A/B/Z line driver enable (pin_cfg hiz_alarm)
     output wire                              o_cfg_err,
     output wire [`LX_W_STAGE-1:0]            o_stage,
     output wire                              o_homed,
@@ -104,6 +105,7 @@ module laserax_axil #(
     wire [10:0]        r_map_n0, r_map_n1;
     wire [9:0]         r_map_addr;
     wire signed [23:0] r_map_data;
+    wire [3:0]         r_pin_cfg;
 
     laserax_regs #(.ADDR_W(ADDR_W)) u_regs (
         .i_clk(i_clk), .i_rst(i_rst),
@@ -121,7 +123,7 @@ module laserax_axil #(
         .o_bank_sel(r_bank_sel), .o_map_origin0(r_map_origin0), .o_map_k0(r_map_k0), .o_map_n0(r_map_n0),
         .o_map_origin1(r_map_origin1), .o_map_k1(r_map_k1), .o_map_n1(r_map_n1), .o_map_we(r_map_we),
         .o_map_addr(r_map_addr), .o_map_data(r_map_data), .o_comp_sync(r_comp_sync),
-        .o_comp_commit(r_comp_commit));
+        .o_comp_commit(r_comp_commit), .o_pin_cfg(r_pin_cfg));
 
     laserax_top #(.INIT_FILE(INIT_FILE), .DEBUG_TAPS(DEBUG_TAPS)) u_top (
         .i_clk(i_clk), .i_rst(i_rst), .i_a(i_a), .i_b(i_b), .i_sw(i_sw), .i_lerr(i_lerr),
@@ -133,8 +135,8 @@ module laserax_axil #(
         .i_tbl_addr(r_tbl_addr), .i_tbl_data(r_tbl_data), .i_map_en(r_map_en), .i_bank_sel(r_bank_sel),
         .i_map_origin0(r_map_origin0), .i_map_k0(r_map_k0), .i_map_n0(r_map_n0),
         .i_map_origin1(r_map_origin1), .i_map_k1(r_map_k1), .i_map_n1(r_map_n1), .i_map_we(r_map_we),
-        .i_map_addr(r_map_addr), .i_map_data(r_map_data),
-        .o_sin(o_sin), .o_cos(o_cos), .o_ref_mark(o_ref_mark), .o_qa(o_qa), .o_qb(o_qb), .o_qz(o_qz),
+        .i_map_addr(r_map_addr), .i_map_data(r_map_data), .i_pin_cfg(r_pin_cfg),
+        .o_sin(o_sin), .o_cos(o_cos), .o_ref_mark(o_ref_mark), .o_qa(o_qa), .o_qb(o_qb), .o_qz(o_qz), .o_q_oe(o_q_oe),
         .o_cfg_err(o_cfg_err), .o_stage(o_stage), .o_homed(o_homed), .o_lerr_alarm(o_lerr_alarm),
         .o_illegal_st(o_illegal_st), .o_err_cnt(o_err_cnt), .o_ovs_edge_st(o_ovs_edge_st),
         .o_ovs_backlog_st(o_ovs_backlog_st), .o_glitch_st(o_glitch_st), .o_alarm(o_alarm), .o_dac_clip_st(o_dac_clip_st),

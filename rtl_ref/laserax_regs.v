@@ -17,7 +17,7 @@
 //           RVALID rises; it stays until the R handshake (RRESP = OKAY). A register word reads
 //           its bits with 0 above the register's width, signed registers too (as the Vitis HLS
 //           slave: sign-extend from the width in software).
-//   other   0x00..0x0F, the reserved word after each register and every address from 0x128 on
+//   other   0x00..0x0F, the reserved word after each register and every address from 0x130 on
 //           read 0 and ignore writes, with an OKAY response (no SLVERR). Address bits [1:0] are
 //           ignored. Pulse and table-port registers hold what the host wrote (the core acts on
 //           the level; nothing clears them).
@@ -26,7 +26,7 @@
 `default_nettype none
 
 module laserax_regs #(
-    // ADDR_W: byte address width, 9..32 (the map ends at 0x128); addresses past the map read 0
+    // ADDR_W: byte address width, 9..32 (the map ends at 0x130); addresses past the map read 0
     parameter integer ADDR_W = 12
 ) (
     input  wire              i_clk,
@@ -79,10 +79,11 @@ module laserax_regs #(
     output wire [9:0]         o_map_addr,        // 0x108 port, reset 0
     output wire signed [23:0] o_map_data,        // 0x110 port, reset 0
     output wire               o_comp_sync,       // 0x118 rw, reset 0
-    output wire               o_comp_commit      // 0x120 pulse, reset 0
+    output wire               o_comp_commit,     // 0x120 pulse, reset 0
+    output wire [3:0]         o_pin_cfg          // 0x128 rw, reset 8
 );
 
-    localparam integer MAP_ADDR_W = 9;       // byte address bits of the map (0x00 .. 0x127)
+    localparam integer MAP_ADDR_W = 9;       // byte address bits of the map (0x00 .. 0x12F)
     localparam integer WA_W       = ADDR_W - 2;  // word address bits
     localparam [1:0]   RESP_OKAY  = 2'b00;
 
@@ -127,6 +128,7 @@ module laserax_regs #(
     localparam [WA_W-1:0] A_MAP_DATA       = 68;  // 0x110: map_data
     localparam [WA_W-1:0] A_COMP_SYNC      = 70;  // 0x118: comp_sync
     localparam [WA_W-1:0] A_COMP_COMMIT    = 72;  // 0x120: comp_commit
+    localparam [WA_W-1:0] A_PIN_CFG        = 74;  // 0x128: pin_cfg
 
     // ---- write channel: address and data held until both are there -----------------------------
     reg              aw_full_q;                  // address accepted, data not yet
@@ -193,6 +195,7 @@ module laserax_regs #(
     reg  signed [23:0]  reg_map_data_q;
     reg                 reg_comp_sync_q;
     reg                 reg_comp_commit_q;
+    reg         [3:0]   reg_pin_cfg_q;
 
     // next state: the bytes of the addressed word that WSTRB selects, at the write edge; a write
     // to a reserved or unmapped word enables nothing
@@ -316,6 +319,8 @@ module laserax_regs #(
     wire reg_comp_sync_d = (wen_comp_sync && wr_strb[0]) ? wr_data[0] : reg_comp_sync_q;
     wire wen_comp_commit = wr_fire && wr_word == A_COMP_COMMIT;
     wire reg_comp_commit_d = (wen_comp_commit && wr_strb[0]) ? wr_data[0] : reg_comp_commit_q;
+    wire wen_pin_cfg = wr_fire && wr_word == A_PIN_CFG;
+    wire [3:0] reg_pin_cfg_d = (wen_pin_cfg && wr_strb[0]) ? wr_data[3:0] : reg_pin_cfg_q[3:0];
 
     // read data: the addressed word, 0 above the register's width; 0 for any other address
     wire [31:0] rdw_period           = {19'd0, reg_period_q};
@@ -352,6 +357,7 @@ module laserax_regs #(
     wire [31:0] rdw_map_data         = {8'd0, reg_map_data_q};
     wire [31:0] rdw_comp_sync        = {31'd0, reg_comp_sync_q};
     wire [31:0] rdw_comp_commit      = {31'd0, reg_comp_commit_q};
+    wire [31:0] rdw_pin_cfg          = {28'd0, reg_pin_cfg_q};
     reg [31:0] rd_word;
     always @* begin
         case (rd_addr)
@@ -389,6 +395,7 @@ module laserax_regs #(
             A_MAP_DATA:        rd_word = rdw_map_data;
             A_COMP_SYNC:       rd_word = rdw_comp_sync;
             A_COMP_COMMIT:     rd_word = rdw_comp_commit;
+            A_PIN_CFG:         rd_word = rdw_pin_cfg;
             default:           rd_word = 32'd0;
         endcase
     end
@@ -433,6 +440,7 @@ module laserax_regs #(
             reg_map_data_q <= 24'd0;
             reg_comp_sync_q <= 1'd0;
             reg_comp_commit_q <= 1'd0;
+            reg_pin_cfg_q <= 4'd8;
         end else begin
             aw_full_q <= aw_full_d;
             if (aw_hs) aw_word_q <= s_axil_awaddr[ADDR_W-1:2];
@@ -474,6 +482,7 @@ module laserax_regs #(
             reg_map_data_q <= reg_map_data_d;
             reg_comp_sync_q <= reg_comp_sync_d;
             reg_comp_commit_q <= reg_comp_commit_d;
+            reg_pin_cfg_q <= reg_pin_cfg_d;
         end
     end
 
@@ -507,6 +516,7 @@ module laserax_regs #(
     assign o_map_data = reg_map_data_q;
     assign o_comp_sync = reg_comp_sync_q;
     assign o_comp_commit = reg_comp_commit_q;
+    assign o_pin_cfg = reg_pin_cfg_q;
 
 endmodule
 

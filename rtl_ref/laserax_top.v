@@ -83,13 +83,16 @@ module laserax_top #(
     input  wire                              i_map_we,
     input  wire [`LX_EM_W_ADDR-1:0]          i_map_addr,
     input  wire signed [`LX_EM_W_CORR-1:0]   i_map_data,       // Q15.8 output counts
+    // digital pins (DESIGN 4.7): bit 0 qz_window, bits 2:1 ab_rot, bit 3 hiz_alarm; reset 8
+    input  wire [3:0]                        i_pin_cfg,
     // outputs
     output wire signed [`LX_W_DAC-1:0]       o_sin,
     output wire signed [`LX_W_DAC-1:0]       o_cos,
     output wire                              o_ref_mark,
     output wire                              o_qa,
     output wire                              o_qb,
-    output wire                              o_qz,
+    output wire                              o_qz,             // index at Z (or the window B..C: qz_window)
+    output wire                              o_q_oe,           // A/B/Z driver enable: !(hiz_alarm && alarm)
     // status
     output wire                              o_cfg_err,
     output wire [`LX_W_STAGE-1:0]            o_stage,
@@ -187,6 +190,9 @@ module laserax_top #(
     reg                 r_map_we;
     reg        [9:0]    r_map_addr;
     reg signed [23:0]   r_map_data;
+    // pin configuration: reset by i_rst to its reset value, so the power-up call (no registers in
+    // force) shows the default pins (qa = qb = 0 of ab_rot = 0, q_oe = 1)
+    reg        [3:0]    r_pin_cfg;
     // the DAC bound of the presented dac_width, by table (other widths fail the configuration
     // check; they give the 18-bit bound)
     reg  [17:0]         dac_hi_in;
@@ -229,6 +235,7 @@ module laserax_top #(
         r_map_we        <= i_map_we;
         r_map_addr      <= i_map_addr;
         r_map_data      <= i_map_data;
+        r_pin_cfg       <= i_rst ? 4'd8 : i_pin_cfg;
     end
 
     // ---- compensation registers in force (DESIGN 4.7): the pair in force in a call is loaded
@@ -360,7 +367,7 @@ module laserax_top #(
     // rephase outputs used by the error map (declared before use)
     wire signed [1:0]  rep_ostep;
     wire signed [37:0] rep_out_pos, rep_a, rep_b, rep_c, rep_z, rep_adj;
-    wire               rep_mark, rep_homed;
+    wire               rep_mark, rep_index, rep_homed;
     wire [1:0]         rep_stage;
     wire [11:0]        rep_d;
 
@@ -401,7 +408,7 @@ module laserax_top #(
         .i_rehome(r_rehome), .i_unhome(dec_lerr), .i_unhome_nx(dec_lerr_nx), .i_rehome_nx(i_rehome),
         .i_period(r_period), .i_period_m1(r_period_m1),
         .i_period_m2(r_period_m2), .i_mark_len(r_mark_len), .i_mark_len_n(r_mark_len_n),
-        .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_stage(rep_stage),
+        .o_ostep(rep_ostep), .o_out_pos(rep_out_pos), .o_mark(rep_mark), .o_index(rep_index), .o_stage(rep_stage),
         .o_a(rep_a), .o_d(rep_d), .o_b(rep_b), .o_c(rep_c), .o_z(rep_z), .o_adj(rep_adj),
         .o_homed(rep_homed));
 
@@ -421,30 +428,41 @@ module laserax_top #(
         .i_clip_hi(dac_hi_d), .o_sin_over(dds_sin_over), .o_cos_over(dds_cos_over));
 
     // ---- digital A/B/Z: rephase outputs of call t-3 ------------------------------------------
+    // (the rephase index is one call later than its mark, DESIGN 4.5 step 5: it enters at rep_q3)
     reg [1:0] rep_pos2_q, rep_pos3_q, out_pos2_q;   // out_pos mod 4: rep_q2, rep_q3, output stage
     reg       rep_mark2_q, rep_mark3_q, out_mark2_q;
+    reg       rep_idx3_q, out_z_q;                  // rephase index: rep_q3, output stage (qz)
     always @(posedge i_clk) begin
         if (blk_rst) begin
             rep_pos2_q  <= 2'd0;
             rep_mark2_q <= 1'b0;
             rep_pos3_q  <= 2'd0;
             rep_mark3_q <= 1'b0;
+            rep_idx3_q  <= 1'b0;
             out_pos2_q  <= 2'd0;
             out_mark2_q <= 1'b0;
+            out_z_q     <= 1'b0;
         end else begin
             rep_pos2_q  <= rep_out_pos[1:0];
             rep_mark2_q <= rep_mark;
             rep_pos3_q  <= rep_pos2_q;
             rep_mark3_q <= rep_mark2_q;
+            rep_idx3_q  <= rep_index;
             out_pos2_q  <= rep_pos3_q;
             out_mark2_q <= rep_mark3_q;
+            out_z_q     <= r_pin_cfg[0] ? rep_mark3_q : rep_idx3_q;   // qz_window in force
         end
     end
+    // ab_rot and hiz_alarm of call t for the outputs after its edge (r_pin_cfg then holds call
+    // t + 1's value); in the power-up call the reset value
+    reg [2:0] pin_o_q;
+    always @(posedge i_clk) pin_o_q <= r_pin_cfg[3:1];
 
-    // quadrature level of pos mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1)
-    assign o_qa     = out_pos2_q == 2'd1 || out_pos2_q == 2'd2;
-    assign o_qb     = out_pos2_q == 2'd2 || out_pos2_q == 2'd3;
-    assign o_qz     = out_mark2_q;
+    // quadrature level of (pos + ab_rot) mod 4: 0 -> (0,0), 1 -> (1,0), 2 -> (1,1), 3 -> (0,1)
+    wire [1:0] q_i  = out_pos2_q + pin_o_q[1:0];
+    assign o_qa     = q_i == 2'd1 || q_i == 2'd2;
+    assign o_qb     = q_i == 2'd2 || q_i == 2'd3;
+    assign o_qz     = out_z_q;
     assign o_ref_mark = out_mark2_q;
     // DAC range guard (DESIGN 4.7): the codes of call t are the DDS registers clamped to
     // +-(2^(dac_width-1) - 1) with the dac_width of call t; a clamp sets the sticky dac_clip_st
@@ -501,6 +519,7 @@ module laserax_top #(
     assign alarm_reg        = cfg_err_q || dec_lerr_alarm || dec_illegal_st || dec_ovs_st || pac_ovs_st ||
                               map_cfg_err;
     assign o_alarm          = alarm_reg || clip_st;
+    assign o_q_oe           = !(pin_o_q[2] && (alarm_reg || clip_st));
     assign o_map_cfg_err    = map_cfg_err;
 
     // ---- taps (DEBUG_TAPS = 1; else 0) -------------------------------------------------------

@@ -19,6 +19,8 @@
 //      count, 2 bits; 0 after a call with unhome or rehome: the leave drops it).
 //   6. mark = stage' == 3 && u' in [0, L], u = dir*(paced - B) counted from homing on (L =
 //      mark_len at homing; the test is made on u before the count, for each count direction).
+//   7. index = mark && w == P/4 of the call before (a register of registers: one count wide at
+//      the home point Z, latency one call more than mark; DESIGN 4.5 step 5).
 // Every path is one carry chain from registers plus a few LUT levels: 38 bits only for the
 // counters adj and u, whose steps are registers of their own (as_q, us_q, from the look-ahead);
 // A + dir*P in two parts over two calls (13 + 25 bits), C and Z as 13-bit adds and a select;
@@ -70,6 +72,7 @@ module rephase (
     output wire signed [`LX_W_STEP-1:0] o_ostep,     // output count: -1, 0, +1
     output wire signed [`LX_W_POS-1:0]  o_out_pos,   // paced + adj
     output wire                         o_mark,      // reference mark
+    output wire                         o_index,     // index: mark && w == P/4 of the call before
     output wire [`LX_W_STAGE-1:0]       o_stage,     // 1, 2, 3
     output wire signed [`LX_W_POS-1:0]  o_a,         // point A
     output wire [`LX_W_PH-1:0]          o_d,         // phase advance d in [0, P)
@@ -130,6 +133,7 @@ module rephase (
     reg signed [W_POS-1:0] b_q, b_d, c_q, c_d, z_q, z_d;
     reg signed [1:0]       ostep_q, ostep_d;
     reg                    mark_q, mark_d;
+    reg                    idx_q;              // index: mark_q && w_q == P/4 (the call before)
     reg                    mp_q, mn_q;         // u + 1 / u - 1 in [0, L], of the previous call
     reg                    sp_q, sn_q;         // s_pos / s_neg of this call, from i_pstep_nx
     reg                    pp_q, pn_q;         // pstep > 0 / < 0 in this call, from i_pstep_nx
@@ -560,6 +564,7 @@ module rephase (
             z_q        <= {W_POS{1'b0}};
             ostep_q    <= 2'sd0;
             mark_q     <= 1'b0;
+            idx_q      <= 1'b0;
             mp_q       <= 1'b0;
             mn_q       <= 1'b0;
         end else begin
@@ -610,6 +615,7 @@ module rephase (
             z_q        <= z_d;
             ostep_q    <= ostep_d;
             mark_q     <= mark_d;
+            idx_q      <= mark_q && w_q == {{(W_PH-W_P+2){1'b0}}, i_period[W_P-1:2]};
             mp_q       <= mp_n;
             mn_q       <= mn_n;
         end
@@ -637,6 +643,7 @@ module rephase (
     assign o_ostep   = ostep_q;
     assign o_out_pos = out_pos_q;
     assign o_mark    = mark_q;
+    assign o_index   = idx_q;
     assign o_stage   = stage_q;
     assign o_a       = a_q;
     assign o_d       = d_cur;

@@ -79,6 +79,7 @@ public:
                      lx::sint<24>(at(0x110)),  // map_data
                      at(0x118) != 0,  // comp_sync
                      at(0x120) != 0,  // comp_commit
+                     lx::uint<4>(at(0x128)),  // pin_cfg
                      out);
         return true;
     }
@@ -121,13 +122,14 @@ private:
             case 0x110: return 0xFFFFFFu;  // map_data
             case 0x118: return 0x1u;  // comp_sync
             case 0x120: return 0x1u;  // comp_commit
+            case 0x128: return 0xFu;  // pin_cfg
             default: return 0u;
         }
     }
     uint32_t at(uint32_t offset) const { return w_[(offset - 0x10u) / 4]; }
     uint64_t pair(uint32_t offset) const { return (uint64_t(at(offset + 4)) << 32) | at(offset); }
 
-    uint32_t w_[(0x128u - 0x10u) / 4] = {};  // the words 0x10 .. 0x124, 0 at power-up
+    uint32_t w_[(0x130u - 0x10u) / 4] = {};  // the words 0x10 .. 0x12C, 0 at power-up
     uint32_t ctrl_ = 0;                    // block control: stopped at power-up
 };
 

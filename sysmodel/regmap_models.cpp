@@ -51,6 +51,7 @@ int64_t get(const lx::axis_regs& r, int i) {
         case idx::map_data: return r.emap.data.to_int64();
         case idx::comp_sync: return r.comp_sync ? 1 : 0;
         case idx::comp_commit: return r.comp_commit ? 1 : 0;
+        case idx::pin_cfg: return static_cast<int64_t>(r.pin_cfg.to_uint64());
         default: return 0;
     }
 }
@@ -88,6 +89,7 @@ bool set(lx::axis_regs& r, int i, int64_t value) {
         case idx::map_data: r.emap.data = lx::sint<24>(value); return true;
         case idx::comp_sync: r.comp_sync = value != 0; return true;
         case idx::comp_commit: r.comp_commit = value != 0; return true;
+        case idx::pin_cfg: r.pin_cfg = lx::uint<4>(value); return true;
         default: return false;
     }
 }
@@ -122,6 +124,7 @@ bool get(const golden::axis_regs& r, int i, int64_t* value) {
         case idx::map_data: *value = static_cast<int64_t>(r.emap.data); return true;
         case idx::comp_sync: *value = static_cast<int64_t>(r.comp_sync); return true;
         case idx::comp_commit: *value = static_cast<int64_t>(r.comp_commit); return true;
+        case idx::pin_cfg: *value = static_cast<int64_t>(r.pin_cfg); return true;
         default: return false;
     }
 }
@@ -157,6 +160,7 @@ bool set(golden::axis_regs& r, int i, int64_t value) {
         case idx::map_data: assign(r.emap.data, value); return true;
         case idx::comp_sync: assign(r.comp_sync, value); return true;
         case idx::comp_commit: assign(r.comp_commit, value); return true;
+        case idx::pin_cfg: assign(r.pin_cfg, value); return true;
         default: return false;
     }
 }
@@ -193,6 +197,7 @@ lx::axis_regs to_hls(const golden::axis_regs& s) {
     r.emap.data = s.emap.data;
     r.comp_sync = s.comp_sync;
     r.comp_commit = s.comp_commit;
+    r.pin_cfg = s.pin_cfg;
     return r;
 }
 
@@ -228,6 +233,7 @@ lx::axis_regs to_hls(const axis_settings& s) {
     r.emap.data = lx::sint<24>(s.emap.data);
     r.comp_sync = s.comp_sync;
     r.comp_commit = s.comp_commit;
+    r.pin_cfg = lx::uint<4>(s.pin_cfg);
     return r;
 }
 
@@ -261,6 +267,7 @@ golden::axis_regs to_golden(const axis_settings& s) {
     convert(g.emap.data, s.emap.data);
     convert(g.comp_sync, s.comp_sync);
     convert(g.comp_commit, s.comp_commit);
+    convert(g.pin_cfg, s.pin_cfg);
     return g;
 }
 
@@ -294,6 +301,7 @@ axis_settings settings_from(const golden::axis_regs& g) {
     convert(s.emap.data, g.emap.data);
     convert(s.comp_sync, g.comp_sync);
     convert(s.comp_commit, g.comp_commit);
+    convert(s.pin_cfg, g.pin_cfg);
     return s;
 }
 

@@ -52,7 +52,7 @@ bool all_equal(const lx::axis_out& h, const golden::axis_out& g) {
     auto d = [](long long a, long long b) { return static_cast<unsigned long long>(a ^ b); };
     const unsigned long long x =
         d(h.sin.to_int64(), g.sin) | d(h.cos.to_int64(), g.cos) | d(h.ref_mark, g.ref_mark) | d(h.qa, g.qa) |
-        d(h.qb, g.qb) | d(h.qz, g.qz) | d(h.cfg_err, g.cfg_err) | d(h.stage.to_int64(), g.stage) |
+        d(h.qb, g.qb) | d(h.qz, g.qz) | d(h.q_oe, g.q_oe) | d(h.cfg_err, g.cfg_err) | d(h.stage.to_int64(), g.stage) |
         d(h.homed, g.homed) | d(h.lerr_alarm, g.lerr_alarm) | d(h.illegal_st, g.illegal_st) |
         d(h.err_cnt.to_int64(), g.err_cnt) | d(h.ovs_edge_st, g.ovs_edge_st) |
         d(h.ovs_backlog_st, g.ovs_backlog_st) | d(h.glitch_st, g.glitch_st) | d(h.dac_clip_st, g.dac_clip_st) |
@@ -77,6 +77,7 @@ bool all_equal(const lx::axis_out& h, const golden::axis_out& g) {
     c("qa", h.qa, g.qa);
     c("qb", h.qb, g.qb);
     c("qz", h.qz, g.qz);
+    c("q_oe", h.q_oe, g.q_oe);
     c("cfg_err", h.cfg_err, g.cfg_err);
     c("stage", h.stage.to_int64(), g.stage);
     c("homed", h.homed, g.homed);

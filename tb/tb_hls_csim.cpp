@@ -161,17 +161,17 @@ int main(int argc, char** argv) {
         }
         check(!o.cfg_err, "cfg_err after init_registers and the register stage", t);
         // the pins, the status and the error-map outputs: in both builds
-        const long long hv[] = {o.sin.to_int64(), o.cos.to_int64(), o.ref_mark, o.qa, o.qb, o.qz, o.cfg_err,
+        const long long hv[] = {o.sin.to_int64(), o.cos.to_int64(), o.ref_mark, o.qa, o.qb, o.qz, o.q_oe, o.cfg_err,
                                 o.stage.to_int64(), o.homed, o.lerr_alarm, o.illegal_st, o.err_cnt.to_int64(),
                                 o.ovs_edge_st, o.ovs_backlog_st, o.glitch_st, o.alarm, o.dac_clip_st, o.map_cfg_err,
                                 o.corr.to_int64(), o.map_delta.to_int64()};
-        const long long gv[] = {g.sin, g.cos, g.ref_mark, g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm,
+        const long long gv[] = {g.sin, g.cos, g.ref_mark, g.qa, g.qb, g.qz, g.q_oe, g.cfg_err, g.stage, g.homed, g.lerr_alarm,
                                 g.illegal_st, g.err_cnt, g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm,
                                 g.dac_clip_st, g.map_cfg_err, g.corr, g.map_delta};
-        const char* names[] = {"sin", "cos", "ref_mark", "qa", "qb", "qz", "cfg_err", "stage", "homed", "lerr_alarm",
+        const char* names[] = {"sin", "cos", "ref_mark", "qa", "qb", "qz", "q_oe", "cfg_err", "stage", "homed", "lerr_alarm",
                                "illegal_st", "err_cnt", "ovs_edge_st", "ovs_backlog_st", "glitch_st", "alarm",
                                "dac_clip_st", "map_cfg_err", "corr", "map_delta"};
-        for (int k = 0; k < 20; ++k) {
+        for (int k = 0; k < 21; ++k) {
             if (hv[k] != gv[k]) {
                 std::printf("call %ld signal %s: expected %lld got %lld\n", t, names[k], gv[k], hv[k]);
                 ++mismatches;

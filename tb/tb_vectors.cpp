@@ -87,11 +87,11 @@ bool check_outputs(tbu::result& res, const lxt::vec_table& t, size_t r, const st
     return true;
 }
 
-// the 36 outputs of a laserax_top call by name (the output columns of laserax_top.csv)
+// the 37 outputs of a laserax_top call by name (the output columns of laserax_top.csv)
 std::vector<named> top_outputs(const lx::axis_out& x) {
     return {
         {"sin", x.sin.to_int64()}, {"cos", x.cos.to_int64()}, {"ref_mark", x.ref_mark}, {"qa", x.qa},
-        {"qb", x.qb}, {"qz", x.qz}, {"cfg_err", x.cfg_err}, {"stage", x.stage.to_int64()}, {"homed", x.homed},
+        {"qb", x.qb}, {"qz", x.qz}, {"q_oe", x.q_oe}, {"cfg_err", x.cfg_err}, {"stage", x.stage.to_int64()}, {"homed", x.homed},
         {"lerr_alarm", x.lerr_alarm}, {"illegal_st", x.illegal_st}, {"err_cnt", x.err_cnt.to_int64()},
         {"ovs_edge_st", x.ovs_edge_st}, {"ovs_backlog_st", x.ovs_backlog_st}, {"glitch_st", x.glitch_st},
         {"alarm", x.alarm}, {"raw_count", x.raw_count.to_int64()}, {"comp_pos", x.comp_pos.to_int64()},
@@ -130,6 +130,7 @@ void replay_top(tbu::result& res, const lxt::vec_table& t) {
         s.tbl_period = in("tbl_period");
         s.rehome = in("rehome") != 0;
         s.clear = in("clear") != 0;
+        s.pin_cfg = in("pin_cfg");
         s.emap.map_en = in("map_en") != 0;
         s.emap.bank_sel = in("bank_sel") != 0;
         s.emap.geom[0].origin = in("map_origin0");

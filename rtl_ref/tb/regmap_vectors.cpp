@@ -533,6 +533,7 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
     int event = 0;
     long long homed = 0, corr = 0, cfg_err = 0;  // calls, for the summary line
     bool was_homed = false;  // o.homed of the previous call
+    int last_stage = 1;      // o.stage of the previous call
     long long homings_256 = 0, homings_640 = 0;  // homings after the first table load, by period
     for (long long k = 0; k < calls; ++k) {
         // --- host programme: one step whenever the write queue has drained ---
@@ -626,9 +627,12 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
         reach = std::max<int64_t>(80, host.get(rm::idx::period) * 5 / 32 + 20);
         if (n > sw_pos + reach) dir = -1;
         if (n < sw_pos - 80) dir = 1;
+        // (inside the referencing window, stage 2, the homing move slows to at most 8 output counts
+        // per 55 calls: the pacer's rate there is one count per 2 * pace_m calls, DESIGN 4.4)
+        const long long step_calls = (await_home && last_stage == 2) ? std::max<long long>(spacing, 55) : spacing;
         if (wait-- <= 0) {
             n += dir;
-            wait = spacing;
+            wait = step_calls;
         }
         bool a = false, b = false;
         {
@@ -657,7 +661,7 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
         std::vector<int64_t> row = {i64(p.a), i64(p.b), i64(p.sw), i64(p.lerr)};
         put_axil(row, in, s);
         row.insert(row.end(),
-                   {o.sin.to_int64(), o.cos.to_int64(), i64(o.ref_mark), i64(o.qa), i64(o.qb), i64(o.qz),
+                   {o.sin.to_int64(), o.cos.to_int64(), i64(o.ref_mark), i64(o.qa), i64(o.qb), i64(o.qz), i64(o.q_oe),
                     i64(o.cfg_err), static_cast<int64_t>(o.stage.to_uint64()), i64(o.homed), i64(o.lerr_alarm),
                     i64(o.illegal_st), static_cast<int64_t>(o.err_cnt.to_uint64()), i64(o.ovs_edge_st),
                     i64(o.ovs_backlog_st), i64(o.glitch_st), i64(o.alarm), o.raw_count.to_int64(),
@@ -673,6 +677,7 @@ bool axil_set(rng_t& r, long long calls, vec_table& t, std::string* err) {
             else ++homings_640;  // the only other period of the scenario
         }
         was_homed = o.homed;
+        last_stage = static_cast<int>(o.stage.to_uint64());
         corr += o.corr != 0 ? 1 : 0;
         cfg_err += o.cfg_err ? 1 : 0;
     }

@@ -107,6 +107,7 @@ vec_table top_stress(rng_t& r, long long calls) {
     rng_t mr(mr_seed() ^ 0x6572726f725f6d61ULL);
     lx::error_map_regs mp;
     bool csync = false;  // comp_sync register (commit framing of ratio / comp_offset)
+    unsigned pin_cfg = 8;  // pin_cfg register (digital pins)
     auto new_geom = [&mr](lx::error_map_geom& gm) {
         gm.origin = mr.range(-2500, 1500);
         gm.spacing_log2 = static_cast<unsigned>(mr.range(4, 9));
@@ -249,6 +250,9 @@ vec_table top_stress(rng_t& r, long long calls) {
             mp.data = mr.chance(400) ? (mr.chance(2) ? lim : -lim - 1) : mr.range(-lim, lim);
         }
         regs.emap = mp;
+        // --- digital pins: any pin_cfg now and then (qz_window, ab_rot, hiz_alarm; DESIGN 4.7) ---
+        if (mr.chance(3000)) pin_cfg = static_cast<unsigned>(mr.range(0, 15));
+        regs.pin_cfg = pin_cfg;
 
         // --- motion on the pins ---
         if (seg_left-- <= 0) {
@@ -316,7 +320,9 @@ vec_table top_stress(rng_t& r, long long calls) {
                           static_cast<int64_t>(regs.emap.geom[1].spacing_log2.to_uint64()),
                           static_cast<int64_t>(regs.emap.geom[1].n_points.to_uint64()), i64(regs.emap.we),
                           static_cast<int64_t>(regs.emap.addr.to_uint64()), regs.emap.data.to_int64(),
+                          static_cast<int64_t>(regs.pin_cfg.to_uint64()),
                           o.sin.to_int64(), o.cos.to_int64(), i64(o.ref_mark), i64(o.qa), i64(o.qb), i64(o.qz),
+                          i64(o.q_oe),
                           i64(o.cfg_err), static_cast<int64_t>(o.stage.to_uint64()), i64(o.homed), i64(o.lerr_alarm),
                           i64(o.illegal_st), static_cast<int64_t>(o.err_cnt.to_uint64()), i64(o.ovs_edge_st),
                           i64(o.ovs_backlog_st), i64(o.glitch_st), i64(o.alarm), o.raw_count.to_int64(),
@@ -475,7 +481,7 @@ vec_table rephase_stress(rng_t& r, long long calls) {
         const bool rehome = r.chance(3000);
         const lx::rephase::out_t o = rp.step(lx::step_t(ps), slot, sw, sw_valid, rehome, unhome, period, mark_len);
         t.rows.push_back({ps, i64(slot), i64(sw), i64(sw_valid), i64(rehome), i64(unhome), period, mark_len, o.ostep.to_int64(),
-                          o.out_pos.to_int64(), i64(o.mark), static_cast<int64_t>(o.stage.to_uint64()), o.a.to_int64(),
+                          o.out_pos.to_int64(), i64(o.mark), i64(o.index), static_cast<int64_t>(o.stage.to_uint64()), o.a.to_int64(),
                           static_cast<int64_t>(o.d.to_uint64()), o.b.to_int64(), o.c.to_int64(), o.z.to_int64(),
                           o.adj.to_int64(), i64(o.homed)});
     }

@@ -46,6 +46,7 @@
 //   field qa out 1 unsigned
 //   field qb out 1 unsigned
 //   field qz out 1 unsigned
+//   field q_oe out 1 unsigned
 //   field cfg_err out 1 unsigned
 //   field stage out 2 unsigned
 //   field homed out 1 unsigned
@@ -82,7 +83,7 @@ module tb_laserax_axil;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
     parameter DEBUG_TAPS = 1;   // 1: the DUT's debug taps compared with the vectors; 0: a DUT without taps, each tap column must read 0
-    localparam integer ROW_BITS = 760;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 764;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_axil";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -117,6 +118,7 @@ module tb_laserax_axil;
     wire o_qa;
     wire o_qb;
     wire o_qz;
+    wire o_q_oe;
     wire o_cfg_err;
     wire [1:0] o_stage;
     wire o_homed;
@@ -178,6 +180,7 @@ module tb_laserax_axil;
         .o_qa(o_qa),
         .o_qb(o_qb),
         .o_qz(o_qz),
+        .o_q_oe(o_q_oe),
         .o_cfg_err(o_cfg_err),
         .o_stage(o_stage),
         .o_homed(o_homed),
@@ -214,19 +217,19 @@ module tb_laserax_axil;
 
     task apply_inputs;
         begin
-            i_a = row[756:756];
-            i_b = row[752:752];
-            i_sw = row[748:748];
-            i_lerr = row[744:744];
-            s_axil_awaddr = row[743:732];
-            s_axil_awvalid = row[728:728];
-            s_axil_wdata = row[727:696];
-            s_axil_wstrb = row[695:692];
-            s_axil_wvalid = row[688:688];
-            s_axil_bready = row[684:684];
-            s_axil_araddr = row[683:672];
-            s_axil_arvalid = row[668:668];
-            s_axil_rready = row[664:664];
+            i_a = row[760:760];
+            i_b = row[756:756];
+            i_sw = row[752:752];
+            i_lerr = row[748:748];
+            s_axil_awaddr = row[747:736];
+            s_axil_awvalid = row[732:732];
+            s_axil_wdata = row[731:700];
+            s_axil_wstrb = row[699:696];
+            s_axil_wvalid = row[692:692];
+            s_axil_bready = row[688:688];
+            s_axil_araddr = row[687:676];
+            s_axil_arvalid = row[672:672];
+            s_axil_rready = row[668:668];
         end
     endtask
 
@@ -268,20 +271,21 @@ module tb_laserax_axil;
 
     task check_outputs;
         begin
-            check("awready", row[660:660], s_axil_awready, 1, 0);
-            check("wready", row[656:656], s_axil_wready, 1, 0);
-            check("bvalid", row[652:652], s_axil_bvalid, 1, 0);
-            check("bresp", row[649:648], s_axil_bresp, 2, 0);
-            check("arready", row[644:644], s_axil_arready, 1, 0);
-            check("rvalid", row[640:640], s_axil_rvalid, 1, 0);
-            check("rdata", row[639:608], s_axil_rdata, 32, 0);
-            check("rresp", row[605:604], s_axil_rresp, 2, 0);
-            check("sin", row[601:584], o_sin, 18, 1);
-            check("cos", row[581:564], o_cos, 18, 1);
-            check("ref_mark", row[560:560], o_ref_mark, 1, 0);
-            check("qa", row[556:556], o_qa, 1, 0);
-            check("qb", row[552:552], o_qb, 1, 0);
-            check("qz", row[548:548], o_qz, 1, 0);
+            check("awready", row[664:664], s_axil_awready, 1, 0);
+            check("wready", row[660:660], s_axil_wready, 1, 0);
+            check("bvalid", row[656:656], s_axil_bvalid, 1, 0);
+            check("bresp", row[653:652], s_axil_bresp, 2, 0);
+            check("arready", row[648:648], s_axil_arready, 1, 0);
+            check("rvalid", row[644:644], s_axil_rvalid, 1, 0);
+            check("rdata", row[643:612], s_axil_rdata, 32, 0);
+            check("rresp", row[609:608], s_axil_rresp, 2, 0);
+            check("sin", row[605:588], o_sin, 18, 1);
+            check("cos", row[585:568], o_cos, 18, 1);
+            check("ref_mark", row[564:564], o_ref_mark, 1, 0);
+            check("qa", row[560:560], o_qa, 1, 0);
+            check("qb", row[556:556], o_qb, 1, 0);
+            check("qz", row[552:552], o_qz, 1, 0);
+            check("q_oe", row[548:548], o_q_oe, 1, 0);
             check("cfg_err", row[544:544], o_cfg_err, 1, 0);
             check("stage", row[541:540], o_stage, 2, 0);
             check("homed", row[536:536], o_homed, 1, 0);

@@ -64,12 +64,13 @@
 //   field map_data out 24 signed
 //   field comp_sync out 1 unsigned
 //   field comp_commit out 1 unsigned
+//   field pin_cfg out 4 unsigned
 `timescale 1ns / 1ps
 `default_nettype none
 
 module tb_laserax_regs;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 628;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 632;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_regs";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -124,6 +125,7 @@ module tb_laserax_regs;
     wire [23:0] o_map_data;
     wire o_comp_sync;
     wire o_comp_commit;
+    wire [3:0] o_pin_cfg;
 
     laserax_regs #(.ADDR_W(12)) dut (
         .i_clk(i_clk),
@@ -174,22 +176,23 @@ module tb_laserax_regs;
         .o_map_addr(o_map_addr),
         .o_map_data(o_map_data),
         .o_comp_sync(o_comp_sync),
-        .o_comp_commit(o_comp_commit)
+        .o_comp_commit(o_comp_commit),
+        .o_pin_cfg(o_pin_cfg)
     );
 
     `include "tb_common.vh"
 
     task apply_inputs;
         begin
-            s_axil_awaddr = row[627:616];
-            s_axil_awvalid = row[612:612];
-            s_axil_wdata = row[611:580];
-            s_axil_wstrb = row[579:576];
-            s_axil_wvalid = row[572:572];
-            s_axil_bready = row[568:568];
-            s_axil_araddr = row[567:556];
-            s_axil_arvalid = row[552:552];
-            s_axil_rready = row[548:548];
+            s_axil_awaddr = row[631:620];
+            s_axil_awvalid = row[616:616];
+            s_axil_wdata = row[615:584];
+            s_axil_wstrb = row[583:580];
+            s_axil_wvalid = row[576:576];
+            s_axil_bready = row[572:572];
+            s_axil_araddr = row[571:560];
+            s_axil_arvalid = row[556:556];
+            s_axil_rready = row[552:552];
         end
     endtask
 
@@ -223,44 +226,45 @@ module tb_laserax_regs;
 
     task check_outputs;
         begin
-            check("awready", row[544:544], s_axil_awready, 1, 0);
-            check("wready", row[540:540], s_axil_wready, 1, 0);
-            check("bvalid", row[536:536], s_axil_bvalid, 1, 0);
-            check("bresp", row[533:532], s_axil_bresp, 2, 0);
-            check("arready", row[528:528], s_axil_arready, 1, 0);
-            check("rvalid", row[524:524], s_axil_rvalid, 1, 0);
-            check("rdata", row[523:492], s_axil_rdata, 32, 0);
-            check("rresp", row[489:488], s_axil_rresp, 2, 0);
-            check("period", row[484:472], o_period, 13, 0);
-            check("tbl_period", row[468:456], o_tbl_period, 13, 0);
-            check("ratio", row[452:416], o_ratio, 37, 0);
-            check("comp_offset", row[415:352], o_comp_offset, 64, 1);
-            check("glitch_n", row[351:344], o_glitch_n, 8, 0);
-            check("sw_debounce", row[343:328], o_sw_debounce, 16, 0);
-            check("min_spacing", row[327:312], o_min_spacing, 16, 0);
-            check("pace_m", row[311:296], o_pace_m, 16, 0);
-            check("backlog_thr", row[295:264], o_backlog_thr, 32, 0);
-            check("mark_len", row[260:248], o_mark_len, 13, 0);
-            check("dac_width", row[244:240], o_dac_width, 5, 0);
-            check("amplitude", row[237:220], o_amplitude, 18, 0);
-            check("rehome", row[216:216], o_rehome, 1, 0);
-            check("clear", row[212:212], o_clear, 1, 0);
-            check("tbl_we", row[208:208], o_tbl_we, 1, 0);
-            check("tbl_addr", row[205:196], o_tbl_addr, 10, 0);
-            check("tbl_data", row[192:176], o_tbl_data, 17, 0);
-            check("map_en", row[172:172], o_map_en, 1, 0);
-            check("bank_sel", row[168:168], o_bank_sel, 1, 0);
-            check("map_origin0", row[165:128], o_map_origin0, 38, 1);
-            check("map_k0", row[124:120], o_map_k0, 5, 0);
-            check("map_n0", row[118:108], o_map_n0, 11, 0);
-            check("map_origin1", row[105:68], o_map_origin1, 38, 1);
-            check("map_k1", row[64:60], o_map_k1, 5, 0);
-            check("map_n1", row[58:48], o_map_n1, 11, 0);
-            check("map_we", row[44:44], o_map_we, 1, 0);
-            check("map_addr", row[41:32], o_map_addr, 10, 0);
-            check("map_data", row[31:8], o_map_data, 24, 1);
-            check("comp_sync", row[4:4], o_comp_sync, 1, 0);
-            check("comp_commit", row[0:0], o_comp_commit, 1, 0);
+            check("awready", row[548:548], s_axil_awready, 1, 0);
+            check("wready", row[544:544], s_axil_wready, 1, 0);
+            check("bvalid", row[540:540], s_axil_bvalid, 1, 0);
+            check("bresp", row[537:536], s_axil_bresp, 2, 0);
+            check("arready", row[532:532], s_axil_arready, 1, 0);
+            check("rvalid", row[528:528], s_axil_rvalid, 1, 0);
+            check("rdata", row[527:496], s_axil_rdata, 32, 0);
+            check("rresp", row[493:492], s_axil_rresp, 2, 0);
+            check("period", row[488:476], o_period, 13, 0);
+            check("tbl_period", row[472:460], o_tbl_period, 13, 0);
+            check("ratio", row[456:420], o_ratio, 37, 0);
+            check("comp_offset", row[419:356], o_comp_offset, 64, 1);
+            check("glitch_n", row[355:348], o_glitch_n, 8, 0);
+            check("sw_debounce", row[347:332], o_sw_debounce, 16, 0);
+            check("min_spacing", row[331:316], o_min_spacing, 16, 0);
+            check("pace_m", row[315:300], o_pace_m, 16, 0);
+            check("backlog_thr", row[299:268], o_backlog_thr, 32, 0);
+            check("mark_len", row[264:252], o_mark_len, 13, 0);
+            check("dac_width", row[248:244], o_dac_width, 5, 0);
+            check("amplitude", row[241:224], o_amplitude, 18, 0);
+            check("rehome", row[220:220], o_rehome, 1, 0);
+            check("clear", row[216:216], o_clear, 1, 0);
+            check("tbl_we", row[212:212], o_tbl_we, 1, 0);
+            check("tbl_addr", row[209:200], o_tbl_addr, 10, 0);
+            check("tbl_data", row[196:180], o_tbl_data, 17, 0);
+            check("map_en", row[176:176], o_map_en, 1, 0);
+            check("bank_sel", row[172:172], o_bank_sel, 1, 0);
+            check("map_origin0", row[169:132], o_map_origin0, 38, 1);
+            check("map_k0", row[128:124], o_map_k0, 5, 0);
+            check("map_n0", row[122:112], o_map_n0, 11, 0);
+            check("map_origin1", row[109:72], o_map_origin1, 38, 1);
+            check("map_k1", row[68:64], o_map_k1, 5, 0);
+            check("map_n1", row[62:52], o_map_n1, 11, 0);
+            check("map_we", row[48:48], o_map_we, 1, 0);
+            check("map_addr", row[45:36], o_map_addr, 10, 0);
+            check("map_data", row[35:12], o_map_data, 24, 1);
+            check("comp_sync", row[8:8], o_comp_sync, 1, 0);
+            check("comp_commit", row[4:4], o_comp_commit, 1, 0);
+            check("pin_cfg", row[3:0], o_pin_cfg, 4, 0);
         end
     endtask
 

@@ -53,12 +53,14 @@
 //   field map_we in 1 unsigned
 //   field map_addr in 10 unsigned
 //   field map_data in 24 signed
+//   field pin_cfg in 4 unsigned
 //   field sin out 18 signed
 //   field cos out 18 signed
 //   field ref_mark out 1 unsigned
 //   field qa out 1 unsigned
 //   field qb out 1 unsigned
 //   field qz out 1 unsigned
+//   field q_oe out 1 unsigned
 //   field cfg_err out 1 unsigned
 //   field stage out 2 unsigned
 //   field homed out 1 unsigned
@@ -95,7 +97,7 @@ module tb_laserax_top;
     parameter integer N_MAX = 40000;   // rows in the vector file
     parameter TBL_FILE = "dds_table_p256.hex";   // table RAM image
     parameter DEBUG_TAPS = 1;   // 1: the DUT's debug taps compared with the vectors; 0: a DUT without taps, each tap column must read 0
-    localparam integer ROW_BITS = 1108;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 1116;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_laserax_top";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -137,12 +139,14 @@ module tb_laserax_top;
     reg  i_map_we;
     reg  [9:0] i_map_addr;
     reg  [23:0] i_map_data;
+    reg  [3:0] i_pin_cfg;
     wire [17:0] o_sin;
     wire [17:0] o_cos;
     wire o_ref_mark;
     wire o_qa;
     wire o_qb;
     wire o_qz;
+    wire o_q_oe;
     wire o_cfg_err;
     wire [1:0] o_stage;
     wire o_homed;
@@ -211,12 +215,14 @@ module tb_laserax_top;
         .i_map_we(i_map_we),
         .i_map_addr(i_map_addr),
         .i_map_data(i_map_data),
+        .i_pin_cfg(i_pin_cfg),
         .o_sin(o_sin),
         .o_cos(o_cos),
         .o_ref_mark(o_ref_mark),
         .o_qa(o_qa),
         .o_qb(o_qb),
         .o_qz(o_qz),
+        .o_q_oe(o_q_oe),
         .o_cfg_err(o_cfg_err),
         .o_stage(o_stage),
         .o_homed(o_homed),
@@ -253,40 +259,41 @@ module tb_laserax_top;
 
     task apply_inputs;
         begin
-            i_a = row[1104:1104];
-            i_b = row[1100:1100];
-            i_sw = row[1096:1096];
-            i_lerr = row[1092:1092];
-            i_period = row[1088:1076];
-            i_ratio = row[1072:1036];
-            i_comp_offset = row[1035:972];
-            i_comp_sync = row[968:968];
-            i_comp_commit = row[964:964];
-            i_glitch_n = row[963:956];
-            i_sw_debounce = row[955:940];
-            i_min_spacing = row[939:924];
-            i_pace_m = row[923:908];
-            i_backlog_thr = row[907:876];
-            i_mark_len = row[872:860];
-            i_dac_width = row[856:852];
-            i_amplitude = row[849:832];
-            i_tbl_period = row[828:816];
-            i_rehome = row[812:812];
-            i_clear = row[808:808];
-            i_tbl_we = row[804:804];
-            i_tbl_addr = row[801:792];
-            i_tbl_data = row[788:772];
-            i_map_en = row[768:768];
-            i_bank_sel = row[764:764];
-            i_map_origin0 = row[761:724];
-            i_map_k0 = row[720:716];
-            i_map_n0 = row[714:704];
-            i_map_origin1 = row[701:664];
-            i_map_k1 = row[660:656];
-            i_map_n1 = row[654:644];
-            i_map_we = row[640:640];
-            i_map_addr = row[637:628];
-            i_map_data = row[627:604];
+            i_a = row[1112:1112];
+            i_b = row[1108:1108];
+            i_sw = row[1104:1104];
+            i_lerr = row[1100:1100];
+            i_period = row[1096:1084];
+            i_ratio = row[1080:1044];
+            i_comp_offset = row[1043:980];
+            i_comp_sync = row[976:976];
+            i_comp_commit = row[972:972];
+            i_glitch_n = row[971:964];
+            i_sw_debounce = row[963:948];
+            i_min_spacing = row[947:932];
+            i_pace_m = row[931:916];
+            i_backlog_thr = row[915:884];
+            i_mark_len = row[880:868];
+            i_dac_width = row[864:860];
+            i_amplitude = row[857:840];
+            i_tbl_period = row[836:824];
+            i_rehome = row[820:820];
+            i_clear = row[816:816];
+            i_tbl_we = row[812:812];
+            i_tbl_addr = row[809:800];
+            i_tbl_data = row[796:780];
+            i_map_en = row[776:776];
+            i_bank_sel = row[772:772];
+            i_map_origin0 = row[769:732];
+            i_map_k0 = row[728:724];
+            i_map_n0 = row[722:712];
+            i_map_origin1 = row[709:672];
+            i_map_k1 = row[668:664];
+            i_map_n1 = row[662:652];
+            i_map_we = row[648:648];
+            i_map_addr = row[645:636];
+            i_map_data = row[635:612];
+            i_pin_cfg = row[611:608];
         end
     endtask
 
@@ -326,6 +333,7 @@ module tb_laserax_top;
             i_map_we = 1'd0;
             i_map_addr = 10'd0;
             i_map_data = 24'd0;
+            i_pin_cfg = 4'd8;
         end
     endtask
 
@@ -365,17 +373,19 @@ module tb_laserax_top;
             i_map_we = {1{1'b1}};
             i_map_addr = 10'd0;
             i_map_data = {24{1'b1}};
+            i_pin_cfg = {4{1'b1}};
         end
     endtask
 
     task check_outputs;
         begin
-            check("sin", row[601:584], o_sin, 18, 1);
-            check("cos", row[581:564], o_cos, 18, 1);
-            check("ref_mark", row[560:560], o_ref_mark, 1, 0);
-            check("qa", row[556:556], o_qa, 1, 0);
-            check("qb", row[552:552], o_qb, 1, 0);
-            check("qz", row[548:548], o_qz, 1, 0);
+            check("sin", row[605:588], o_sin, 18, 1);
+            check("cos", row[585:568], o_cos, 18, 1);
+            check("ref_mark", row[564:564], o_ref_mark, 1, 0);
+            check("qa", row[560:560], o_qa, 1, 0);
+            check("qb", row[556:556], o_qb, 1, 0);
+            check("qz", row[552:552], o_qz, 1, 0);
+            check("q_oe", row[548:548], o_q_oe, 1, 0);
             check("cfg_err", row[544:544], o_cfg_err, 1, 0);
             check("stage", row[541:540], o_stage, 2, 0);
             check("homed", row[536:536], o_homed, 1, 0);

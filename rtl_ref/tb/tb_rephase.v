@@ -27,6 +27,7 @@
 //   field ostep out 2 signed
 //   field out_pos out 38 signed
 //   field mark out 1 unsigned
+//   field index out 1 unsigned
 //   field stage out 2 unsigned
 //   field a out 38 signed
 //   field d out 12 unsigned
@@ -40,7 +41,7 @@
 
 module tb_rephase;
     parameter integer N_MAX = 40000;   // rows in the vector file
-    localparam integer ROW_BITS = 324;   // 4 * sum(ceil(bits/4)) over the fields
+    localparam integer ROW_BITS = 328;   // 4 * sum(ceil(bits/4)) over the fields
     localparam TB_NAME = "tb_rephase";
 
     reg [ROW_BITS-1:0] vec [0:N_MAX-1];
@@ -66,6 +67,7 @@ module tb_rephase;
     wire [1:0] o_ostep;
     wire [37:0] o_out_pos;
     wire o_mark;
+    wire o_index;
     wire [1:0] o_stage;
     wire [37:0] o_a;
     wire [11:0] o_d;
@@ -96,6 +98,7 @@ module tb_rephase;
         .o_ostep(o_ostep),
         .o_out_pos(o_out_pos),
         .o_mark(o_mark),
+        .o_index(o_index),
         .o_stage(o_stage),
         .o_a(o_a),
         .o_d(o_d),
@@ -114,22 +117,22 @@ module tb_rephase;
 
     task apply_inputs;
         begin
-            i_pstep = row[321:320];
-            i_slot = row[316:316];
-            i_sw = row[312:312];
-            i_sw_valid = row[308:308];
-            i_rehome = row[304:304];
-            i_unhome = row[300:300];
-            i_period = row[296:284];
-            i_mark_len = row[280:268];
+            i_pstep = row[325:324];
+            i_slot = row[320:320];
+            i_sw = row[316:316];
+            i_sw_valid = row[312:312];
+            i_rehome = row[308:308];
+            i_unhome = row[304:304];
+            i_period = row[300:288];
+            i_mark_len = row[284:272];
             i_period_m1 = $signed({1'b0, i_period}) - 14'sd1;
             i_period_m2 = $signed({1'b0, i_period}) - 14'sd2;
             i_mark_len_n = ~i_mark_len;
             row_nx = (k + 1 < rows) ? vec[k + 1] : {ROW_BITS{1'b0}};
-            i_pstep_nx = row_nx[321:320];
-            i_slot_nx = row_nx[316:316];
-            i_unhome_nx = row_nx[300:300];
-            i_rehome_nx = row_nx[304:304];
+            i_pstep_nx = row_nx[325:324];
+            i_slot_nx = row_nx[320:320];
+            i_unhome_nx = row_nx[304:304];
+            i_rehome_nx = row_nx[308:308];
         end
     endtask
 
@@ -151,10 +154,10 @@ module tb_rephase;
             i_unhome_nx = 1'd0;
             i_rehome_nx = 1'd0;
             row_nx = vec[0];
-            i_pstep_nx = row_nx[321:320];
-            i_slot_nx = row_nx[316:316];
-            i_unhome_nx = row_nx[300:300];
-            i_rehome_nx = row_nx[304:304];
+            i_pstep_nx = row_nx[325:324];
+            i_slot_nx = row_nx[320:320];
+            i_unhome_nx = row_nx[304:304];
+            i_rehome_nx = row_nx[308:308];
         end
     endtask
 
@@ -180,9 +183,10 @@ module tb_rephase;
 
     task check_outputs;
         begin
-            check("ostep", row[265:264], o_ostep, 2, 1);
-            check("out_pos", row[261:224], o_out_pos, 38, 1);
-            check("mark", row[220:220], o_mark, 1, 0);
+            check("ostep", row[269:268], o_ostep, 2, 1);
+            check("out_pos", row[265:228], o_out_pos, 38, 1);
+            check("mark", row[224:224], o_mark, 1, 0);
+            check("index", row[220:220], o_index, 1, 0);
             check("stage", row[217:216], o_stage, 2, 0);
             check("a", row[213:176], o_a, 38, 1);
             check("d", row[175:164], o_d, 12, 0);

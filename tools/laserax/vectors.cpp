@@ -298,7 +298,7 @@ std::vector<vec_column> vec_layout(const std::string& block) {
     if (block == "rephase")
         return {in("pstep", 2, true), in("slot", 1), in("sw", 1), in("sw_valid", 1), in("rehome", 1), in("unhome", 1),
                 in("period", W::W_P), in("mark_len", W::W_P), out("ostep", 2, true), out("out_pos", W::W_POS, true),
-                out("mark", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
+                out("mark", 1), out("index", 1), out("stage", 2), out("a", W::W_POS, true), out("d", W::W_PH),
                 out("b", W::W_POS, true), out("c", W::W_POS, true), out("z", W::W_POS, true),
                 out("adj", W::W_POS, true), out("homed", 1)};
     // tbl_we/tbl_addr/tbl_data: the table write port (written before the step of the same call)
@@ -315,8 +315,9 @@ std::vector<vec_column> vec_layout(const std::string& block) {
                 in("map_en", 1), in("bank_sel", 1), in("map_origin0", W::W_POS, true), in("map_k0", EM::W_K),
                 in("map_n0", EM::W_N), in("map_origin1", W::W_POS, true), in("map_k1", EM::W_K),
                 in("map_n1", EM::W_N), in("map_we", 1), in("map_addr", EM::W_ADDR), in("map_data", EM::W_CORR, true),
+                in("pin_cfg", 4),
                 out("sin", W::W_DAC_MAX, true), out("cos", W::W_DAC_MAX, true), out("ref_mark", 1), out("qa", 1),
-                out("qb", 1), out("qz", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
+                out("qb", 1), out("qz", 1), out("q_oe", 1), out("cfg_err", 1), out("stage", 2), out("homed", 1), out("lerr_alarm", 1),
                 out("illegal_st", 1), out("err_cnt", 8), out("ovs_edge_st", 1), out("ovs_backlog_st", 1),
                 out("glitch_st", 1), out("alarm", 1), out("raw_count", W::W_RAW, true), out("comp_pos", W::W_POS, true),
                 out("paced_pos", W::W_POS, true), out("out_pos", W::W_POS, true), out("d", W::W_PH),
@@ -723,6 +724,14 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         if (t == calls * 7 / 8 - 100) ns.comp_sync = false;
         if (t == calls * 7 / 8) ns.comp_offset = int64_t(5) << 31;
         if (t == calls * 5 / 8) ns.rehome = true;
+        // the digital pins (DESIGN 4.7, pin_cfg): qz as the window B..C from 11/16 to 3/4; the A/B
+        // encoding rotated by 2 counts (the index state at A = B = 1) from inside the safe state
+        // at 3/4 on (a rotation while running would be a two-line step at the pins); q_oe held
+        // high through the alarms from 13/16 on (hiz_alarm = 0)
+        if (t == calls * 11 / 16) ns.pin_cfg = 8 | 1;
+        if (t == calls * 3 / 4) ns.pin_cfg = 8;
+        if (t == calls * 3 / 4 + 10) ns.pin_cfg = 8 | (2 << 1);
+        if (t == calls * 13 / 16) ns.pin_cfg = 2 << 1;
         if (t % 5000 == 4999) ns.clear = true;
         if (t == calls * 3 / 4) ns.tbl_period = 264;               // invalid configuration ...
         if (t == calls * 3 / 4 + 50) ns.tbl_period = ns.period;    // ... and back
@@ -779,9 +788,9 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                             gr.dac_width, gr.amplitude, gr.tbl_period, gr.rehome, gr.clear, 0, 0, 0,
                             gr.emap.map_en, gr.emap.bank_sel, gr.emap.geom[0].origin, gr.emap.geom[0].spacing_log2,
                             gr.emap.geom[0].n_points, gr.emap.geom[1].origin, gr.emap.geom[1].spacing_log2,
-                            gr.emap.geom[1].n_points, gr.emap.we, gr.emap.addr, gr.emap.data,
+                            gr.emap.geom[1].n_points, gr.emap.we, gr.emap.addr, gr.emap.data, gr.pin_cfg,
                             g.sin, g.cos, g.ref_mark,
-                            g.qa, g.qb, g.qz, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
+                            g.qa, g.qb, g.qz, g.q_oe, g.cfg_err, g.stage, g.homed, g.lerr_alarm, g.illegal_st, g.err_cnt,
                             g.ovs_edge_st, g.ovs_backlog_st, g.glitch_st, g.alarm, g.raw_count, g.comp_pos, g.paced_pos, g.out_pos,
                             g.d, g.step, g.delta, g.backlog, g.pstep, g.ostep, g.adj, g.a_pos, g.b_pos, g.c_pos,
                             g.z_pos, g.rep_mark, g.map_cfg_err, g.corr, g.map_delta});
@@ -819,7 +828,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
                           mo.comp == hmo.comp.to_int64() && mo.delta == hmo.delta.to_int64() &&
                           po.pstep == hpo.pstep.to_int() && po.slot == hpo.slot && po.paced == hpo.paced.to_int64() &&
                           po.backlog == hpo.backlog.to_int64() && po.ovs == hpo.ovs && po.ovs_st == hpo.ovs_st &&
-                          ro.ostep == hro.ostep.to_int() && ro.out_pos == hro.out_pos.to_int64() && ro.mark == hro.mark &&
+                          ro.ostep == hro.ostep.to_int() && ro.out_pos == hro.out_pos.to_int64() && ro.mark == hro.mark && ro.index == hro.index &&
                           ro.stage == hro.stage.to_int() && ro.a == hro.a.to_int64() && ro.d == hro.d.to_int64() &&
                           ro.b == hro.b.to_int64() && ro.c == hro.c.to_int64() && ro.z == hro.z.to_int64() &&
                           ro.adj == hro.adj.to_int64() && ro.homed == hro.homed && so.sin == hso.sin.to_int64() &&
@@ -835,7 +844,7 @@ bool build_vectors(uint64_t seed, long long calls, std::vector<vec_table>& table
         pac.rows.push_back({prev_delta, gr.pace_m, static_cast<int64_t>(gr.backlog_thr), gr.clear, wide, po.pstep,
                             po.slot, po.paced, po.backlog, po.ovs, po.ovs_st});
         rep.rows.push_back({prev_pstep, prev_slot, prev_sw.f, prev_sw.valid, gr.rehome, prev_lerr, gr.period, gr.mark_len, ro.ostep,
-                            ro.out_pos, ro.mark, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
+                            ro.out_pos, ro.mark, ro.index, ro.stage, ro.a, ro.d, ro.b, ro.c, ro.z, ro.adj, ro.homed});
         dds.rows.push_back({prev_ostep, gr.period, gr.amplitude, 0, 0, 0, so.sin, so.cos});
         // the map reads the multiplier's comp and the rephase homed of the previous call (the
         // registered outputs, as hls/laserax_top.h) with the map registers of this call
