@@ -685,6 +685,8 @@ module rephase (
     reg               f_anew;                // the previous call was A
     reg [1:0]         f_age;                 // calls since A, saturating at 3
     reg [W_POS-1:0]   f_adjr;                // adj + lag of the RTL after the homing call
+    reg               f_idxo;                // the previous call: homed, paced in [B, C], ph_out = P/8
+    reg               f_idxz;                // the previous call: homed, paced == Z
 
     wire [W_P-1:0]   f_p8  = {3'b000, f_per[W_P-1:3]};
     wire [W_P-1:0]   f_p4  = {2'b00, f_per[W_P-1:2]};
@@ -771,6 +773,10 @@ module rephase (
         f_rnx <= i_rehome_nx;
         f_snx <= i_slot_nx;
         f_sgp <= i_rst ? ST_UNHOMED : f_stage;
+        // the index of DESIGN 4.5 step 5, of the reference state of this call (before the edge)
+        f_idxo <= !i_rst && f_stage == ST_HOMED && f_dx(f_dir, f_paced - f_b) <= {{(W_POS-W_P){1'b0}}, f_len} &&
+                  f_po == f_p8;
+        f_idxz <= !i_rst && f_stage == ST_HOMED && f_paced == f_b + f_dx(f_dir, {{(W_POS-W_P){1'b0}}, f_p4});
         f_owe <= i_rst ? 1'b0 : !f_pz ? (f_sgp == ST_WINDOW) : i_slot ? 1'b0 : f_owe;
         if (i_rst) begin
             f_init  <= 1'b1;
@@ -916,12 +922,16 @@ module rephase (
             assert(f_po < f_per);
             if (!w_init_q) assert(f_po == {W_P{1'b0}} && lag_q == {W_LAG{1'b0}});  // after reset
             if (!w_init_q) assert(!t1_q && !z0_q && !h_q);      // the flags of w = P/8
+            if (!w_init_q) assert(stage_q == ST_UNHOMED && !mark_q);  // (a reset call was the last)
             if (w_init_q) begin
                 assert(w_q == f_addp(f_po, f_p8, f_per));
                 assert(t1_q == (w_q == f_per - 1'b1));
                 assert(z0_q == (w_q == {W_PH{1'b0}}));
                 assert(h_q == ({1'b0, w_q} >= (f_per >> 1)));
             end
+            // the index: the output state at phase P/8 (Z's phase, 4.5 phase check) inside [B, C]
+            // of the previous call
+            assert(idx_q == f_idxo);
             // from A on: d < P, loaded in the call after A
             if (f_stage != ST_UNHOMED) begin
                 if (!f_anew) assert(f_d < f_per);
@@ -1014,6 +1024,11 @@ module rephase (
             end else begin
                 assert(!mark_q);
             end
+`ifdef FORMAL_PHASE
+            // with the phase at homing of the text (stated, not proven: FORMAL.md), the index is
+            // the paced position Z of the previous call
+            assert(idx_q == f_idxz);
+`endif
         end
     end
 `endif

@@ -186,6 +186,7 @@ MUTATIONS=(
   "rep_leave_lag|rephase.v|rephase|s/lag_n  = lv ? {W_LAG{1'b0}} : pz/lag_n  = lv ? lag_q : pz/"
   "rep_extra_lost|rephase.v|rephase|s/adj_d     = adj_q + adj_st;/adj_d     = adj_q;/"
   "rep_adj_carry|rephase.v|rephase_adj|s/else if (!t_neg) num_d = t_lo;/else if (!t_neg) num_d = num_pd;/"
+  "rep_index_phase|rephase.v|rephase_adj|s/w_q == {{(W_PH-W_P+2){1'b0}}, i_period\[W_P-1:2\]}/w_q == {{(W_PH-W_P+3){1'b0}}, i_period[W_P-1:3]}/"
   "rep_t_form|rephase.v|rephase_adj|s/wire signed \[W_BR-1:0\] t_rc   = num_br + k_q;/wire signed [W_BR-1:0] t_rc   = num_br + d_br;/"
   "rep_first_load|rephase.v|rephase_adj|s/wire signed \[W_BR-1:0\] t_ld   = (d_br <<< 1) - px_br;/wire signed [W_BR-1:0] t_ld   = (d_br <<< 1) - px_br + 1;/"
   "rep_tr_pos|rephase.v|rephase|s/(tr_pos_q \&\& !(s_neg \&\& tr_is1))/tr_pos_q/"

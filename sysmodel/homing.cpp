@@ -21,6 +21,7 @@ homing_result run_homing(const homing_params& p, const std::function<void(const 
     axis_motion motion(r.start_nm, r.lambda_nm, frac0);
     const double speed = p.speed_mm_s * 1e6 / p.clock_hz;  // nm per clock
     motion.add(r.switch_edge_nm + p.dir * (2.0 * period_nm + 5000.0), speed);
+    if (p.return_pass) motion.add(r.switch_edge_nm - p.dir * 5000.0, speed);
     ref_switch sw;
     sw.edge_nm = r.switch_edge_nm;
     sw.dir = p.dir;
@@ -34,6 +35,7 @@ homing_result run_homing(const homing_params& p, const std::function<void(const 
     s.glitch_n = p.glitch_n;
     s.sw_debounce = p.sw_debounce;
     s.pace_m = p.pace_m;
+    s.pin_cfg = p.pin_cfg;
     dual_axis ax(s);
 
     const char* names[4] = {"A", "B", "Z", "C"};

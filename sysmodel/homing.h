@@ -27,6 +27,8 @@ struct homing_params {
     int sw_debounce = 16;
     int pace_m = 4;
     double bounce_nm = 0;         // switch contact bounce zone
+    int pin_cfg = 8;              // the pin_cfg register (DESIGN 4.7: qz_window, ab_rot, hiz_alarm)
+    bool return_pass = false;     // after the homing move, back past the switch (Z crossed both ways)
 };
 
 // One row of the trace: the columns of out/trace.csv.

@@ -22,9 +22,14 @@
 //     the gated index G = filtered Z && (filtered A, B) == (gate_a, gate_b) (so a gated rising
 //     edge latches at the first sample where Z and the gate state are both present, whichever
 //     came first). Each latch records the count after this sample's update.
-//   All lines start low with their filters at 0, so the count starts at 0 in state 00.
+//   All lines start low with their filters at 0, so the count starts at 0 in state 00; with
+//   prime, they start at the levels of the first clock() call instead, filters settled there
+//   (a controller that starts counting on lines that are already at their levels), count 0.
 //
-// clock(qa, qb, qz) is called once per our clock with the pin levels of that clock; it evaluates
+//   * line drivers: oe (our q_oe) low three-states A/B/Z; the receivers' open-line detection sets
+//     the sticky line_fault at the next sample and the lines read their failsafe level, 1.
+//
+// clock(qa, qb, qz[, oe]) is called once per our clock with the pin levels of that clock; it evaluates
 // every sample instant that falls in that clock (samples within aperture_ns / 2 before the edge
 // that starts the next clock are evaluated in the next call, when that clock's levels are known).
 // Prints nothing. Double arithmetic on time: sample k's time is computed directly from k.
@@ -48,6 +53,7 @@ struct controller_cfg {
     bool index_rising = true;      // latch on the rising (true) or falling edge of the filtered Z
     bool index_gate = false;       // latch only when the filtered A/B state is (gate_a, gate_b)
     bool gate_a = true, gate_b = true;
+    bool prime = false;            // lines start at the first call's levels (count 0 there)
 };
 
 class controller_counter {
@@ -66,16 +72,25 @@ public:
                cfg_.aperture_ns >= 0 && cfg_.aperture_ns < t_clk_;
     }
 
-    void clock(bool qa, bool qb, bool qz) {
-        const bool now[3] = {qa, qb, qz};
-        if (calls_ == 0)
+    void clock(bool qa, bool qb, bool qz, bool oe = true) {
+        const bool now[3] = {qa || !oe, qb || !oe, qz || !oe};
+        if (calls_ == 0) {
             for (int l = 0; l < 3; ++l) prev_[l] = now[l];
+            if (cfg_.prime) {
+                for (int l = 0; l < 3; ++l) {
+                    out_[l] = now[l];
+                    c_[l] = now[l] ? n_ : 0;
+                }
+                g_prev_ = gated();
+            }
+        }
         const double edge = static_cast<double>(calls_) * t_clk_;  // start of this clock
         const double end = edge + t_clk_ - half_ap_;                // samples before: this call
         for (;;) {
             const double t = cfg_.phase_ns + static_cast<double>(k_) * t_s_;
             if (t >= end) break;
             ++k_;
+            if (!oe) line_fault_ = true;
             bool v[3];
             const bool meta = t < edge + half_ap_;  // within the window of this clock's edge
             for (int l = 0; l < 3; ++l) v[l] = (meta && now[l] != prev_[l]) ? coin() : now[l];
@@ -92,9 +107,12 @@ public:
     uint64_t index_events() const { return index_.size(); }
     uint64_t samples() const { return k_; }
     bool filtered(int line) const { return out_[line]; }           // 0 A, 1 B, 2 Z
+    bool line_fault() const { return line_fault_; }                // a sample saw the drivers off
 
 private:
     static int gray(bool a, bool b) { return a ? (b ? 2 : 1) : (b ? 3 : 0); }
+    // the (gated) index of the filtered lines
+    bool gated() const { return out_[2] && (!cfg_.index_gate || (out_[0] == cfg_.gate_a && out_[1] == cfg_.gate_b)); }
 
     bool coin() {
         rng_ ^= rng_ << 13;
@@ -121,7 +139,7 @@ private:
         } else if (d == 2) {
             ++qerr_;
         }
-        const bool g = out_[2] && (!cfg_.index_gate || (out_[0] == cfg_.gate_a && out_[1] == cfg_.gate_b));
+        const bool g = gated();
         const bool edge = cfg_.index_rising ? (g && !g_prev_) : (!g && g_prev_);
         g_prev_ = g;
         if (edge) index_.push_back(count_);
@@ -136,6 +154,7 @@ private:
     int c_[3] = {0, 0, 0};
     bool out_[3] = {false, false, false};
     bool g_prev_ = false;  // the (gated) index of the previous sample
+    bool line_fault_ = false;
     int64_t count_ = 0;
     uint64_t qerr_ = 0, steps_ = 0;
     std::vector<int64_t> index_;
