@@ -74,6 +74,7 @@ namespace lx {
 
 struct laserax_top_cfg {
     static constexpr int W_DEBOUNCE = 16;  // switch debounce length register
+    static constexpr int W_PIN_CFG = 4;    // pin_cfg register: qz_window, ab_rot (2), hiz_alarm
     // Reset ratio: round(632.991 nm / 1.000271 / 78.125 nm * 2^32), i.e. one raw count of a
     // HeNe wavelength in standard air, in output counts of 20 um / 256. Checked against the
     // formula by tb/tb_axis_config.
@@ -81,6 +82,7 @@ struct laserax_top_cfg {
     static constexpr int PERIOD_DEFAULT = 256;
     static constexpr int AMP_DEFAULT = 32767;
     using debounce_t = uint<W_DEBOUNCE>;
+    using pin_cfg_t = uint<W_PIN_CFG>;
     using dacw_t = uint<axis_widths::W_DACW>;
 };
 
@@ -108,7 +110,7 @@ struct axis_regs {
     bool clear = false;
     bool tbl_we = false;
     // digital pins (DESIGN §4.7): bit 0 qz_window, bits 2:1 ab_rot, bit 3 hiz_alarm
-    uint<4> pin_cfg = 8;
+    laserax_top_cfg::pin_cfg_t pin_cfg = 8;
     tbl_addr_t tbl_addr = 0;
     tbl_word_t tbl_data = 0;
     // position error map (docs/ERROR_MAP.md §8): map_en, bank_sel, the two bank geometries and
@@ -299,7 +301,7 @@ private:
     // outputs of a call in which the chain does not run (out_ holds the inter-block registers of
     // the reset, every field 0 / false): stage 1; cfg_err and alarm set in the safe state
     // (invalid configuration), not in the power-up call
-    void safe_out(bool cfg_err, uint<4> pin_cfg) {
+    void safe_out(bool cfg_err, laserax_top_cfg::pin_cfg_t pin_cfg) {
         out_.cfg_err = cfg_err;
         out_.alarm = cfg_err;
         out_.stage = 1;
@@ -441,7 +443,7 @@ private:
     };
     // the digital pins of a call (DESIGN §4.7): qa/qb of (pos + ab_rot) mod 4, qz the index or
     // (qz_window) the mark, ref_mark the mark, q_oe = !(hiz_alarm && alarm) (o.alarm formed)
-    static void pin_levels(axis_out& o, const dig_tap& d, uint<4> pin_cfg) {
+    static void pin_levels(axis_out& o, const dig_tap& d, laserax_top_cfg::pin_cfg_t pin_cfg) {
         const uint<2> rot = pin_cfg >> 1;
         quad_levels(pos_t(uint<2>(d.pos + rot)), o.qa, o.qb);
         o.qz = (pin_cfg & 1) != 0 ? d.mark : d.index;

@@ -84,7 +84,7 @@ module laserax_top #(
     input  wire [`LX_EM_W_ADDR-1:0]          i_map_addr,
     input  wire signed [`LX_EM_W_CORR-1:0]   i_map_data,       // Q15.8 output counts
     // digital pins (DESIGN 4.7): bit 0 qz_window, bits 2:1 ab_rot, bit 3 hiz_alarm; reset 8
-    input  wire [3:0]                        i_pin_cfg,
+    input  wire [`LX_TOP_W_PIN_CFG-1:0]      i_pin_cfg,
     // outputs
     output wire signed [`LX_W_DAC-1:0]       o_sin,
     output wire signed [`LX_W_DAC-1:0]       o_cos,

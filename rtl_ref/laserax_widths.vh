@@ -50,6 +50,7 @@
 
 // laserax_top (lx::laserax_top_cfg)
 `define LX_TOP_W_DEBOUNCE 16             // laserax_top_cfg::W_DEBOUNCE
+`define LX_TOP_W_PIN_CFG 4               // laserax_top_cfg::W_PIN_CFG: pin_cfg register
 
 // encoder_counter (lx::encoder_counter_cfg)
 `define LX_EC_W_CNT 32                   // encoder_counter_cfg::W_CNT: counters

@@ -164,7 +164,7 @@ def selftest(root):
         ("input_filter.h", "        s1_ = pin;", "        s1_ = !s2_;"),
         ("quad_decoder.h", "        if (clear) {", "        if (clear || a) {"),
         ("quad_decoder.h", "fb_.step(b, glitch_n)", "fb_.step(a, glitch_n)"),
-        ("laserax_top.h", "        o.qa = dig_q3_.qa;", "        o.qa = dig_q3_.qa || pins.a;"),
+        ("laserax_top.h", "        const dig_tap dig = dig_q3_;", "        dig_tap dig = dig_q3_;\n        dig.mark = dig.mark || pins.a;"),
         ("laserax_top.h", "swf_.step(pins.sw, ", "swf_.step(false, "),
     ]
     if check(root):

@@ -331,9 +331,15 @@ std::string dual_axis::integrity() {
         if (use_sc != prev_use_sc_ && hist_n_ > 0) dec_.reacquire_sincos();
         prev_use_sc_ = use_sc;
         const lx::axis_out& h = core_.out();
-        const bool ok = dec_.feed(use_sc ? h.sin.to_int64() : 0, use_sc ? h.cos.to_int64() : 1, h.qa, h.qb);
+        // the pins' A/B encoding is out_pos + ab_rot (pin_cfg bits 2:1 in force in this call,
+        // DESIGN 4.7): the decoder and the spacing check see the levels of out_pos itself, so a
+        // register write that rotates the encoding is not an output count
+        const int rot = have_f_ ? static_cast<int>((f_.pin_cfg >> 1) & 3) : 0;
+        const int qi = ((h.qa ? (h.qb ? 2 : 1) : (h.qb ? 3 : 0)) - rot + 4) % 4;
+        const bool qa = qi == 1 || qi == 2, qb = qi == 2 || qi == 3;
+        const bool ok = dec_.feed(use_sc ? h.sin.to_int64() : 0, use_sc ? h.cos.to_int64() : 1, qa, qb);
         if (m.empty() && !ok) m = "integrity: the outputs stepped by more than one count";
-        const std::string sp = pin_spacing(h.qa, h.qb);
+        const std::string sp = pin_spacing(qa, qb);
         if (m.empty()) m = sp;
         if (m.empty() && hist_n_ >= kOutLag) {
             const int64_t want = out_hist_[kOutLag - 1];

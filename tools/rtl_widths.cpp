@@ -83,6 +83,7 @@ void write(std::ostream& os, const std::string& command) {
     w.def("DDS_W_R", lx::dds_sincos_cfg::W_R, "dds_sincos_cfg::W_R: r and P/4 - r");
     w.group("laserax_top (lx::laserax_top_cfg)");
     w.def("TOP_W_DEBOUNCE", lx::laserax_top_cfg::W_DEBOUNCE, "laserax_top_cfg::W_DEBOUNCE");
+    w.def("TOP_W_PIN_CFG", lx::laserax_top_cfg::W_PIN_CFG, "laserax_top_cfg::W_PIN_CFG: pin_cfg register");
     w.group("encoder_counter (lx::encoder_counter_cfg)");
     w.def("EC_W_CNT", lx::encoder_counter_cfg::W_CNT, "encoder_counter_cfg::W_CNT: counters");
     w.def("EC_W_SRC", lx::encoder_counter_cfg::W_SRC, "encoder_counter_cfg::W_SRC: source register");
