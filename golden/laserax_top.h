@@ -39,7 +39,7 @@ struct axis_regs {
     int64_t glitch_n = 2;
     int64_t sw_debounce = 16;
     int64_t min_spacing = 8;
-    int64_t pace_m = 4;
+    int64_t pace_m = 61;
     uint64_t backlog_thr = 4096;
     int64_t mark_len = 64;
     int64_t dac_width = 16;

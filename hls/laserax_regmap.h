@@ -59,12 +59,12 @@ constexpr int MIN_SPACING_WIDTH = 16;
 constexpr int MIN_SPACING_WORDS = 1;
 constexpr bool MIN_SPACING_SIGNED = false;
 constexpr long long MIN_SPACING_RESET = 8LL;
-// pace_m: 0x58, 16 bits unsigned, rw, reset 4
+// pace_m: 0x58, 16 bits unsigned, rw, reset 61
 constexpr unsigned PACE_M_OFFSET = 0x58;
 constexpr int PACE_M_WIDTH = 16;
 constexpr int PACE_M_WORDS = 1;
 constexpr bool PACE_M_SIGNED = false;
-constexpr long long PACE_M_RESET = 4LL;
+constexpr long long PACE_M_RESET = 61LL;
 // backlog_thr: 0x60, 32 bits unsigned, rw, reset 4096
 constexpr unsigned BACKLOG_THR_OFFSET = 0x60;
 constexpr int BACKLOG_THR_WIDTH = 32;

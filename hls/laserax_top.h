@@ -100,7 +100,7 @@ struct axis_regs {
     quad_decoder_cfg::glitch_t glitch_n = 2;
     laserax_top_cfg::debounce_t sw_debounce = 16;
     quad_decoder_cfg::spacing_t min_spacing = 8;
-    output_pacer_cfg::pace_t pace_m = 4;
+    output_pacer_cfg::pace_t pace_m = 61;
     output_pacer_cfg::thr_t backlog_thr = 4096;
     period_t mark_len = laserax_top_cfg::PERIOD_DEFAULT / 4;
     laserax_top_cfg::dacw_t dac_width = 16;

@@ -68,12 +68,12 @@
 #define LASERAX_REG_MIN_SPACING_RESET 8LL
 #define LASERAX_REG_MIN_SPACING_MIN 2LL
 #define LASERAX_REG_MIN_SPACING_MAX 65535LL
-/* pace_m: output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count) */
+/* pace_m: output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Reset 61: safe for every input of that table (a hostmot2 counter at LinuxCNC's defaults needs 61), up to 128 mm/s of output at P = 256; faster motion builds a backlog (ovs_backlog_st), never a lost count. Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count) */
 #define LASERAX_REG_PACE_M_OFFSET 0x58u
 #define LASERAX_REG_PACE_M_WIDTH 16
 #define LASERAX_REG_PACE_M_WORDS 1
 #define LASERAX_REG_PACE_M_SIGNED 0
-#define LASERAX_REG_PACE_M_RESET 4LL
+#define LASERAX_REG_PACE_M_RESET 61LL
 #define LASERAX_REG_PACE_M_MIN 2LL
 #define LASERAX_REG_PACE_M_MAX 65535LL
 /* backlog_thr: pacer backlog alarm threshold (|backlog| > thr sets ovs_backlog_st). Bad value: none; a large threshold delays the backlog alarm, 0 raises it at any backlog */
@@ -240,7 +240,7 @@
     X(GLITCH_N, 0x40u, 8, 0, 2LL) \
     X(SW_DEBOUNCE, 0x48u, 16, 0, 16LL) \
     X(MIN_SPACING, 0x50u, 16, 0, 8LL) \
-    X(PACE_M, 0x58u, 16, 0, 4LL) \
+    X(PACE_M, 0x58u, 16, 0, 61LL) \
     X(BACKLOG_THR, 0x60u, 32, 0, 4096LL) \
     X(MARK_LEN, 0x68u, 13, 0, 64LL) \
     X(DAC_WIDTH, 0x70u, 5, 0, 16LL) \

@@ -27,7 +27,7 @@ struct axis_settings {
     int64_t glitch_n = 2LL;  // glitch_n
     int64_t sw_debounce = 16LL;  // sw_debounce
     int64_t min_spacing = 8LL;  // min_spacing
-    int64_t pace_m = 4LL;  // pace_m
+    int64_t pace_m = 61LL;  // pace_m
     uint64_t backlog_thr = 4096ULL;  // backlog_thr
     int64_t mark_len = 64LL;  // mark_len
     int64_t dac_width = 16LL;  // dac_width
@@ -140,8 +140,8 @@ LXT_REGMAP_INLINE_VAR constexpr reg_info kRegs[kNumRegs] = {
      "debounce length of the reference switch input. Bad value: none; too short lets switch bounce through (extra homing edges), too long delays homing"},
     {"min_spacing", 0x50, 16, false, 8LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "> max(glitch_n, 1)", "min_spacing", "min_spacing",
      "minimum spacing of counted A/B edges; closer edges set ovs_edge_st. Every filter-passing pulse shorter than 2 * min_spacing that changes the count is flagged; set it below the shortest real edge spacing (reset 8 = 80 ns at 100 MHz). Bad value: min_spacing <= max(glitch_n, 1) puts the chain in the safe state (cfg_err); too large a value flags real motion with ovs_edge_st"},
-    {"pace_m", 0x58, 16, false, 4LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "", "pace_m", "pace_m",
-     "output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count)"},
+    {"pace_m", 0x58, 16, false, 61LL, access::rw, "clock cycles", false, 2LL, 65535LL, 1LL, check::cfg, "", "pace_m", "pace_m",
+     "output pacer: consecutive output counts at least M clocks apart in every stage (each qa/qb state lasts >= M clocks; real counts 2M apart in the referencing window); choose M for the controller input (docs/CONTROLLER.md). Reset 61: safe for every input of that table (a hostmot2 counter at LinuxCNC's defaults needs 61), up to 128 mm/s of output at P = 256; faster motion builds a backlog (ovs_backlog_st), never a lost count. Bad value: below 2 -> cfg_err; a large M lets the backlog grow (ovs_backlog_st above backlog_thr, never a lost count)"},
     {"backlog_thr", 0x60, 32, false, 4096LL, access::rw, "output counts", true, 0LL, 4294967295LL, 1LL, check::none, "", "backlog_thr", "backlog_thr",
      "pacer backlog alarm threshold (|backlog| > thr sets ovs_backlog_st). Bad value: none; a large threshold delays the backlog alarm, 0 raises it at any backlog"},
     {"mark_len", 0x68, 13, false, 64LL, access::rw, "output counts", false, 2LL, 4096LL, 1LL, check::cfg, "period/4 .. period", "mark_len", "mark_len",

@@ -57,7 +57,7 @@ module laserax_regs #(
     output wire [7:0]         o_glitch_n,        // 0x40 rw, reset 2
     output wire [15:0]        o_sw_debounce,     // 0x48 rw, reset 16
     output wire [15:0]        o_min_spacing,     // 0x50 rw, reset 8
-    output wire [15:0]        o_pace_m,          // 0x58 rw, reset 4
+    output wire [15:0]        o_pace_m,          // 0x58 rw, reset 61
     output wire [31:0]        o_backlog_thr,     // 0x60 rw, reset 4096
     output wire [12:0]        o_mark_len,        // 0x68 rw, reset 64
     output wire [4:0]         o_dac_width,       // 0x70 rw, reset 16
@@ -417,7 +417,7 @@ module laserax_regs #(
             reg_glitch_n_q <= 8'd2;
             reg_sw_debounce_q <= 16'd16;
             reg_min_spacing_q <= 16'd8;
-            reg_pace_m_q <= 16'd4;
+            reg_pace_m_q <= 16'd61;
             reg_backlog_thr_q <= 32'd4096;
             reg_mark_len_q <= 13'd64;
             reg_dac_width_q <= 5'd16;

@@ -125,7 +125,7 @@ expect 2 'run: --controller-filter: -1 is out of range \(allowed 0\.\.65535\)' r
 expect 2 'run: --controller-filter: 65536 is out of range'          run --controller-filter 65536
 expect 2 'run: --controller-sample-mhz: needs --controller-filter as well' run --controller-sample-mhz 25
 expect 2 'run: --controller-filter: needs --controller-sample-mhz as well' run --controller-filter 15 --force-pace
-expect 2 'run: --pace-m 4 is unsafe .* smallest safe pace_m is 61 \(it allows at most 1639344 counts/s = 128\.07 mm/s\)' run --controller-sample-mhz 25 --controller-filter 15
+expect 2 'run: --pace-m 4 is unsafe .* smallest safe pace_m is 61 \(it allows at most 1639344 counts/s = 128\.07 mm/s\)' run --pace-m 4 --controller-sample-mhz 25 --controller-filter 15
 expect 2 'run: --pace-m 60 is unsafe .* smallest safe pace_m is 61' run --pace-m 60 --controller-sample-mhz 25 --controller-filter 15
 expect 2 'run: --pace-m 30 is unsafe .* smallest safe pace_m is 31' run --pace-m 30 --controller-sample-mhz 50 --controller-filter 15
 expect 2 'run: --pace-m 6 is unsafe .* smallest safe pace_m is 7'   run --pace-m 6 --controller-sample-mhz 50 --controller-filter 3

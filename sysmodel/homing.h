@@ -25,7 +25,7 @@ struct homing_params {
     double clock_hz = kClockHz;
     int glitch_n = 2;
     int sw_debounce = 16;
-    int pace_m = 4;
+    int pace_m = 61;              // the register's reset value (REGISTERS.md)
     double bounce_nm = 0;         // switch contact bounce zone
     int pin_cfg = 8;              // the pin_cfg register (DESIGN 4.7: qz_window, ab_rot, hiz_alarm)
     bool return_pass = false;     // after the homing move, back past the switch (Z crossed both ways)

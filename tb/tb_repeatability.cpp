@@ -42,7 +42,10 @@ int main(int argc, char** argv) {
                 p.period = P;
                 p.dir = dir;
                 p.seed = seed0 + static_cast<uint64_t>(k);
-                p.speed_mm_s = 100.0;  // 6 m/min: short runs, one output count per ~78 clocks (pacer M = 4)
+                p.speed_mm_s = 100.0;  // 6 m/min: short runs, one output count per ~78 clocks
+                // pacer M = 4: the pacer keeps up at that speed (the reset value 61 would space the
+                // window's counts 122 clocks apart and move Z by the backlog; DESIGN 4.4)
+                p.pace_m = 4;
                 const lxt::homing_result r = lxt::run_homing(p);
                 lambda = r.lambda_nm;
                 const std::string tag = "P=" + std::to_string(P) + " dir " + std::to_string(dir) + " seed " + std::to_string(p.seed);

@@ -50,7 +50,7 @@ const char* kUsage =
     "                    a run stops at 50000000 clocks in any case)\n"
     "  --bounce-nm X     switch contact bounce zone, 0..1e6 (default 0)\n"
     "  --pace-m M        pace_m register: output counts at least M clocks apart, 2..65535\n"
-    "                    (default 4, the register's reset value)\n"
+    "                    (default 61, the register's reset value)\n"
     "  --out DIR         output folder (default out)\n"
     "  --every-clock     trace.csv gets a row for every clock\n"
     "  --no-plot         do not call the plotting script\n"
