@@ -10,16 +10,17 @@
 // the previous call (the *_q members of laserax_top). Every block's outputs here are its own output
 // registers, so they *are* that one register stage: each block is wired straight to the output
 // registers of its upstream block. qa/qb/qz/ref_mark take the rephase outputs of call t-3 (the
-// extra rep_q2 and rep_q3 stages of the C++ plus the output register), so they change in the same
-// call as the sin/cos codes they belong to. Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1,
-// DESIGN 4.7).
+// extra rep_q2 and rep_q3 stages of the C++ plus the output register; the index, one call later
+// in rephase, skips rep_q2), so they change in the same call as the sin/cos codes they belong to.
+// Latency pin edge -> sin/cos: 12 calls (glitch_n <= 1, DESIGN 4.7).
 //
 // Register stage (DESIGN 4.7): the register inputs presented before edge t are in force at edge
 // t+1 (registers r_*). The configuration check and the period-change test are made on the
 // presented values and registered (safe_q), so the block reset is one LUT from a flip-flop.
 // Safe state: in a call whose registers in force fail the check, and in the call in which a new
 // period is first in force after a running call, every block is reset at the edge (the C++
-// laserax_top::reset()), cfg_err = 1, sin = cos = 0, qa = qb = qz = ref_mark = 0, stage 1. A table
+// laserax_top::reset()), cfg_err = 1, sin = cos = 0, qa/qb the levels of ab_rot, qz = ref_mark = 0,
+// q_oe = !hiz_alarm, stage 1. A table
 // write (tbl_we = 1) fails the check, so it is made only in a safe-state edge, in which the DDS is
 // in reset (hls: dds_.write() only in the safe state of laserax_top::step(); DESIGN 4.6), and the
 // next call is a safe-state call too, so no running call reads a word in the call of its write or
