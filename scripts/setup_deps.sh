@@ -4,7 +4,7 @@
 # Usage: scripts/setup_deps.sh [PROFILE]   (the Makefile passes its target's profile)
 #   build   g++, cmake, make, Eigen 3                               (make build, make bench)
 #   run     build + Debian's /usr/bin/python3 with numpy and matplotlib  (make run, vectors, plot)
-#   synth   run + iverilog, yosys, nextpnr-ice40                    (make synth)
+#   synth   run + iverilog, yosys, nextpnr-ice40, fpga-icestorm     (make synth; icetime cross-check)
 #   test    synth + z3, clang with libFuzzer, valgrind              (make test, soak, fuzz, formal)
 #   all     the same as test (default; `make deps`)
 #
@@ -48,6 +48,8 @@ missing_packages() {
     command -v iverilog       >/dev/null 2>&1 || echo iverilog
     command -v yosys          >/dev/null 2>&1 || echo yosys
     command -v nextpnr-ice40  >/dev/null 2>&1 || echo nextpnr-ice40
+    command -v icetime        >/dev/null 2>&1 || echo fpga-icestorm   # icepack, iceunpack, icetime
+    [ -f /usr/share/fpga-icestorm/chipdb/chipdb-8k.txt ] || echo fpga-icestorm-chipdb
     want test || return 0
     command -v z3             >/dev/null 2>&1 || echo z3      # formal proofs, yosys-smtbmc engine
     command -v clang++        >/dev/null 2>&1 || echo clang
@@ -63,8 +65,8 @@ present() {
     case "$profile" in
         build) echo "g++ cmake make eigen3" ;;
         run)   echo "g++ cmake make eigen3 $PY+numpy+matplotlib" ;;
-        synth) echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40" ;;
-        *)     echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40 z3 valgrind clang+libFuzzer" ;;
+        synth) echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40 icestorm" ;;
+        *)     echo "g++ cmake make eigen3 $PY+numpy+matplotlib iverilog yosys nextpnr-ice40 icestorm z3 valgrind clang+libFuzzer" ;;
     esac
 }
 
